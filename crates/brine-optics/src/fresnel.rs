@@ -1,0 +1,120 @@
+//! Fresnel reflectance of a smooth dielectric interface.
+
+/// Refractive index of sea water in the visible used by default (Darles, Chen, Bruneton: 1.333).
+pub const WATER_IOR: f64 = 1.333;
+
+/// Exact unpolarised Fresnel reflectance of a dielectric interface, `F = ½(r_s² + r_p²)`.
+///
+/// With `c = |cos θᵢ|`, `n = n_t/n_i` and `g² = n² + c² − 1`:
+/// `F = ½ (g − c)²/(g + c)² · [1 + ((c(g + c) − 1)/(c(g − c) + 1))²]`, and `F = 1` when `g² < 0`
+/// (total internal reflection, `sin θᵢ > n_t/n_i`).
+///
+/// # Arguments
+/// - `cos_theta_i`: cosine of the angle of incidence, `[−1, 1]` (the sign is ignored).
+/// - `n_i`: index of the medium the light comes from, `> 0` (1.0 for air).
+/// - `n_t`: index of the medium across the interface, `> 0` (1.333 for water).
+///
+/// # Returns
+/// The reflected fraction of the power, in `[0, 1]`; the transmitted fraction is `1 − F`.
+///
+/// # References
+/// Cook R., Torrance K. 1982, "A reflectance model for computer graphics", ACM TOG 1(1), Eq. (the
+/// unpolarised form); Chen et al. 2007 §3.4 (with the erratum of equation sheet §9: `g` is
+/// `√((n_b/n_a)² + k² − 1)`).
+#[inline]
+pub fn fresnel_dielectric(cos_theta_i: f64, n_i: f64, n_t: f64) -> f64 {
+    debug_assert!(n_i > 0.0 && n_t > 0.0, "indices must be positive: {n_i}, {n_t}");
+    let c = cos_theta_i.abs().min(1.0);
+    let n = n_t / n_i;
+    let g2 = n * n + c * c - 1.0;
+    if g2 < 0.0 {
+        return 1.0;
+    }
+    let g = g2.sqrt();
+    if g + c == 0.0 {
+        return 1.0;
+    }
+    let a = (g - c) / (g + c);
+    let b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
+    (0.5 * a * a * (1.0 + b * b)).clamp(0.0, 1.0)
+}
+
+/// Reflectance at normal incidence, `F₀ = ((n_i − n_t)/(n_i + n_t))²`.
+///
+/// # Arguments
+/// - `n_i`, `n_t`: indices on either side, `> 0`.
+///
+/// # Returns
+/// `F₀` in `[0, 1)`; `0.0204` for air–water at `n = 1.333`.
+///
+/// # References
+/// Fresnel equations at `θ = 0`; equation sheet §9.
+#[inline]
+pub fn fresnel_normal(n_i: f64, n_t: f64) -> f64 {
+    let r = (n_i - n_t) / (n_i + n_t);
+    r * r
+}
+
+/// Schlick's approximation `F ≈ F₀ + (1 − F₀)(1 − c)⁵`.
+///
+/// When light goes from the denser medium (`n_i > n_t`), `c` is the cosine on the transmitted
+/// side, `√(1 − (n_i/n_t)² sin²θᵢ)`, and `F = 1` beyond the critical angle.
+///
+/// # Arguments
+/// - `cos_theta_i`: cosine of the angle of incidence, `[−1, 1]` (sign ignored).
+/// - `n_i`, `n_t`: indices, `> 0`.
+///
+/// # Returns
+/// The approximate reflectance in `[0, 1]`. Its error against [`fresnel_dielectric`] for
+/// air → water is at most 0.05 (at grazing angles; see the tests and `docs/models/brine-optics.md`).
+///
+/// # References
+/// Schlick C. 1994, "An inexpensive BRDF model for physically-based rendering", CGF 13(3), Eq. 24.
+#[inline]
+pub fn fresnel_schlick(cos_theta_i: f64, n_i: f64, n_t: f64) -> f64 {
+    let f0 = fresnel_normal(n_i, n_t);
+    let mut c = cos_theta_i.abs().min(1.0);
+    if n_i > n_t {
+        let sin2_t = (n_i / n_t).powi(2) * (1.0 - c * c);
+        if sin2_t >= 1.0 {
+            return 1.0;
+        }
+        c = (1.0 - sin2_t).sqrt();
+    }
+    f0 + (1.0 - f0) * (1.0 - c).powi(5)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    /// The oracle values of the equation sheet are printed with 6 significant digits.
+    const ORACLE: f64 = 2e-5;
+
+    fn cos_deg(d: f64) -> f64 {
+        d.to_radians().cos()
+    }
+
+    #[test]
+    fn exact_fresnel_oracles_air_to_water() {
+        for (deg, f) in [(0.0, 0.020373), (45.0, 0.027898), (60.0, 0.059691), (80.0, 0.347917)] {
+            assert_relative_eq!(fresnel_dielectric(cos_deg(deg), 1.0, 1.333), f, max_relative = ORACLE);
+        }
+    }
+
+    #[test]
+    #[expect(clippy::float_cmp, reason = "total internal reflection returns exactly 1")]
+    fn schlick_oracles_and_total_internal_reflection() {
+        assert_relative_eq!(fresnel_schlick(cos_deg(45.0), 1.0, 1.333), 0.022485, max_relative = ORACLE);
+        assert_relative_eq!(fresnel_schlick(cos_deg(80.0), 1.0, 1.333), 0.397846, max_relative = ORACLE);
+        // Critical angle from water: asin(1/1.333) = 48.607°.
+        assert!(fresnel_dielectric(cos_deg(48.7), 1.333, 1.0) == 1.0);
+        assert!(fresnel_dielectric(cos_deg(48.5), 1.333, 1.0) < 1.0);
+    }
+
+    #[test]
+    fn normal_incidence_matches_the_closed_form() {
+        assert_relative_eq!(fresnel_dielectric(1.0, 1.0, 1.333), fresnel_normal(1.0, 1.333), max_relative = 1e-12);
+    }
+}

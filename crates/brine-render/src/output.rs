@@ -1,0 +1,152 @@
+//! Image files, written atomically: to a temporary file in the destination folder, renamed over
+//! the destination only once complete, so an interrupted render never leaves a half image.
+
+use std::io::{BufWriter, Write};
+use std::path::Path;
+
+use glam::DVec3;
+
+use crate::tonemap::{exposure_scale, to_srgb8};
+
+/// Output file formats, chosen by the extension.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OutputFormat {
+    /// 8-bit sRGB PNG, exposed and tone-mapped.
+    Png,
+    /// OpenEXR, linear sRGB radiance (kcd m⁻²) as 32-bit floats.
+    Exr,
+}
+
+impl OutputFormat {
+    /// The format of `path`'s extension.
+    ///
+    /// # Errors
+    /// A message naming the extension if it is neither `.png` nor `.exr`.
+    pub fn from_path(path: &Path) -> Result<Self, String> {
+        match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
+            Some("png") => Ok(Self::Png),
+            Some("exr") => Ok(Self::Exr),
+            Some(other) => {
+                Err(format!("output.path {}: unsupported extension .{other} (expected .png or .exr)", path.display()))
+            }
+            None => Err(format!("output.path {}: no extension (expected .png or .exr)", path.display())),
+        }
+    }
+}
+
+/// Why an image could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    /// Unsupported path.
+    #[error("{0}")]
+    Format(String),
+    /// File system error.
+    #[error("cannot write {path}: {source}")]
+    Io {
+        /// Destination.
+        path: String,
+        /// Cause.
+        source: std::io::Error,
+    },
+    /// Encoder error.
+    #[error("cannot encode {path}: {message}")]
+    Encode {
+        /// Destination.
+        path: String,
+        /// Cause.
+        message: String,
+    },
+}
+
+/// Writes `pixels` (row-major, top row first, linear sRGB radiance in kcd m⁻²) to `path` in the
+/// format of its extension, atomically.
+///
+/// # Errors
+/// [`OutputError`] if the extension is unsupported, the folder is not writable, or encoding fails;
+/// the destination is then untouched.
+pub fn write_image(
+    path: &Path,
+    width: u32,
+    height: u32,
+    pixels: &[DVec3],
+    exposure_ev: f64,
+) -> Result<(), OutputError> {
+    let format = OutputFormat::from_path(path).map_err(OutputError::Format)?;
+    let shown = path.display().to_string();
+    let io = |source| OutputError::Io { path: shown.clone(), source };
+    let dir = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("image");
+    let prefix = format!(".{name}.");
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(&prefix).suffix(".tmp");
+    // tempfile creates files readable by the owner only; an image is an ordinary file (0666
+    // before the umask).
+    #[cfg(unix)]
+    builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
+    let mut tmp = builder.tempfile_in(dir).map_err(io)?;
+    match format {
+        OutputFormat::Png => {
+            let scale = exposure_scale(exposure_ev);
+            let mut bytes = Vec::with_capacity(pixels.len() * 3);
+            for p in pixels {
+                bytes.extend_from_slice(&to_srgb8(*p, scale));
+            }
+            let mut w = BufWriter::new(tmp.as_file_mut());
+            image::codecs::png::PngEncoder::new(&mut w)
+                .write_image(&bytes, width, height, image::ExtendedColorType::Rgb8)
+                .map_err(|e| OutputError::Encode { path: shown.clone(), message: e.to_string() })?;
+            w.flush().map_err(io)?;
+        }
+        OutputFormat::Exr => {
+            use exr::prelude::*;
+            let w = width as usize;
+            let layer = Layer::new(
+                (w, height as usize),
+                LayerAttributes::named("rgb"),
+                Encoding::SMALL_LOSSLESS,
+                SpecificChannels::rgb(|pos: Vec2<usize>| {
+                    let p = pixels[pos.y() * w + pos.x()];
+                    (p.x as f32, p.y as f32, p.z as f32)
+                }),
+            );
+            let mut out = BufWriter::new(tmp.as_file_mut());
+            Image::from_layer(layer)
+                .write()
+                .to_buffered(&mut out)
+                .map_err(|e| OutputError::Encode { path: shown.clone(), message: e.to_string() })?;
+            out.flush().map_err(io)?;
+        }
+    }
+    tmp.as_file().sync_all().map_err(io)?;
+    tmp.persist(path).map_err(|e| io(e.error))?;
+    Ok(())
+}
+
+use image::ImageEncoder as _;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unsupported_extensions_are_named() {
+        let e = OutputFormat::from_path(Path::new("a.jpg")).unwrap_err();
+        assert!(e.contains(".jpg"), "{e}");
+        assert_eq!(OutputFormat::from_path(Path::new("A.PNG")), Ok(OutputFormat::Png));
+    }
+
+    #[test]
+    fn a_failed_write_leaves_nothing() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("missing-folder").join("x.png");
+        assert!(write_image(&path, 1, 1, &[DVec3::ONE], 14.0).is_err());
+        assert!(!path.exists());
+        let ok = dir.path().join("x.exr");
+        write_image(&ok, 1, 1, &[DVec3::ONE], 14.0).unwrap();
+        assert!(ok.exists());
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1, "no temporary file left");
+    }
+}

@@ -1,0 +1,160 @@
+//! Per-pixel composition and the parallel frame loop.
+
+use brine_optics::{SlopeVariance, WATER_IOR, fresnel_dielectric, reflect, reflected_sun_radiance};
+use brine_trace::{Ray, TraceStats, trace};
+use brine_waves::TrochoidField;
+use glam::DVec3;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rayon::prelude::*;
+
+use crate::scene::Scene;
+use crate::world::{World, WorldError};
+
+/// Options of a render that are not part of the scene.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct RenderOptions {
+    /// Worker threads; `None` uses all cores. The image does not depend on it.
+    pub threads: Option<usize>,
+}
+
+/// A rendered frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Frame {
+    /// Width (pixels).
+    pub width: u32,
+    /// Height (pixels).
+    pub height: u32,
+    /// Linear sRGB radiance (kcd m⁻²), row-major, top row first.
+    pub pixels: Vec<DVec3>,
+    /// Tracer counters over all primary rays.
+    pub stats: TraceStats,
+}
+
+/// Why a frame could not be rendered.
+#[derive(Debug, thiserror::Error)]
+pub enum RenderError {
+    /// The scene could not be turned into models.
+    #[error(transparent)]
+    World(#[from] WorldError),
+    /// The thread pool could not be built.
+    #[error("cannot start {threads} worker threads: {message}")]
+    Threads {
+        /// Requested count.
+        threads: usize,
+        /// Cause.
+        message: String,
+    },
+}
+
+/// Mixes the scene seed and a pixel index into a generator seed (SplitMix64 finaliser), so that
+/// each pixel has its own stream, independent of the order pixels are rendered in.
+fn pixel_seed(seed: u64, index: u64) -> u64 {
+    let mut z = seed ^ index.wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+/// Renders `scene`; `on_row` is called once per finished row (from any thread).
+///
+/// # Errors
+/// [`RenderError`] if a model rejects the scene or the thread pool cannot start.
+pub fn render(scene: &Scene, options: &RenderOptions, on_row: &(dyn Fn() + Sync)) -> Result<Frame, RenderError> {
+    let world = World::new(scene)?;
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    let spp = scene.camera.spp;
+    let seed = scene.sea.seed;
+    let field = world.sea.at_time(world.time);
+    let mut pixels = vec![DVec3::ZERO; w as usize * h as usize];
+    let work = |pixels: &mut [DVec3]| -> TraceStats {
+        pixels
+            .par_chunks_mut(w as usize)
+            .enumerate()
+            .map(|(y, row)| {
+                let mut stats = TraceStats::default();
+                for (x, out) in row.iter_mut().enumerate() {
+                    let index = y as u64 * u64::from(w) + x as u64;
+                    let mut rng = ChaCha8Rng::seed_from_u64(pixel_seed(seed, index));
+                    let mut sum = DVec3::ZERO;
+                    for _ in 0..spp {
+                        let (jx, jy) = if spp == 1 { (0.5, 0.5) } else { (rng.random::<f64>(), rng.random::<f64>()) };
+                        let d = world.camera.direction(x as f64 + jx, y as f64 + jy);
+                        sum += radiance(&world, &field, d, &mut stats);
+                    }
+                    *out = sum / f64::from(spp);
+                }
+                on_row();
+                stats
+            })
+            .reduce(TraceStats::default, |mut a, b| {
+                a.merge(&b);
+                a
+            })
+    };
+    let stats = match options.threads {
+        None => work(&mut pixels),
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .map_err(|e| RenderError::Threads { threads: n, message: e.to_string() })?
+            .install(|| work(&mut pixels)),
+    };
+    Ok(Frame { width: w, height: h, pixels, stats })
+}
+
+/// Radiance (linear sRGB, kcd m⁻²) arriving at the camera along the unit direction `d`.
+fn radiance(world: &World, field: &TrochoidField<'_>, d: DVec3, stats: &mut TraceStats) -> DVec3 {
+    let origin = world.camera.position;
+    let ray = Ray::new(origin, d).expect("camera rays are finite and normalised");
+    if let Some(hit) = trace(field, &ray, &world.trace, stats) {
+        let n = field.normal(hit.point.x, hit.point.z);
+        return shade_surface(world, d, n, &world.variance_unresolved);
+    }
+    if d.y < 0.0 {
+        // Beyond the trace distance: the mean plane, with every wave's slopes in the BRDF.
+        return shade_surface(world, d, DVec3::Y, &world.variance_total);
+    }
+    sky_radiance(world, d)
+}
+
+/// Sky along `d`, with the sun disc.
+fn sky_radiance(world: &World, d: DVec3) -> DVec3 {
+    let mut l = world.sky.radiance_rgb(d);
+    if d.dot(world.sun.direction()) >= world.sun.cos_half_angle() {
+        l += world.sun.radiance_rgb();
+    }
+    l
+}
+
+/// Radiance leaving the sea surface toward the camera: Fresnel-weighted sky reflection, the sun
+/// through the ocean BRDF of the unresolved slopes, and the water body through `1 − F`
+/// (Chen et al. 2007 §3.4; Bruneton et al. 2010 §5).
+fn shade_surface(world: &World, d: DVec3, normal: DVec3, variance: &SlopeVariance) -> DVec3 {
+    let v = -d;
+    // Grazing views can see a facet from behind; tilt its normal toward the viewer just enough.
+    let mut n = normal;
+    let cos_v = v.dot(n);
+    if cos_v < 1e-3 {
+        n = (n + (1e-3 - cos_v) * v).normalize();
+    }
+    let cos_v = v.dot(n).max(1e-3);
+    let f = fresnel_dielectric(cos_v, 1.0, WATER_IOR);
+    let mut r = reflect(d, n);
+    if r.y < 1e-3 {
+        // A reflection pointing into the sea would hit another wave; take the horizon sky.
+        r = DVec3::new(r.x, 1e-3, r.z).normalize();
+    }
+    let sky = world.sky.radiance_rgb(r);
+    // Local wind frame: z along the normal, x downwind.
+    let x = (world.wind - world.wind.dot(n) * n).normalize_or(n.any_orthonormal_vector());
+    let y = n.cross(x);
+    let to_local = |a: DVec3| DVec3::new(a.dot(x), a.dot(y), a.dot(n));
+    let l = world.sun.direction();
+    let sun = if l.dot(n) > 0.0 {
+        world.sun.irradiance_rgb() * reflected_sun_radiance(to_local(v), to_local(l), variance, 1.0)
+    } else {
+        DVec3::ZERO
+    };
+    f * sky + sun + (1.0 - f) * world.water_radiance
+}

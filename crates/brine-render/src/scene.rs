@@ -1,0 +1,386 @@
+//! The scene file: TOML, every key optional, unknown keys rejected, every value range-checked.
+
+use std::path::{Path, PathBuf};
+
+use serde::{Deserialize, Serialize};
+
+/// The scene embedded in the binary, rendered by `brine` with no arguments.
+pub const DEFAULT_SCENE_TOML: &str = include_str!("../scenes/default.toml");
+
+/// Name used in messages for the embedded default scene.
+pub const DEFAULT_SCENE_NAME: &str = "<default scene>";
+
+/// A scene-file error: the file, the line when known, and what was expected.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{file}{}: {message}", line.map(|l| format!(" line {l}")).unwrap_or_default())]
+pub struct SceneError {
+    /// File name as given by the user.
+    pub file: String,
+    /// 1-based line of the offending key or value, when known.
+    pub line: Option<usize>,
+    /// What is wrong and what was expected.
+    pub message: String,
+}
+
+/// A whole scene.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Scene {
+    /// The camera.
+    pub camera: CameraConfig,
+    /// The sea.
+    pub sea: SeaConfig,
+    /// Sky and sun.
+    pub sky: SkyConfig,
+    /// The output image.
+    pub output: OutputConfig,
+}
+
+/// `[camera]`: a pinhole camera.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct CameraConfig {
+    /// Position (m), y up, sea level at y = 0.
+    pub position: [f64; 3],
+    /// A point to look at (m); excludes `yaw_deg`/`pitch_deg`.
+    pub look_at: Option<[f64; 3]>,
+    /// Compass bearing of the view (°, 0 north = −z, 90 east = +x).
+    pub yaw_deg: Option<f64>,
+    /// Elevation of the view (°, `[−90, 90]`, negative looks down).
+    pub pitch_deg: Option<f64>,
+    /// Vertical field of view (°, `(0, 180)`).
+    pub fov_deg: f64,
+    /// Image width (pixels, `[1, 16384]`).
+    pub width: u32,
+    /// Image height (pixels, `[1, 16384]`).
+    pub height: u32,
+    /// Samples per pixel (`[1, 4096]`); 1 samples the pixel centre.
+    pub spp: u32,
+}
+
+impl Default for CameraConfig {
+    fn default() -> Self {
+        Self {
+            position: [0.0, 10.0, 0.0],
+            look_at: None,
+            yaw_deg: Some(100.0),
+            pitch_deg: Some(-9.0),
+            fov_deg: 50.0,
+            width: 1280,
+            height: 720,
+            spp: 1,
+        }
+    }
+}
+
+/// Ocean spectrum of the fitted wave set.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum SpectrumKind {
+    /// Pierson–Moskowitz 1964, fully developed sea.
+    #[default]
+    PiersonMoskowitz,
+}
+
+/// `[sea]`: the wind sea.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct SeaConfig {
+    /// Ocean spectrum.
+    pub spectrum: SpectrumKind,
+    /// Wind speed 10 m above the sea, `U₁₀` (m s⁻¹, `[0, 60]`; 0 is a flat calm).
+    pub wind_speed_m_s: f64,
+    /// Direction the wind blows toward (°, from +x (east) toward +z (south)).
+    pub wind_direction_deg: f64,
+    /// Number of trochoid waves (`[0, 10000]`).
+    pub waves: u32,
+    /// Choppiness of the fit (`[0, 100]`): each wave's steepness is `c·kA` before the cap.
+    pub choppiness: f64,
+    /// Random seed of wave directions and phases.
+    pub seed: u64,
+    /// Time of the frame (s, `[0, 10⁶]`).
+    pub time_s: f64,
+    /// Distance up to which waves are traced as geometry (m, `[10, 10⁶]`); beyond it the sea is
+    /// its mean plane shaded with the slope statistics of all waves.
+    pub trace_distance_m: f64,
+}
+
+impl Default for SeaConfig {
+    fn default() -> Self {
+        Self {
+            spectrum: SpectrumKind::PiersonMoskowitz,
+            wind_speed_m_s: 10.0,
+            wind_direction_deg: 20.0,
+            waves: 50,
+            choppiness: 2.5,
+            seed: 1,
+            time_s: 0.0,
+            trace_distance_m: 3000.0,
+        }
+    }
+}
+
+/// `[sky]`: daylight.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct SkyConfig {
+    /// Atmospheric turbidity `T` (`[1.7, 10]`).
+    pub turbidity: f64,
+    /// Sun elevation above the horizon (°, `[0, 90]`).
+    pub sun_elevation_deg: f64,
+    /// Sun azimuth as a compass bearing (°, 0 north, 90 east).
+    pub sun_azimuth_deg: f64,
+}
+
+impl Default for SkyConfig {
+    fn default() -> Self {
+        Self { turbidity: 3.0, sun_elevation_deg: 24.0, sun_azimuth_deg: 115.0 }
+    }
+}
+
+/// `[output]`: where and how the image is written.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct OutputConfig {
+    /// Output file; `.png` (8-bit sRGB, tone-mapped) or `.exr` (linear f32 radiance).
+    pub path: PathBuf,
+    /// Exposure as EV₁₀₀ (`[−10, 30]`): the luminance mapped to white before the tone curve is
+    /// `1.2 · 2^EV` cd m⁻² (saturation-based exposure, ISO 12232).
+    pub exposure_ev: f64,
+}
+
+impl Default for OutputConfig {
+    fn default() -> Self {
+        Self { path: PathBuf::from("ocean.png"), exposure_ev: 15.0 }
+    }
+}
+
+impl Scene {
+    /// The embedded default scene.
+    pub fn default_scene() -> Self {
+        Self::from_toml_str(DEFAULT_SCENE_TOML, DEFAULT_SCENE_NAME).expect("the embedded default scene is valid")
+    }
+
+    /// Reads and checks a scene file.
+    ///
+    /// # Errors
+    /// [`SceneError`] if the file cannot be read, is not valid TOML, has an unknown key or a value
+    /// of the wrong type, or a value out of range.
+    pub fn load(path: &Path) -> Result<Self, SceneError> {
+        let name = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| SceneError {
+            file: name.clone(),
+            line: None,
+            message: format!("cannot read the scene file: {e}"),
+        })?;
+        Self::from_toml_str(&text, &name)
+    }
+
+    /// Parses and checks a scene from TOML text; `file` names it in messages.
+    ///
+    /// # Errors
+    /// See [`Scene::load`].
+    pub fn from_toml_str(text: &str, file: &str) -> Result<Self, SceneError> {
+        let de = toml::de::Deserializer::parse(text).map_err(|e| SceneError {
+            file: file.to_owned(),
+            line: e.span().map(|s| line_of(text, s.start)),
+            message: format!("invalid TOML: {}", e.message().trim()),
+        })?;
+        let scene: Scene = serde_path_to_error::deserialize(de).map_err(|e| {
+            let path = e.path().to_string();
+            let inner = e.into_inner();
+            SceneError {
+                file: file.to_owned(),
+                line: inner.span().map(|s| line_of(text, s.start)),
+                message: explain(&path, inner.message()),
+            }
+        })?;
+        scene.validate().map_err(|(section, key, message)| SceneError {
+            file: file.to_owned(),
+            line: find_key_line(text, section, key),
+            message,
+        })?;
+        Ok(scene)
+    }
+
+    /// Checks every value against its documented range; the error names the section, the key
+    /// and the message.
+    fn validate(&self) -> Result<(), (&'static str, &'static str, String)> {
+        fn range(
+            section: &'static str,
+            key: &'static str,
+            value: f64,
+            ok: bool,
+            expected: &str,
+        ) -> Result<(), (&'static str, &'static str, String)> {
+            if ok && value.is_finite() {
+                Ok(())
+            } else {
+                Err((section, key, format!("{section}.{key} = {value} is out of range: expected {expected}")))
+            }
+        }
+        let c = &self.camera;
+        for (i, v) in c.position.iter().enumerate() {
+            range("camera", "position", *v, v.abs() <= 1e6, "finite coordinates within ±10⁶ m").map_err(
+                |(s, k, _)| {
+                    (
+                        s,
+                        k,
+                        format!(
+                            "camera.position[{i}] = {v} is out of range: expected a finite coordinate within ±10⁶ m"
+                        ),
+                    )
+                },
+            )?;
+        }
+        if c.look_at.is_some() && (c.yaw_deg.is_some() || c.pitch_deg.is_some()) {
+            return Err((
+                "camera",
+                "look_at",
+                "camera.look_at cannot be combined with yaw_deg/pitch_deg: give one or the other".into(),
+            ));
+        }
+        if let Some(t) = c.look_at {
+            let d = [t[0] - c.position[0], t[1] - c.position[1], t[2] - c.position[2]];
+            let len2: f64 = d.iter().map(|x| x * x).sum();
+            if !(len2 > 1e-12) || !len2.is_finite() {
+                return Err(("camera", "look_at", "camera.look_at must differ from camera.position".into()));
+            }
+        }
+        if let Some(y) = c.yaw_deg {
+            range("camera", "yaw_deg", y, true, "a finite angle in degrees")?;
+        }
+        if let Some(p) = c.pitch_deg {
+            range("camera", "pitch_deg", p, (-90.0..=90.0).contains(&p), "[-90, 90]°")?;
+        }
+        range("camera", "fov_deg", c.fov_deg, c.fov_deg > 0.0 && c.fov_deg < 180.0, "(0, 180)°")?;
+        range("camera", "width", f64::from(c.width), (1..=16384).contains(&c.width), "[1, 16384] pixels")?;
+        range("camera", "height", f64::from(c.height), (1..=16384).contains(&c.height), "[1, 16384] pixels")?;
+        range("camera", "spp", f64::from(c.spp), (1..=4096).contains(&c.spp), "[1, 4096] samples per pixel")?;
+        let s = &self.sea;
+        range("sea", "wind_speed_m_s", s.wind_speed_m_s, (0.0..=60.0).contains(&s.wind_speed_m_s), "[0, 60] m/s")?;
+        range("sea", "wind_direction_deg", s.wind_direction_deg, true, "a finite angle in degrees")?;
+        range("sea", "waves", f64::from(s.waves), s.waves <= 10_000, "[0, 10000]")?;
+        range("sea", "choppiness", s.choppiness, (0.0..=100.0).contains(&s.choppiness), "[0, 100]")?;
+        range("sea", "time_s", s.time_s, (0.0..=1e6).contains(&s.time_s), "[0, 10⁶] s")?;
+        range(
+            "sea",
+            "trace_distance_m",
+            s.trace_distance_m,
+            (10.0..=1e6).contains(&s.trace_distance_m),
+            "[10, 10⁶] m",
+        )?;
+        let k = &self.sky;
+        range("sky", "turbidity", k.turbidity, (1.7..=10.0).contains(&k.turbidity), "[1.7, 10]")?;
+        range(
+            "sky",
+            "sun_elevation_deg",
+            k.sun_elevation_deg,
+            (0.0..=90.0).contains(&k.sun_elevation_deg),
+            "[0, 90]° (twilight and night arrive with issue #4)",
+        )?;
+        range("sky", "sun_azimuth_deg", k.sun_azimuth_deg, true, "a finite angle in degrees")?;
+        let o = &self.output;
+        range("output", "exposure_ev", o.exposure_ev, (-10.0..=30.0).contains(&o.exposure_ev), "[-10, 30] EV")?;
+        crate::output::OutputFormat::from_path(&o.path).map_err(|m| ("output", "path", m))?;
+        Ok(())
+    }
+}
+
+/// 1-based line of byte offset `at` in `text`.
+fn line_of(text: &str, at: usize) -> usize {
+    text.as_bytes()[..at.min(text.len())].iter().filter(|&&b| b == b'\n').count() + 1
+}
+
+/// Line of `key = …` inside `[section]`, found by scanning the text (plain `key = value` lines).
+fn find_key_line(text: &str, section: &str, key: &str) -> Option<usize> {
+    let mut current = "";
+    for (i, raw) in text.lines().enumerate() {
+        let line = raw.trim();
+        if let Some(rest) = line.strip_prefix('[') {
+            current = rest.trim_end_matches(']').trim();
+            continue;
+        }
+        if current == section
+            && let Some((k, _)) = line.split_once('=')
+            && k.trim() == key
+        {
+            return Some(i + 1);
+        }
+    }
+    None
+}
+
+/// Rewrites serde's messages into what the user should have written, naming the key.
+fn explain(path: &str, message: &str) -> String {
+    let message = message.trim();
+    let found = message
+        .strip_prefix("invalid type: ")
+        .or_else(|| message.strip_prefix("invalid value: "))
+        .and_then(|m| m.split_once(", expected "));
+    if let Some((found, expected)) = found {
+        let what = match expected {
+            "f64" | "f32" => "a number".to_owned(),
+            "u8" | "u16" | "u32" | "u64" | "usize" => "a non-negative whole number".to_owned(),
+            "i32" | "i64" => "a whole number".to_owned(),
+            "a boolean" => "true or false".to_owned(),
+            e if e.starts_with("an array of length") || e.starts_with("a sequence") || e.starts_with("a tuple") => {
+                format!("an array ({e})")
+            }
+            e => e.to_owned(),
+        };
+        return format!("expected {what} for {path}, found {found}");
+    }
+    if let Some(rest) = message.strip_prefix("unknown field ") {
+        let (name, expected) = rest.split_once(", expected ").unwrap_or((rest, ""));
+        let name = name.trim_matches('`');
+        let key = if path.is_empty() || path == "." {
+            name.to_owned()
+        } else if path == name || path.ends_with(&format!(".{name}")) {
+            path.to_owned()
+        } else {
+            format!("{path}.{name}")
+        };
+        return format!("unknown key {key} (expected {})", expected.replace('`', ""));
+    }
+    if let Some(rest) = message.strip_prefix("unknown variant ") {
+        return format!("unknown value {} for {path}", rest.replace('`', ""));
+    }
+    format!("{path}: {message}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_embedded_scene_is_the_default_scene() {
+        assert_eq!(Scene::default_scene(), Scene::default());
+    }
+
+    #[test]
+    fn wrong_type_names_the_key_and_line() {
+        let e = Scene::from_toml_str("[camera]\nwidth = 100\nfov_deg = \"wide\"\n", "s.toml").unwrap_err();
+        assert_eq!(e.line, Some(3));
+        assert!(e.message.contains("expected a number for camera.fov_deg"), "{e}");
+        assert!(e.to_string().starts_with("s.toml line 3: "), "{e}");
+    }
+
+    #[test]
+    fn unknown_key_is_an_error() {
+        let e = Scene::from_toml_str("[sea]\nwind = 3.0\n", "s.toml").unwrap_err();
+        assert!(e.message.starts_with("unknown key sea.wind (expected one of"), "{e}");
+        assert_eq!(e.line, Some(2));
+    }
+
+    #[test]
+    fn out_of_range_values_are_errors_with_lines() {
+        let e = Scene::from_toml_str("[sea]\n\nwind_speed_m_s = -1.0\n", "s.toml").unwrap_err();
+        assert_eq!(e.line, Some(3));
+        assert!(e.message.contains("sea.wind_speed_m_s = -1 is out of range"), "{e}");
+        let e = Scene::from_toml_str("[camera]\nfov_deg = 180.0\n", "s.toml").unwrap_err();
+        assert!(e.message.contains("camera.fov_deg"), "{e}");
+        let e = Scene::from_toml_str("[camera]\nwidth = 0\n", "s.toml").unwrap_err();
+        assert!(e.message.contains("camera.width"), "{e}");
+    }
+}

@@ -1,0 +1,85 @@
+//! The `brine` command on bad input: a clear message, exit code 2, and no file written.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn brine(args: &[&str], dir: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_brine")).args(args).current_dir(dir).output().expect("brine runs")
+}
+
+/// Writes `scene` to `scene.toml` in a fresh folder, runs `brine render scene.toml -o out.png`
+/// and returns the folder, the exit code and stderr.
+fn render_scene(scene: &str) -> (tempfile::TempDir, Option<i32>, String) {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("scene.toml"), scene).unwrap();
+    let out = brine(&["render", "scene.toml", "-o", "out.png", "--quiet"], dir.path());
+    (dir, out.status.code(), String::from_utf8_lossy(&out.stderr).into_owned())
+}
+
+/// Asserts that only the scene file is in the folder.
+fn assert_nothing_written(dir: &Path) {
+    let names: Vec<_> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert_eq!(names, vec![std::ffi::OsString::from("scene.toml")], "files written: {names:?}");
+}
+
+#[test]
+fn unknown_key() {
+    let (dir, code, err) = render_scene("[camera]\nwidth = 16\nfovv = 40.0\n");
+    assert_eq!(code, Some(2));
+    assert_eq!(
+        err.trim(),
+        "error: scene.toml line 3: unknown key camera.fovv (expected one of position, look_at, yaw_deg, pitch_deg, fov_deg, width, height, spp)"
+    );
+    assert_nothing_written(dir.path());
+}
+
+#[test]
+fn wrong_type() {
+    let (dir, code, err) = render_scene("[camera]\nwidth = 16\n\nfov_deg = \"wide\"\n");
+    assert_eq!(code, Some(2));
+    assert!(err.starts_with("error: scene.toml line 4: expected a number for camera.fov_deg"), "{err}");
+    assert_nothing_written(dir.path());
+}
+
+#[test]
+fn missing_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = brine(&["render", "nope.toml", "-o", "out.png"], dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.starts_with("error: nope.toml: cannot read the scene file"), "{err}");
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+}
+
+#[test]
+fn out_of_range_values() {
+    for (scene, key, line) in [
+        ("[sea]\nwind_speed_m_s = -5.0\n", "sea.wind_speed_m_s = -5 is out of range", 2),
+        ("[camera]\nfov_deg = 180.0\n", "camera.fov_deg = 180 is out of range", 2),
+        ("[camera]\nwidth = 0\n", "camera.width = 0 is out of range", 2),
+        ("[camera]\nheight = 0\n", "camera.height = 0 is out of range", 2),
+    ] {
+        let (dir, code, err) = render_scene(scene);
+        assert_eq!(code, Some(2), "{scene}");
+        assert!(err.starts_with(&format!("error: scene.toml line {line}: {key}")), "{scene}: {err}");
+        assert_nothing_written(dir.path());
+    }
+}
+
+#[test]
+fn camera_under_the_sea_is_refused() {
+    let (dir, code, err) = render_scene("[camera]\nposition = [0.0, -3.0, 0.0]\nwidth = 8\nheight = 8\n");
+    assert_eq!(code, Some(2));
+    assert!(err.contains("below the sea surface"), "{err}");
+    assert_nothing_written(dir.path());
+}
+
+#[test]
+fn a_small_render_writes_exactly_the_image() {
+    let (dir, code, err) = render_scene("[camera]\nwidth = 12\nheight = 8\n[sea]\nwaves = 8\n");
+    assert_eq!(code, Some(0), "{err}");
+    let names: Vec<_> = std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert_eq!(names.len(), 2, "{names:?}");
+    let img = image::open(dir.path().join("out.png")).unwrap();
+    assert_eq!((img.width(), img.height()), (12, 8));
+}

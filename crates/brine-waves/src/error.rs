@@ -1,0 +1,29 @@
+//! Errors of the wave models.
+
+/// A wave-model parameter outside its documented domain.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum WaveError {
+    /// A parameter is outside its range.
+    #[error("{name} = {value} is out of range: expected {range}")]
+    OutOfRange {
+        /// Parameter name, as in the docs (with its unit suffix).
+        name: &'static str,
+        /// Offending value.
+        value: f64,
+        /// Accepted range, in words.
+        range: &'static str,
+    },
+    /// The spectrum holds no energy in the requested band.
+    #[error("the spectrum has no energy between {omega_min} and {omega_max} rad/s")]
+    EmptyBand {
+        /// Lower band edge (rad/s).
+        omega_min: f64,
+        /// Upper band edge (rad/s).
+        omega_max: f64,
+    },
+}
+
+/// Returns `Ok(value)` if `ok`, else the [`WaveError::OutOfRange`] naming the parameter.
+pub(crate) fn check(name: &'static str, value: f64, ok: bool, range: &'static str) -> Result<f64, WaveError> {
+    if ok && value.is_finite() { Ok(value) } else { Err(WaveError::OutOfRange { name, value, range }) }
+}

@@ -1,0 +1,95 @@
+//! A set of trochoid waves and the Gerstner displacement it defines.
+
+use glam::{DVec2, DVec3};
+
+use crate::Trochoid;
+
+/// An ordered set of trochoid waves about the mean sea level `y = 0`.
+///
+/// The set is data; [`crate::TrochoidSum`] turns it into the surface that Darles et al. trace.
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize)]
+pub struct TrochoidSet {
+    waves: Vec<Trochoid>,
+}
+
+impl TrochoidSet {
+    /// A set from its waves (each already validated by [`Trochoid::new`]).
+    pub fn new(waves: Vec<Trochoid>) -> Self {
+        Self { waves }
+    }
+
+    /// The waves.
+    pub fn waves(&self) -> &[Trochoid] {
+        &self.waves
+    }
+
+    /// Number of waves `N`.
+    pub fn len(&self) -> usize {
+        self.waves.len()
+    }
+
+    /// `true` for a flat sea.
+    pub fn is_empty(&self) -> bool {
+        self.waves.is_empty()
+    }
+
+    /// Appends the waves of `other` (sea plus swell).
+    pub fn extend(&mut self, other: &TrochoidSet) {
+        self.waves.extend_from_slice(&other.waves);
+    }
+
+    /// `Σ Aᵢ` (m): the surface lies within `±Σ Aᵢ` of the mean level.
+    pub fn total_amplitude(&self) -> f64 {
+        self.waves.iter().map(Trochoid::amplitude).sum()
+    }
+
+    /// `Σ Qᵢ`: the Gerstner sum cannot fold while it is below 1 (equation sheet §1).
+    pub fn total_steepness(&self) -> f64 {
+        self.waves.iter().map(Trochoid::steepness).sum()
+    }
+
+    /// Elevation variance of the sinusoidal limit, `Σ Aᵢ²/2` (m²), the quantity matched to
+    /// `∫ S dω` by the fit.
+    pub fn variance(&self) -> f64 {
+        self.waves.iter().map(|w| 0.5 * w.amplitude() * w.amplitude()).sum()
+    }
+
+    /// Gerstner displacement of the particle at rest position `u = (x, z)` at time `t`:
+    /// `(−Σ (Qᵢ/kᵢ) d̂ᵢ sin φᵢ, Σ Aᵢ cos φᵢ)` returned as `(dx, y, dz)` (m).
+    ///
+    /// # References
+    /// Equation sheet §1, "Sum of N trochoids".
+    pub fn gerstner_displacement(&self, u: DVec2, t: f64) -> DVec3 {
+        let mut out = DVec3::ZERO;
+        for w in &self.waves {
+            let d = w.direction_vector();
+            let phi = w.wavenumber() * d.dot(u) - w.omega() * t + w.phase();
+            let (s, c) = phi.sin_cos();
+            let r = w.horizontal_radius();
+            out.x -= r * d.x * s;
+            out.z -= r * d.y * s;
+            out.y += w.amplitude() * c;
+        }
+        out
+    }
+
+    /// Jacobian determinant of the horizontal Gerstner map `u ↦ u + D(u)` at rest position `u`:
+    /// `J = (1 + ∂Dx/∂x)(1 + ∂Dz/∂z) − (∂Dx/∂z)(∂Dz/∂x)` with `∂D/∂u = −Σ Qᵢ d̂ᵢ d̂ᵢᵀ cos φᵢ`.
+    ///
+    /// `J < 1` where the surface is compressed, `J < 0` where it folds.
+    ///
+    /// # References
+    /// Dupuy & Bruneton 2012; equation sheet §10.
+    pub fn gerstner_jacobian(&self, u: DVec2, t: f64) -> f64 {
+        let (mut jxx, mut jxz, mut jzz) = (1.0, 0.0, 1.0);
+        for w in &self.waves {
+            let d = w.direction_vector();
+            let phi = w.wavenumber() * d.dot(u) - w.omega() * t + w.phase();
+            let qc = w.steepness() * phi.cos();
+            jxx -= qc * d.x * d.x;
+            jxz -= qc * d.x * d.y;
+            jzz -= qc * d.y * d.y;
+        }
+        jxx * jzz - jxz * jxz
+    }
+}

@@ -1,0 +1,228 @@
+//! A single trochoid (Gerstner) wave and its exact height profile.
+
+use std::f64::consts::{PI, TAU};
+
+use glam::DVec2;
+
+use crate::error::{WaveError, check};
+
+/// Largest steepness accepted: at `Q = 1` the crest is a cusp with an infinite slope.
+pub const MAX_STEEPNESS: f64 = 0.99;
+
+/// One trochoid wave.
+///
+/// A water particle at rest position `u` (horizontal, m) moves on a circle:
+/// `x = u − (Q/k) d̂ sin φ`, `y = A cos φ`, with phase `φ = k d̂·u − ω t + φ₀`. With `Q = kA` this
+/// is Gerstner's exact trochoid (horizontal and vertical radii equal); a larger `Q` sharpens the
+/// crests ("choppiness"). `Q < 1` keeps the profile a single-valued height field.
+///
+/// # References
+/// Thon S., Ghazanfarpour D. 2002, "Ocean waves synthesis and animation using real world
+/// information", Computers & Graphics 26(1):99–108; Darles et al. 2007, §3; equation sheet §1.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Trochoid {
+    amplitude: f64,
+    wavenumber: f64,
+    direction: f64,
+    omega: f64,
+    phase: f64,
+    steepness: f64,
+}
+
+impl Trochoid {
+    /// A trochoid wave.
+    ///
+    /// # Arguments
+    /// - `amplitude`: vertical radius `A` (m), `[0, ∞)`.
+    /// - `wavenumber`: `k` (rad m⁻¹), `(0, ∞)`; wavelength `λ = 2π/k`.
+    /// - `direction`: propagation angle `θ` (rad) from +x toward +z (see `docs/conventions.md`).
+    /// - `omega`: angular frequency `ω` (rad s⁻¹), `[0, ∞)`.
+    /// - `phase`: initial phase `φ₀` (rad), finite.
+    /// - `steepness`: `Q = k × horizontal radius`, `[0, 0.99]`.
+    ///
+    /// # Errors
+    /// [`WaveError::OutOfRange`] naming the first parameter outside its range.
+    pub fn new(
+        amplitude: f64,
+        wavenumber: f64,
+        direction: f64,
+        omega: f64,
+        phase: f64,
+        steepness: f64,
+    ) -> Result<Self, WaveError> {
+        Ok(Self {
+            amplitude: check("amplitude_m", amplitude, amplitude >= 0.0, "[0, ∞) m")?,
+            wavenumber: check("wavenumber_rad_m", wavenumber, wavenumber > 0.0, "(0, ∞) rad/m")?,
+            direction: check("direction_rad", direction, true, "finite")?,
+            omega: check("omega_rad_s", omega, omega >= 0.0, "[0, ∞) rad/s")?,
+            phase: check("phase_rad", phase, true, "finite")?,
+            steepness: check("steepness", steepness, (0.0..=MAX_STEEPNESS).contains(&steepness), "[0, 0.99]")?,
+        })
+    }
+
+    /// Vertical radius `A` (m).
+    pub fn amplitude(&self) -> f64 {
+        self.amplitude
+    }
+    /// Wavenumber `k` (rad m⁻¹).
+    pub fn wavenumber(&self) -> f64 {
+        self.wavenumber
+    }
+    /// Wavelength `λ = 2π/k` (m).
+    pub fn wavelength(&self) -> f64 {
+        TAU / self.wavenumber
+    }
+    /// Propagation angle `θ` (rad) from +x toward +z.
+    pub fn direction(&self) -> f64 {
+        self.direction
+    }
+    /// Unit propagation vector `d̂ = (cos θ, sin θ)` in the (x, z) plane.
+    pub fn direction_vector(&self) -> DVec2 {
+        DVec2::new(self.direction.cos(), self.direction.sin())
+    }
+    /// Angular frequency `ω` (rad s⁻¹).
+    pub fn omega(&self) -> f64 {
+        self.omega
+    }
+    /// Initial phase `φ₀` (rad).
+    pub fn phase(&self) -> f64 {
+        self.phase
+    }
+    /// Steepness `Q` (dimensionless).
+    pub fn steepness(&self) -> f64 {
+        self.steepness
+    }
+    /// Horizontal radius `Q/k` (m).
+    pub fn horizontal_radius(&self) -> f64 {
+        self.steepness / self.wavenumber
+    }
+
+    /// Largest slope of the profile, `|dh/dx|max = kA/√(1 − Q²)`, reached where `cos θ = Q`
+    /// (at height `Q·A`, not at the crest).
+    ///
+    /// # Returns
+    /// The slope (dimensionless): the Lipschitz constant of this wave's height field.
+    ///
+    /// # References
+    /// Equation sheet §1, "max |slope|" (derived; Darles et al. 2007 §3.2 place it wrongly at the
+    /// crest).
+    pub fn max_slope(&self) -> f64 {
+        self.wavenumber * self.amplitude / (1.0 - self.steepness * self.steepness).sqrt()
+    }
+}
+
+impl Trochoid {
+    /// Mean-square slope of the profile averaged over horizontal position,
+    /// `⟨(dh/dx)²⟩ = (kA)² (1 − √(1 − Q²))/Q²` (→ `(kA)²/2` as `Q → 0`), all of it along `d̂`.
+    ///
+    /// Derived from `dh/dx = −kA sin θ/(1 − Q cos θ)` and `dx ∝ (1 − Q cos θ) dθ`; with `Q = kA`
+    /// it is the equation sheet's `1 − √(1 − Q²)`.
+    ///
+    /// # Returns
+    /// The mean-square slope (dimensionless).
+    ///
+    /// # References
+    /// Equation sheet §1 ("mean-square slope") and §11 (trochoid slope variances).
+    pub fn mean_square_slope(&self) -> f64 {
+        let q = self.steepness;
+        let ka2 = (self.wavenumber * self.amplitude).powi(2);
+        if q < 1e-4 {
+            // Series (1 − √(1 − Q²))/Q² = ½ + Q²/8 + …
+            ka2 * (0.5 + q * q / 8.0)
+        } else {
+            ka2 * (1.0 - (1.0 - q * q).sqrt()) / (q * q)
+        }
+    }
+}
+
+/// Solves Kepler's equation of the trochoid, `θ − Q sin θ = s`, for the particle phase `θ`.
+///
+/// A particle of phase `θ` sits at horizontal phase coordinate `s = θ − Q sin θ` (the horizontal
+/// position times `k`), so the profile of one wave is `h(s) = A cos θ(s)`. The map is monotone
+/// for `Q < 1`; `|θ − s| ≤ Q`. Newton's method from `θ₀ = s + Q sin s / (1 − Q cos s)`, safeguarded
+/// by the bracket `[s − Q, s + Q]`, to `|Δθ| ≤ 10⁻¹³` (usually 2–4 iterations, at most 60).
+///
+/// # Arguments
+/// - `s`: horizontal phase (rad), any finite value.
+/// - `q`: steepness `Q`, `[0, 0.99]`.
+///
+/// # Returns
+/// `(θ, cos θ, sin θ)`, with `θ − s` reduced to the principal branch (`θ` is within `Q` of `s`
+/// reduced to `(−π, π]`).
+///
+/// # References
+/// Equation sheet §1 (`τ_Q(s) = cos θ` with `θ` solving `s = θ − Q sin θ`); Thon & Ghazanfarpour 2002.
+#[inline]
+pub fn solve_trochoid_phase(s: f64, q: f64) -> (f64, f64, f64) {
+    debug_assert!((0.0..=MAX_STEEPNESS).contains(&q), "steepness {q} outside [0, 0.99]");
+    // Reduce s to (−π, π]: the profile is 2π-periodic in s.
+    let s = s - TAU * ((s + PI) / TAU).floor();
+    let (ss, cs) = s.sin_cos();
+    let mut theta = (s + q * ss / (1.0 - q * cs)).clamp(s - q, s + q);
+    let (mut lo, mut hi) = (s - q, s + q);
+    for _ in 0..60 {
+        let (sn, cn) = theta.sin_cos();
+        let f = theta - q * sn - s;
+        if f == 0.0 {
+            break;
+        }
+        if f > 0.0 {
+            hi = theta;
+        } else {
+            lo = theta;
+        }
+        let step = f / (1.0 - q * cn);
+        if step.abs() <= 1e-13 {
+            theta -= step;
+            break;
+        }
+        let next = theta - step;
+        theta = if next > lo && next < hi { next } else { 0.5 * (lo + hi) };
+    }
+    let (sn, cn) = theta.sin_cos();
+    (theta, cn, sn)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn phase_solution_satisfies_keplers_equation() {
+        for &q in &[0.0, 0.3, 0.7, 0.95, 0.99] {
+            for j in -50..=50 {
+                let s = j as f64 * 0.37;
+                let (theta, c, sn) = solve_trochoid_phase(s, q);
+                let s_red = s - TAU * ((s + PI) / TAU).floor();
+                assert!((theta - q * theta.sin() - s_red).abs() < 1e-12, "q = {q}, s = {s}");
+                assert!((c - theta.cos()).abs() < 1e-15 && (sn - theta.sin()).abs() < 1e-15);
+            }
+        }
+    }
+
+    #[test]
+    fn max_slope_oracle() {
+        // Equation sheet oracle: k = 1, A = 0.5 (Q = 0.5) ⇒ 0.577350; Q = 0.8 ⇒ 1.333333.
+        let w = Trochoid::new(0.5, 1.0, 0.0, 0.0, 0.0, 0.5).unwrap();
+        assert!((w.max_slope() - 0.577350).abs() < 1e-6);
+        let w = Trochoid::new(0.8, 1.0, 0.0, 0.0, 0.0, 0.8).unwrap();
+        assert!((w.max_slope() - 1.333333).abs() < 1e-6);
+    }
+
+    #[test]
+    fn mean_square_slope_oracle() {
+        // Equation sheet oracle: k = 1, A = 0.5 (Q = 0.5) ⇒ 0.133975; Q = 0.8 ⇒ 0.4.
+        let w = Trochoid::new(0.5, 1.0, 0.0, 0.0, 0.0, 0.5).unwrap();
+        assert!((w.mean_square_slope() - 0.133975).abs() < 1e-6);
+        let w = Trochoid::new(0.8, 1.0, 0.0, 0.0, 0.0, 0.8).unwrap();
+        assert!((w.mean_square_slope() - 0.4).abs() < 1e-6);
+    }
+
+    #[test]
+    fn invalid_parameters_are_named() {
+        let e = Trochoid::new(1.0, 0.0, 0.0, 0.0, 0.0, 0.5).unwrap_err();
+        assert!(e.to_string().contains("wavenumber_rad_m"), "{e}");
+        let e = Trochoid::new(1.0, 1.0, 0.0, 0.0, 0.0, 1.0).unwrap_err();
+        assert!(e.to_string().contains("steepness"), "{e}");
+    }
+}

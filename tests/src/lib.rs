@@ -1,0 +1,1 @@
+//! Helpers shared by Brine's cross-crate integration tests.

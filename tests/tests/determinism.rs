@@ -1,0 +1,23 @@
+//! The same scene gives the same bytes whatever the number of threads.
+
+use brine_render::{RenderOptions, Scene, render, write_image};
+
+#[test]
+fn one_and_two_threads_write_identical_files() {
+    let mut scene = Scene::default_scene();
+    scene.camera.width = 64;
+    scene.camera.height = 36;
+    scene.camera.spp = 2;
+    let dir = tempfile::tempdir().unwrap();
+    let mut bytes = Vec::new();
+    for threads in [1, 2] {
+        let frame = render(&scene, &RenderOptions { threads: Some(threads) }, &|| {}).unwrap();
+        for ext in ["png", "exr"] {
+            let path = dir.path().join(format!("t{threads}.{ext}"));
+            write_image(&path, frame.width, frame.height, &frame.pixels, scene.output.exposure_ev).unwrap();
+            bytes.push(std::fs::read(path).unwrap());
+        }
+    }
+    assert!(bytes[0] == bytes[2], "PNG bytes differ between 1 and 2 threads");
+    assert!(bytes[1] == bytes[3], "EXR bytes differ between 1 and 2 threads");
+}
