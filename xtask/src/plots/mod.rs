@@ -7,12 +7,28 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
+mod ephem;
+mod foam;
+mod optics;
+mod sky;
+mod texture;
+mod trace;
 mod waves;
+mod whitecap;
 
 type Plotter = fn(&Path) -> Result<(), String>;
 
 /// `(crate, plotting function)`.
-const PLOTTERS: &[(&str, Plotter)] = &[("brine-waves", waves::plot)];
+const PLOTTERS: &[(&str, Plotter)] = &[
+    ("brine-waves", waves::plot),
+    ("brine-trace", trace::plot),
+    ("brine-optics", optics::plot),
+    ("brine-sky", sky::plot),
+    ("brine-ephem", ephem::plot),
+    ("brine-foam", foam::plot),
+    ("brine-whitecap", whitecap::plot),
+    ("brine-texture", texture::plot),
+];
 
 /// Runs the plotters of the named crates (all when empty).
 pub fn run(root: &Path, crates: &[String]) -> Result<(), String> {

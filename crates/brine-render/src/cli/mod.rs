@@ -7,8 +7,14 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+mod ephem;
+mod foam;
+mod optics;
 mod render;
-mod stubs;
+mod sky;
+mod texture;
+mod waves;
+mod whitecap;
 
 /// A command-line failure, with the exit code it maps to.
 #[derive(Debug, thiserror::Error)]
@@ -57,26 +63,26 @@ pub struct Cli {
 pub enum Command {
     /// Render a scene file (or the embedded default scene) to PNG or EXR.
     Render(render::RenderArgs),
-    /// Print an ocean spectrum S(ω) as JSON (issue #3).
-    Spectrum(stubs::Rest),
-    /// Fit a trochoid wave set to a spectrum and print it as JSON (issue #3).
-    Fit(stubs::Rest),
-    /// Sun position for a place and a UTC time (issue #4).
-    Sun(stubs::Rest),
-    /// Moon position and phase for a place and a UTC time (issue #4).
-    Moon(stubs::Rest),
-    /// Sky radiance or a fisheye sky dome (issue #4).
-    Sky(stubs::Rest),
-    /// Fresnel and water optics queries (issue #5).
-    Optics(stubs::Rest),
-    /// Whitecap coverage of Monahan's laws (issue #6).
-    Foam(stubs::Rest),
-    /// Sea-spray size distribution and extinction (issue #6).
-    Spray(stubs::Rest),
-    /// Whitecap coverage from the Jacobian statistics (issue #6).
-    Whitecap(stubs::Rest),
-    /// The photo-based ocean of Lai & Wu (issue #8).
-    Texture(stubs::Rest),
+    /// Print an ocean spectrum S(ω) as JSON.
+    Spectrum(waves::SpectrumArgs),
+    /// Fit a trochoid wave set to a spectrum and print it as JSON.
+    Fit(waves::FitArgs),
+    /// Sun position for a place and a UTC time.
+    Sun(ephem::SunArgs),
+    /// Moon position and phase for a place and a UTC time.
+    Moon(ephem::MoonArgs),
+    /// Sky radiance for a view direction, or a fisheye sky dome image.
+    Sky(sky::SkyArgs),
+    /// Fresnel and water-optics queries.
+    Optics(optics::OpticsArgs),
+    /// Whitecap coverage of Monahan's laws.
+    Foam(foam::FoamArgs),
+    /// Sea-spray size distribution and extinction.
+    Spray(foam::SprayArgs),
+    /// Whitecap coverage from the displacement-Jacobian statistics.
+    Whitecap(whitecap::WhitecapArgs),
+    /// The photo-based ocean of Lai & Wu.
+    Texture(texture::TextureArgs),
 }
 
 /// Parses the process arguments and runs; prints `error: …` on failure.
@@ -99,15 +105,15 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         None => render::run(&cli.render),
         Some(Command::Render(args)) => render::run(&args),
-        Some(Command::Spectrum(_)) => Err(CliError::NotYet { command: "spectrum", issue: 3 }),
-        Some(Command::Fit(_)) => Err(CliError::NotYet { command: "fit", issue: 3 }),
-        Some(Command::Sun(_)) => Err(CliError::NotYet { command: "sun", issue: 4 }),
-        Some(Command::Moon(_)) => Err(CliError::NotYet { command: "moon", issue: 4 }),
-        Some(Command::Sky(_)) => Err(CliError::NotYet { command: "sky", issue: 4 }),
-        Some(Command::Optics(_)) => Err(CliError::NotYet { command: "optics", issue: 5 }),
-        Some(Command::Foam(_)) => Err(CliError::NotYet { command: "foam", issue: 6 }),
-        Some(Command::Spray(_)) => Err(CliError::NotYet { command: "spray", issue: 6 }),
-        Some(Command::Whitecap(_)) => Err(CliError::NotYet { command: "whitecap", issue: 6 }),
-        Some(Command::Texture(_)) => Err(CliError::NotYet { command: "texture", issue: 8 }),
+        Some(Command::Spectrum(args)) => waves::run_spectrum(&args),
+        Some(Command::Fit(args)) => waves::run_fit(&args),
+        Some(Command::Sun(args)) => ephem::run_sun(&args),
+        Some(Command::Moon(args)) => ephem::run_moon(&args),
+        Some(Command::Sky(args)) => sky::run_sky(&args),
+        Some(Command::Optics(args)) => optics::run_optics(&args),
+        Some(Command::Foam(args)) => foam::run_foam(&args),
+        Some(Command::Spray(args)) => foam::run_spray(&args),
+        Some(Command::Whitecap(args)) => whitecap::run_whitecap(&args),
+        Some(Command::Texture(args)) => texture::run_texture(&args),
     }
 }

@@ -1,0 +1,9 @@
+//! Plots of brine-optics (none yet: add them with the crate's issue).
+
+use std::path::Path;
+
+/// Writes the brine-optics figures into `dir`.
+pub fn plot(dir: &Path) -> Result<(), String> {
+    let _ = dir;
+    Ok(())
+}
