@@ -20,13 +20,14 @@
 
 pub mod camera;
 pub mod cli;
+pub mod glare;
 pub mod output;
 mod render;
 pub mod scene;
 pub mod tonemap;
 mod world;
 
-pub use output::{OutputError, OutputFormat, write_image};
-pub use render::{Frame, RenderError, RenderOptions, render};
+pub use output::{OutputError, OutputFormat, write_frame, write_image};
+pub use render::{Aov, Frame, RenderError, RenderOptions, render, render_world};
 pub use scene::{Scene, SceneError};
-pub use world::{World, WorldError};
+pub use world::{World, WorldError, auto_exposure_ev};

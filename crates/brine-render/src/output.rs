@@ -71,9 +71,33 @@ pub fn write_image(
     pixels: &[DVec3],
     exposure_ev: f64,
 ) -> Result<(), OutputError> {
+    write_with_aovs(path, width, height, pixels, None, exposure_ev)
+}
+
+/// Writes a rendered frame; with `aovs` and an `.exr` path, the output variables become extra
+/// channels of the same part, named as layers the way compositing tools read them: `depth.Z`,
+/// `normal.X/Y/Z`, `foam.Y`, `whitecap.Y`, `evaluations.Y` (beside `R`, `G`, `B`). PNG files hold
+/// the tone-mapped image only.
+///
+/// # Errors
+/// See [`write_image`].
+pub fn write_frame(path: &Path, frame: &crate::Frame, exposure_ev: f64, aovs: bool) -> Result<(), OutputError> {
+    let aov = aovs.then_some(frame.aovs.as_slice());
+    write_with_aovs(path, frame.width, frame.height, &frame.pixels, aov, exposure_ev)
+}
+
+fn write_with_aovs(
+    path: &Path,
+    width: u32,
+    height: u32,
+    pixels: &[DVec3],
+    aovs: Option<&[crate::Aov]>,
+    exposure_ev: f64,
+) -> Result<(), OutputError> {
     let format = OutputFormat::from_path(path).map_err(OutputError::Format)?;
     let shown = path.display().to_string();
     let io = |source| OutputError::Io { path: shown.clone(), source };
+    let encode = |message: String| OutputError::Encode { path: shown.clone(), message };
     let dir = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
@@ -97,26 +121,34 @@ pub fn write_image(
             let mut w = BufWriter::new(tmp.as_file_mut());
             image::codecs::png::PngEncoder::new(&mut w)
                 .write_image(&bytes, width, height, image::ExtendedColorType::Rgb8)
-                .map_err(|e| OutputError::Encode { path: shown.clone(), message: e.to_string() })?;
+                .map_err(|e| encode(e.to_string()))?;
             w.flush().map_err(io)?;
         }
         OutputFormat::Exr => {
             use exr::prelude::*;
-            let w = width as usize;
+            let f32s = |f: &dyn Fn(usize) -> f32| FlatSamples::F32((0..pixels.len()).map(f).collect());
+            let mut channels = vec![
+                AnyChannel::new("R", f32s(&|i| pixels[i].x as f32)),
+                AnyChannel::new("G", f32s(&|i| pixels[i].y as f32)),
+                AnyChannel::new("B", f32s(&|i| pixels[i].z as f32)),
+            ];
+            if let Some(a) = aovs {
+                channels.push(AnyChannel::new("depth.Z", f32s(&|i| a[i].depth)));
+                channels.push(AnyChannel::new("normal.X", f32s(&|i| a[i].normal[0])));
+                channels.push(AnyChannel::new("normal.Y", f32s(&|i| a[i].normal[1])));
+                channels.push(AnyChannel::new("normal.Z", f32s(&|i| a[i].normal[2])));
+                channels.push(AnyChannel::new("foam.Y", f32s(&|i| a[i].foam)));
+                channels.push(AnyChannel::new("whitecap.Y", f32s(&|i| a[i].whitecap)));
+                channels.push(AnyChannel::new("evaluations.Y", f32s(&|i| a[i].evaluations)));
+            }
             let layer = Layer::new(
-                (w, height as usize),
-                LayerAttributes::named("rgb"),
+                (width as usize, height as usize),
+                LayerAttributes::named("brine"),
                 Encoding::SMALL_LOSSLESS,
-                SpecificChannels::rgb(|pos: Vec2<usize>| {
-                    let p = pixels[pos.y() * w + pos.x()];
-                    (p.x as f32, p.y as f32, p.z as f32)
-                }),
+                AnyChannels::sort(SmallVec::from_vec(channels)),
             );
             let mut out = BufWriter::new(tmp.as_file_mut());
-            Image::from_layer(layer)
-                .write()
-                .to_buffered(&mut out)
-                .map_err(|e| OutputError::Encode { path: shown.clone(), message: e.to_string() })?;
+            Image::from_layer(layer).write().to_buffered(&mut out).map_err(|e| encode(e.to_string()))?;
             out.flush().map_err(io)?;
         }
     }
@@ -147,6 +179,9 @@ mod tests {
         let ok = dir.path().join("x.exr");
         write_image(&ok, 1, 1, &[DVec3::ONE], 14.0).unwrap();
         assert!(ok.exists());
+        let meta = std::fs::metadata(&ok).unwrap();
+        #[cfg(unix)]
+        assert_ne!(std::os::unix::fs::PermissionsExt::mode(&meta.permissions()) & 0o044, 0, "others can read");
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1, "no temporary file left");
     }
 }

@@ -18,6 +18,21 @@ pub struct RenderOptions {
     pub threads: Option<usize>,
 }
 
+/// Arbitrary output variables of a pixel, taken from its first sample.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Aov {
+    /// Distance from the eye to the sea surface along the ray (m); infinite for the sky.
+    pub depth: f32,
+    /// Unit normal of the sea surface at the hit (zero for the sky).
+    pub normal: [f32; 3],
+    /// Foam coverage at the hit, `[0, 1]`.
+    pub foam: f32,
+    /// Whitecap coverage at the hit, `[0, 1]`.
+    pub whitecap: f32,
+    /// Evaluations of the implicit function `F` spent on the primary ray.
+    pub evaluations: f32,
+}
+
 /// A rendered frame.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Frame {
@@ -27,8 +42,12 @@ pub struct Frame {
     pub height: u32,
     /// Linear sRGB radiance (kcd m⁻²), row-major, top row first.
     pub pixels: Vec<DVec3>,
+    /// Per-pixel output variables, same layout as `pixels`.
+    pub aovs: Vec<Aov>,
     /// Tracer counters over all primary rays.
     pub stats: TraceStats,
+    /// Exposure to display the frame with (EV₁₀₀).
+    pub exposure_ev: f64,
 }
 
 /// Why a frame could not be rendered.
@@ -62,25 +81,45 @@ fn pixel_seed(seed: u64, index: u64) -> u64 {
 /// [`RenderError`] if a model rejects the scene or the thread pool cannot start.
 pub fn render(scene: &Scene, options: &RenderOptions, on_row: &(dyn Fn() + Sync)) -> Result<Frame, RenderError> {
     let world = World::new(scene)?;
+    render_world(scene, &world, options, on_row)
+}
+
+/// Renders a scene whose models are already built (animations rebuild only what changes).
+///
+/// # Errors
+/// [`RenderError::Threads`] if the thread pool cannot start.
+pub fn render_world(
+    scene: &Scene,
+    world: &World,
+    options: &RenderOptions,
+    on_row: &(dyn Fn() + Sync),
+) -> Result<Frame, RenderError> {
     let (w, h) = (scene.camera.width, scene.camera.height);
     let spp = scene.camera.spp;
     let seed = scene.sea.seed;
     let field = world.sea.at_time(world.time);
     let mut pixels = vec![DVec3::ZERO; w as usize * h as usize];
-    let work = |pixels: &mut [DVec3]| -> TraceStats {
+    let mut aovs = vec![Aov::default(); w as usize * h as usize];
+    let work = |pixels: &mut [DVec3], aovs: &mut [Aov]| -> TraceStats {
         pixels
             .par_chunks_mut(w as usize)
+            .zip(aovs.par_chunks_mut(w as usize))
             .enumerate()
-            .map(|(y, row)| {
+            .map(|(y, (row, aov_row))| {
                 let mut stats = TraceStats::default();
-                for (x, out) in row.iter_mut().enumerate() {
+                for (x, (out, aov)) in row.iter_mut().zip(aov_row.iter_mut()).enumerate() {
                     let index = y as u64 * u64::from(w) + x as u64;
                     let mut rng = ChaCha8Rng::seed_from_u64(pixel_seed(seed, index));
                     let mut sum = DVec3::ZERO;
-                    for _ in 0..spp {
+                    for s in 0..spp {
                         let (jx, jy) = if spp == 1 { (0.5, 0.5) } else { (rng.random::<f64>(), rng.random::<f64>()) };
                         let d = world.camera.direction(x as f64 + jx, y as f64 + jy);
-                        sum += radiance(&world, &field, d, &mut stats);
+                        let before = stats.evaluations;
+                        let sample = radiance(world, &field, d, &mut stats);
+                        if s == 0 {
+                            *aov = Aov { evaluations: (stats.evaluations - before) as f32, ..sample.aov };
+                        }
+                        sum += sample.radiance;
                     }
                     *out = sum / f64::from(spp);
                 }
@@ -93,29 +132,42 @@ pub fn render(scene: &Scene, options: &RenderOptions, on_row: &(dyn Fn() + Sync)
             })
     };
     let stats = match options.threads {
-        None => work(&mut pixels),
+        None => work(&mut pixels, &mut aovs),
         Some(n) => rayon::ThreadPoolBuilder::new()
             .num_threads(n)
             .build()
             .map_err(|e| RenderError::Threads { threads: n, message: e.to_string() })?
-            .install(|| work(&mut pixels)),
+            .install(|| work(&mut pixels, &mut aovs)),
     };
-    Ok(Frame { width: w, height: h, pixels, stats })
+    if scene.phenomena.glare {
+        crate::glare::Glare::new(w as usize, h as usize, world.camera.pixel_angle()).apply(&mut pixels);
+    }
+    Ok(Frame { width: w, height: h, pixels, aovs, stats, exposure_ev: world.exposure_ev })
 }
 
-/// Radiance (linear sRGB, kcd m⁻²) arriving at the camera along the unit direction `d`.
-fn radiance(world: &World, field: &TrochoidField<'_>, d: DVec3, stats: &mut TraceStats) -> DVec3 {
+/// What one camera sample returns.
+struct Sample {
+    radiance: DVec3,
+    aov: Aov,
+}
+
+/// Radiance (linear sRGB, kcd m⁻²) arriving at the camera along the unit direction `d`, and the
+/// sample's output variables.
+fn radiance(world: &World, field: &TrochoidField<'_>, d: DVec3, stats: &mut TraceStats) -> Sample {
     let origin = world.camera.position;
     let ray = Ray::new(origin, d).expect("camera rays are finite and normalised");
     if let Some(hit) = trace(field, &ray, &world.trace, stats) {
         let n = field.normal(hit.point.x, hit.point.z);
-        return shade_surface(world, d, n, &world.variance_unresolved);
+        let aov = Aov { depth: hit.t as f32, normal: n.as_vec3().to_array(), ..Aov::default() };
+        return Sample { radiance: shade_surface(world, d, n, &world.variance_unresolved), aov };
     }
     if d.y < 0.0 {
         // Beyond the trace distance: the mean plane, with every wave's slopes in the BRDF.
-        return shade_surface(world, d, DVec3::Y, &world.variance_total);
+        let t = (world.camera.position.y / -d.y) as f32;
+        let aov = Aov { depth: t, normal: [0.0, 1.0, 0.0], ..Aov::default() };
+        return Sample { radiance: shade_surface(world, d, DVec3::Y, &world.variance_total), aov };
     }
-    sky_radiance(world, d)
+    Sample { radiance: sky_radiance(world, d), aov: Aov { depth: f32::INFINITY, ..Aov::default() } }
 }
 
 /// Sky along `d`, with the sun disc.

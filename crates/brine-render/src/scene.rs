@@ -34,6 +34,38 @@ pub struct Scene {
     pub sky: SkyConfig,
     /// The output image.
     pub output: OutputConfig,
+    /// Phenomena switched on or off.
+    pub phenomena: PhenomenaConfig,
+    /// Animation timing.
+    pub animation: AnimationConfig,
+}
+
+/// `[phenomena]`: what the image shows beyond sea, sky and sun.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct PhenomenaConfig {
+    /// Glare of the eye (Spencer et al. 1995 point-spread function).
+    pub glare: bool,
+}
+
+impl Default for PhenomenaConfig {
+    fn default() -> Self {
+        Self { glare: true }
+    }
+}
+
+/// `[animation]`: frame timing.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct AnimationConfig {
+    /// Frames per second (`(0, 1000]`); frame `f` is at `sea.time_s + f/fps`.
+    pub fps: f64,
+}
+
+impl Default for AnimationConfig {
+    fn default() -> Self {
+        Self { fps: 24.0 }
+    }
 }
 
 /// `[camera]`: a pinhole camera.
@@ -145,13 +177,20 @@ pub struct OutputConfig {
     /// Output file; `.png` (8-bit sRGB, tone-mapped) or `.exr` (linear f32 radiance).
     pub path: PathBuf,
     /// Exposure as EV₁₀₀ (`[−10, 30]`): the luminance mapped to white before the tone curve is
-    /// `1.2 · 2^EV` cd m⁻² (saturation-based exposure, ISO 12232).
+    /// `1.2 · 2^EV` cd m⁻² (saturation-based exposure, ISO 12232). With `auto_exposure`, an offset
+    /// added to the automatic value.
     pub exposure_ev: f64,
+    /// Expose from the horizontal illuminance of sun and sky (`EV = log₂(E/2.5 lx)`, the
+    /// incident-light meter calibration `C = 250`) plus `exposure_ev`.
+    pub auto_exposure: bool,
+    /// Write the output variables (depth, normal, foam, whitecap, evaluations) as extra EXR
+    /// channels (`.exr` only).
+    pub aovs: bool,
 }
 
 impl Default for OutputConfig {
     fn default() -> Self {
-        Self { path: PathBuf::from("ocean.png"), exposure_ev: 15.0 }
+        Self { path: PathBuf::from("ocean.png"), exposure_ev: 15.0, auto_exposure: false, aovs: false }
     }
 }
 
@@ -282,6 +321,8 @@ impl Scene {
         range("sky", "sun_azimuth_deg", k.sun_azimuth_deg, true, "a finite angle in degrees")?;
         let o = &self.output;
         range("output", "exposure_ev", o.exposure_ev, (-10.0..=30.0).contains(&o.exposure_ev), "[-10, 30] EV")?;
+        let a = &self.animation;
+        range("animation", "fps", a.fps, a.fps > 0.0 && a.fps <= 1000.0, "(0, 1000] frames per second")?;
         crate::output::OutputFormat::from_path(&o.path).map_err(|m| ("output", "path", m))?;
         Ok(())
     }

@@ -53,6 +53,17 @@ pub struct World {
     pub trace: TraceOptions,
     /// The camera.
     pub camera: Camera,
+    /// Exposure of the frame (EV₁₀₀), from the scene or automatic.
+    pub exposure_ev: f64,
+}
+
+/// Automatic exposure from the horizontal illuminance `E` (lx): `EV₁₀₀ = log₂(E/2.5)`, the
+/// exposure an incident-light meter with calibration constant `C = 250 lx·s` sets at ISO 100.
+///
+/// # References
+/// ISO 2720:1974 (incident-light meter calibration); Ray S. 2000, *The Manual of Photography*, §21.
+pub fn auto_exposure_ev(illuminance_lx: f64) -> f64 {
+    (illuminance_lx.max(1e-6) / 2.5).log2()
 }
 
 /// Wind speed 12.5 m above the sea from `U₁₀` by the neutral logarithmic profile with roughness
@@ -122,6 +133,12 @@ impl World {
         let water_radiance = pure_water_reflectance_rgb() * e_below / std::f64::consts::PI / (WATER_IOR * WATER_IOR);
 
         let camera = Camera::from_config(&scene.camera);
+        let exposure_ev = if scene.output.auto_exposure {
+            let e_klx = sun.irradiance_rgb().y * cos_sun + sky_e.y;
+            (auto_exposure_ev(e_klx * 1000.0) + scene.output.exposure_ev).clamp(-10.0, 30.0)
+        } else {
+            scene.output.exposure_ev
+        };
         let trace = TraceOptions {
             method: Method::Directional,
             t_max: s.trace_distance_m,
@@ -144,6 +161,7 @@ impl World {
             water_radiance,
             trace,
             camera,
+            exposure_ev,
         };
         let field = world.sea.at_time(world.time);
         let f = field.value(camera.position);

@@ -83,3 +83,40 @@ fn a_small_render_writes_exactly_the_image() {
     let img = image::open(dir.path().join("out.png")).unwrap();
     assert_eq!((img.width(), img.height()), (12, 8));
 }
+
+#[test]
+fn an_interrupted_animation_resumed_gives_the_same_frames() {
+    let dir = tempfile::tempdir().unwrap();
+    let root = dir.path();
+    std::fs::write(root.join("scene.toml"), "[camera]\nwidth = 16\nheight = 9\n[sea]\nwaves = 6\n").unwrap();
+    for sub in ["a", "b"] {
+        std::fs::create_dir(root.join(sub)).unwrap();
+    }
+    let run = |args: &[&str]| {
+        let out = brine(args, root);
+        assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+        String::from_utf8_lossy(&out.stderr).into_owned()
+    };
+    run(&["render", "scene.toml", "--frames", "0..3", "-o", "a/f_##.png", "--quiet"]);
+    // "Interrupted" after the first frame, with a stale temporary file of the second.
+    run(&["render", "scene.toml", "--frames", "0..1", "-o", "b/f_##.png", "--quiet"]);
+    std::fs::write(root.join("b/.f_01.png.abc123.tmp"), b"half an image").unwrap();
+    let log = run(&["render", "scene.toml", "--frames", "0..3", "--resume", "-o", "b/f_##.png"]);
+    assert!(log.contains("2 frames (1 skipped)"), "{log}");
+    for f in ["f_00.png", "f_01.png", "f_02.png"] {
+        let a = std::fs::read(root.join("a").join(f)).unwrap();
+        let b = std::fs::read(root.join("b").join(f)).unwrap();
+        assert!(a == b, "{f} differs between the uninterrupted and the resumed run");
+    }
+    // Frames differ in time, so consecutive frames are different images.
+    assert!(std::fs::read(root.join("a/f_00.png")).unwrap() != std::fs::read(root.join("a/f_02.png")).unwrap());
+}
+
+#[test]
+fn an_animation_needs_a_frame_number_in_the_path() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("scene.toml"), "").unwrap();
+    let out = brine(&["render", "scene.toml", "--frames", "0..2", "-o", "out.png"], dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("needs a run of #"));
+}

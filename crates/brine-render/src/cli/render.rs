@@ -8,7 +8,7 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use super::CliError;
 use crate::output::OutputFormat;
-use crate::{RenderError, RenderOptions, Scene, render, write_image};
+use crate::{RenderError, RenderOptions, Scene, render, write_frame};
 
 /// Arguments of `brine render`.
 #[derive(Debug, Clone, Default, clap::Args)]
@@ -33,6 +33,43 @@ pub struct RenderArgs {
     /// No progress bar and no summary.
     #[arg(short, long)]
     pub quiet: bool,
+    /// Render an animation: frames `A..B` (B excluded), frame `f` at `sea.time_s + f/fps`; the
+    /// output path must hold a run of `#` replaced by the zero-padded frame number.
+    #[arg(long, value_parser = parse_frames)]
+    pub frames: Option<(u32, u32)>,
+    /// With `--frames`: skip frames whose output file already exists.
+    #[arg(long, requires = "frames")]
+    pub resume: bool,
+}
+
+/// Parses `A..B` with `A < B`.
+fn parse_frames(s: &str) -> Result<(u32, u32), String> {
+    let (a, b) = s.split_once("..").ok_or_else(|| format!("expected A..B (e.g. 0..240), got {s:?}"))?;
+    let a: u32 = a.trim().parse().map_err(|_| format!("expected a frame number before .., got {a:?}"))?;
+    let b: u32 = b.trim().parse().map_err(|_| format!("expected a frame number after .., got {b:?}"))?;
+    if a >= b {
+        return Err(format!("the range {a}..{b} is empty (the end is excluded)"));
+    }
+    Ok((a, b))
+}
+
+/// The output path of frame `f`: the last run of `#` in the file name replaced by `f`, padded with
+/// zeros to the run's length.
+///
+/// # Errors
+/// A message if the file name has no `#`.
+pub fn frame_path(pattern: &std::path::Path, frame: u32) -> Result<PathBuf, String> {
+    let name = pattern.file_name().and_then(|n| n.to_str()).unwrap_or("");
+    let end = name.rfind('#').ok_or_else(|| {
+        format!(
+            "{}: an animation needs a run of # in the file name for the frame number (e.g. frame_####.png)",
+            pattern.display()
+        )
+    })?;
+    let start = name[..=end].trim_end_matches('#').len();
+    let width = end + 1 - start;
+    let file = format!("{}{:0width$}{}", &name[..start], frame, &name[end + 1..]);
+    Ok(pattern.with_file_name(file))
 }
 
 /// Loads the scene named by `args` (or the default) and applies the command-line overrides.
@@ -66,26 +103,37 @@ pub fn scene_of(args: &RenderArgs) -> Result<Scene, CliError> {
 /// [`CliError::Input`] for bad input (nothing is written), [`CliError::Failure`] for I/O errors.
 pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     let scene = scene_of(args)?;
-    let out = scene.output.path.clone();
+    let pattern = scene.output.path.clone();
     // Fail before a long render if the destination folder is missing.
-    if let Some(dir) = out.parent().filter(|p| !p.as_os_str().is_empty())
+    if let Some(dir) = pattern.parent().filter(|p| !p.as_os_str().is_empty())
         && !dir.is_dir()
     {
         return Err(CliError::Input(format!(
             "cannot write {}: folder {} does not exist",
-            out.display(),
+            pattern.display(),
             dir.display()
         )));
     }
+    let frames: Vec<(u32, PathBuf)> = match args.frames {
+        None => vec![(0, pattern.clone())],
+        Some((a, b)) => (a..b)
+            .map(|f| frame_path(&pattern, f).map(|p| (f, p)))
+            .collect::<Result<_, _>>()
+            .map_err(CliError::Input)?,
+    };
+    let todo: Vec<&(u32, PathBuf)> = frames.iter().filter(|(_, p)| !(args.resume && p.exists())).collect();
     let (w, h, spp) = (scene.camera.width, scene.camera.height, scene.camera.spp);
     let show = !args.quiet && std::io::stderr().is_terminal();
     let bar = ProgressBar::with_draw_target(
-        Some(u64::from(h)),
+        Some(u64::from(h) * todo.len() as u64),
         if show { ProgressDrawTarget::stderr() } else { ProgressDrawTarget::hidden() },
     );
+    let what = if args.frames.is_some() { format!("{} frames", todo.len()) } else { "rendering".to_owned() };
     bar.set_style(
-        ProgressStyle::with_template("{spinner} rendering {bar:40.cyan/blue} {pos}/{len} rows  {msg}  ETA {eta}")
-            .expect("valid template"),
+        ProgressStyle::with_template(&format!(
+            "{{spinner}} {what} {{bar:40.cyan/blue}} {{percent}}%  {{msg}}  ETA {{eta}}"
+        ))
+        .expect("valid template"),
     );
     let start = Instant::now();
     let rays_per_row = f64::from(w) * f64::from(spp);
@@ -97,21 +145,49 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
         }
     };
     let options = RenderOptions { threads: args.threads.map(usize::from) };
-    let frame = render(&scene, &options, &on_row).map_err(|e| match e {
-        RenderError::World(w) => CliError::Input(w.to_string()),
-        other => CliError::Failure(other.to_string()),
-    })?;
+    let mut evaluations = 0.0;
+    for (frame, path) in &todo {
+        let mut s = scene.clone();
+        s.sea.time_s += f64::from(*frame) / scene.animation.fps;
+        let frame = render(&s, &options, &on_row).map_err(|e| match e {
+            RenderError::World(w) => CliError::Input(w.to_string()),
+            other => CliError::Failure(other.to_string()),
+        })?;
+        write_frame(path, &frame, frame.exposure_ev, scene.output.aovs)
+            .map_err(|e| CliError::Failure(e.to_string()))?;
+        evaluations += frame.stats.evaluations_per_ray();
+        if !show && !args.quiet && args.frames.is_some() {
+            eprintln!("wrote {}", path.display());
+        }
+    }
     bar.finish_and_clear();
-    write_image(&out, frame.width, frame.height, &frame.pixels, scene.output.exposure_ev)
-        .map_err(|e| CliError::Failure(e.to_string()))?;
     if !args.quiet {
         let secs = start.elapsed().as_secs_f64();
+        let n = todo.len().max(1) as f64;
+        let target = if args.frames.is_some() {
+            format!("{} frames ({} skipped)", todo.len(), frames.len() - todo.len())
+        } else {
+            pattern.display().to_string()
+        };
         eprintln!(
-            "wrote {} ({w}×{h}, {spp} spp) in {secs:.2} s: {:.2} Mrays/s, {:.1} evaluations per ray",
-            out.display(),
-            rays_per_row * f64::from(h) / secs / 1e6,
-            frame.stats.evaluations_per_ray()
+            "wrote {target} ({w}×{h}, {spp} spp) in {secs:.2} s: {:.2} Mrays/s, {:.1} evaluations per ray",
+            rays_per_row * f64::from(h) * todo.len() as f64 / secs / 1e6,
+            evaluations / n
         );
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frame_numbers_replace_the_last_run_of_hashes() {
+        let p = frame_path(std::path::Path::new("out/f_####.png"), 42).unwrap();
+        assert_eq!(p, PathBuf::from("out/f_0042.png"));
+        let p = frame_path(std::path::Path::new("a#b_##.exr"), 7).unwrap();
+        assert_eq!(p, PathBuf::from("a#b_07.exr"));
+        assert!(frame_path(std::path::Path::new("x.png"), 1).is_err());
+    }
 }
