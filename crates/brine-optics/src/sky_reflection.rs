@@ -31,7 +31,12 @@ impl SkyReflection {
         Ok(Self { rule: GaussHermite::new(order), n_water })
     }
 
-    /// Sum over facets of `fresnel(v·n) · sky(l) · (v·n)/(n_z v_z) / (1 + Λ(v) + Λ(l))`.
+    /// Self-normalised sum over facets: `Σ w f(v·n) sky(l) q / Σ w q₁`, with
+    /// `q = (v·n)/(n_z v_z) / (1 + Λ(v) + Λ(l))` on facets facing `v` that reflect above the
+    /// horizon, and `q₁ = (v·n)/(n_z v_z) / (1 + Λ(v))` on all facets facing `v` (whose exact
+    /// integral is 1, Smith's normalisation). Dividing by the quadrature's own estimate of that 1
+    /// cancels most of the error the visibility cut causes at grazing angles, and keeps the
+    /// white-furnace sum `≤ 1` exactly (`q ≤ q₁` pointwise).
     fn integrate(
         &self,
         v: DVec3,
@@ -45,6 +50,7 @@ impl SkyReflection {
         let (sx, sy) = ((2.0 * variance.sigma_x2()).sqrt(), (2.0 * variance.sigma_y2()).sqrt());
         let lambda_v = smith_lambda(v.z, variance.along(v));
         let mut sum = DVec3::ZERO;
+        let mut norm = 0.0;
         for (ti, wi) in self.rule.points() {
             for (tj, wj) in self.rule.points() {
                 let n = DVec3::new(-sx * ti, -sy * tj, 1.0).normalize();
@@ -52,22 +58,24 @@ impl SkyReflection {
                 if vn <= 0.0 {
                     continue;
                 }
+                let projected = wi * wj * vn / (n.z * v.z);
+                norm += projected / (1.0 + lambda_v);
                 let l = reflect(-v, n);
                 if l.z <= 0.0 {
                     continue;
                 }
                 let lambda_l = smith_lambda(l.z, variance.along(l));
-                let weight = wi * wj / std::f64::consts::PI * fresnel(vn) * vn / (n.z * v.z) / (1.0 + lambda_v + lambda_l);
-                sum += weight * sky(l);
+                sum += projected * fresnel(vn) / (1.0 + lambda_v + lambda_l) * sky(l);
             }
         }
-        sum
+        if norm > 0.0 { sum / norm } else { DVec3::ZERO }
     }
 
     /// Sky radiance reflected toward `v` by the unresolved waves:
     /// `I_sky(v) = ∫ ρ(v, l) L_sky(l) l_z dω_l = ∫ F(v·n) L_sky(l(n)) p(ζ) (v·n)/(n_z v_z) /
     /// (1 + Λ(v) + Λ(l)) d²ζ`, `l = 2(v·n)n − v`, over facets facing `v` and reflecting above the
-    /// horizon, by Gauss–Hermite quadrature in the slopes.
+    /// horizon, by self-normalised Gauss–Hermite quadrature in the slopes (see the crate docs:
+    /// within 1 % of a fine reference integral for order 8 up to 85° from the zenith).
     ///
     /// # Arguments
     /// - `v`: unit direction toward the viewer in the local wind frame (z up, x downwind).
