@@ -66,7 +66,7 @@ pub fn fresnel_normal(n_i: f64, n_t: f64) -> f64 {
 ///
 /// # Returns
 /// The approximate reflectance in `[0, 1]`. Its error against [`fresnel_dielectric`] for
-/// air → water is at most 0.05 (at grazing angles; see the tests and `docs/models/brine-optics.md`).
+/// air → water is at most 0.0592 (at 83.8°; see the tests and `docs/models/brine-optics.md`).
 ///
 /// # References
 /// Schlick C. 1994, "An inexpensive BRDF model for physically-based rendering", CGF 13(3), Eq. 24.
