@@ -124,7 +124,7 @@ pub fn critical_angle(n_i: f64, n_t: f64) -> Option<f64> {
 /// - `n_t`: index across the interface, `> 0`.
 ///
 /// # Returns
-/// `F_dr` in `[0, 1]`: 0.0661 for a uniform sky on water (1 → 1.333), 0.4755 for light inside
+/// `F_dr` in `[0, 1]`: 0.0664 for a uniform sky on water (1 → 1.333), 0.4746 for light inside
 /// water (1.333 → 1); Jensen's `F_dr(η)` is this with `n_i = η`, `n_t = 1`.
 ///
 /// # References

@@ -140,6 +140,13 @@ fn fresnel_oracles() {
     // The hemispherical reflectance of a uniform sky on flat water, 0.066 (Mobley 1994, Light and
     // Water §4.3, for n = 1.34; 0.0664 at 1.333).
     assert!((hemispherical_fresnel_reflectance(1.0, 1.333) - 0.066).abs() < 5e-4);
+    // Inside water: 0.474591 by an independent 2×10⁵-point midpoint sum; and the reciprocity
+    // relation of diffuse transmittance, 1 − F_int = (1 − F_ext)/n².
+    assert!((hemispherical_fresnel_reflectance(1.333, 1.0) - 0.474591).abs() < 1e-5);
+    for n in [1.1, 1.333, 1.5, 2.0] {
+        let (ext, int) = (hemispherical_fresnel_reflectance(1.0, n), hemispherical_fresnel_reflectance(n, 1.0));
+        assert_relative_eq!(1.0 - int, (1.0 - ext) / (n * n), max_relative = 1e-9);
+    }
 }
 
 #[test]
