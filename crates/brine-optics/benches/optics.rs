@@ -42,7 +42,9 @@ fn per_scene(c: &mut Criterion) {
     g.bench_function("water_rgb_case1_srgb_average", |b| {
         b.iter(|| WaterRgb::new(&WaterBody::case1(black_box(0.3)).unwrap(), RgbBands::SrgbAverage))
     });
-    g.bench_function("water_body_jerlov_fit", |b| b.iter(|| WaterBody::jerlov(black_box(brine_optics::JerlovType::II))));
+    g.bench_function("water_body_jerlov_fit", |b| {
+        b.iter(|| WaterBody::jerlov(black_box(brine_optics::JerlovType::II)))
+    });
     g.finish();
 }
 

@@ -31,8 +31,7 @@ pub fn cie1931_xyz_bar(lambda_nm: f64) -> [f64; 3] {
 }
 
 /// CIE XYZ → linear sRGB (IEC 61966-2-1, D65 white).
-const XYZ_TO_SRGB: [[f64; 3]; 3] =
-    [[3.2406, -1.5372, -0.4986], [-0.9689, 1.8758, 0.0415], [0.0557, -0.2040, 1.0570]];
+const XYZ_TO_SRGB: [[f64; 3]; 3] = [[3.2406, -1.5372, -0.4986], [-0.9689, 1.8758, 0.0415], [0.0557, -0.2040, 1.0570]];
 
 /// Number of 5 nm samples from 400 to 700 nm.
 pub const BAND_SAMPLES: usize = 61;
@@ -82,8 +81,8 @@ pub fn band_average(weights: &[[f64; BAND_SAMPLES]; 3], mut f: impl FnMut(f64) -
     for i in 0..BAND_SAMPLES {
         let v = f(LAMBDA_MIN_NM + 5.0 * i as f64);
         let end = if i == 0 || i == BAND_SAMPLES - 1 { 0.5 } else { 1.0 };
-        for c in 0..3 {
-            out[c] += weights[c][i] * v * end * 5.0;
+        for (o, w) in out.iter_mut().zip(weights) {
+            *o += w[i] * v * end * 5.0;
         }
     }
     out

@@ -234,8 +234,9 @@ mod tests {
 
     #[test]
     fn equivalent_chlorophyll_increases_with_turbidity() {
-        let c: Vec<f64> =
-            [JerlovType::I, JerlovType::IA, JerlovType::IB, JerlovType::II, JerlovType::III].map(|t| t.equivalent_chlorophyll()).to_vec();
+        let c: Vec<f64> = [JerlovType::I, JerlovType::IA, JerlovType::IB, JerlovType::II, JerlovType::III]
+            .map(|t| t.equivalent_chlorophyll())
+            .to_vec();
         assert!(c.windows(2).all(|w| w[0] < w[1]), "{c:?}");
     }
 }

@@ -86,14 +86,7 @@ pub fn diffuse_upwelling_radiance(reflectance: f64, e_d_below: f64) -> f64 {
 /// Darles et al. 2007 Eq. 8 and 11 (corrected: `cos θ` kept in the exponent, path length not
 /// depth, the floor term restored); Premoze & Ashikhmin 2001; equation sheet §7.
 #[inline]
-pub fn refracted_ray_radiance(
-    l_df0: f64,
-    c: f64,
-    k_d: f64,
-    cos_theta: f64,
-    path_m: f64,
-    floor_radiance: f64,
-) -> f64 {
+pub fn refracted_ray_radiance(l_df0: f64, c: f64, k_d: f64, cos_theta: f64, path_m: f64, floor_radiance: f64) -> f64 {
     debug_assert!(c > 0.0 && k_d >= 0.0 && path_m >= 0.0);
     let mu = cos_theta.clamp(0.0, 1.0);
     if path_m.is_infinite() {

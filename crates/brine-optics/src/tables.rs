@@ -95,7 +95,8 @@ pub(crate) const POPE_FRY_CSV: &str = include_str!("../data/pope_fry_1997_pure_w
 /// `data/morel_1988_kd.csv`.
 pub(crate) const MOREL_CSV: &str = include_str!("../data/morel_1988_kd.csv");
 /// `data/prieur_sathyendranath_1981_chl_absorption.csv`.
-pub(crate) const PRIEUR_SATHYENDRANATH_CSV: &str = include_str!("../data/prieur_sathyendranath_1981_chl_absorption.csv");
+pub(crate) const PRIEUR_SATHYENDRANATH_CSV: &str =
+    include_str!("../data/prieur_sathyendranath_1981_chl_absorption.csv");
 /// `data/jerlov_1976_kd.csv`.
 pub(crate) const JERLOV_CSV: &str = include_str!("../data/jerlov_1976_kd.csv");
 

@@ -76,10 +76,9 @@ impl WaterBody {
     /// Where `a`, `b`, `b_b` come from, in words (for reports and JSON).
     pub fn iop_source(&self) -> String {
         match self.kind {
-            WaterKind::Case1 => format!(
-                "Case-1 model (Morel 1988/1991, Premoze & Ashikhmin 2001) at C = {} mg/m3",
-                self.chl.mg_m3()
-            ),
+            WaterKind::Case1 => {
+                format!("Case-1 model (Morel 1988/1991, Premoze & Ashikhmin 2001) at C = {} mg/m3", self.chl.mg_m3())
+            }
             WaterKind::Jerlov(t) => format!(
                 "Case-1 model at the chlorophyll {:.4} mg/m3 whose Morel K_d best fits Jerlov type {t} (Brine's fit, rms log error {:.3})",
                 self.chl.mg_m3(),
@@ -179,7 +178,13 @@ impl WaterRgb {
     ///
     /// # Returns
     /// `L(0, θ)` per channel, in the unit of `e_d_below` per steradian.
-    pub fn refracted_ray_radiance(&self, e_d_below: DVec3, cos_theta: f64, path_m: f64, floor_radiance: DVec3) -> DVec3 {
+    pub fn refracted_ray_radiance(
+        &self,
+        e_d_below: DVec3,
+        cos_theta: f64,
+        path_m: f64,
+        floor_radiance: DVec3,
+    ) -> DVec3 {
         let l = self.diffuse_upwelling_radiance(e_d_below);
         DVec3::new(
             refracted_ray_radiance(l.x, self.c.x, self.k_d.x, cos_theta, path_m, floor_radiance.x),

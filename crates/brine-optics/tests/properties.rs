@@ -119,7 +119,7 @@ proptest! {
 
     #[test]
     fn brdf_is_nonnegative_and_reciprocal(
-        tv in 0.0f64..1.55, pv in 0.0f64..6.28, tl in 0.0f64..1.55, pl in 0.0f64..6.28,
+        tv in 0.0f64..1.55, pv in 0.0f64..std::f64::consts::TAU, tl in 0.0f64..1.55, pl in 0.0f64..std::f64::consts::TAU,
         sx in 1e-4f64..0.2, sy in 1e-4f64..0.2,
     ) {
         let var = SlopeVariance::new(sx, sy).unwrap();
@@ -170,7 +170,7 @@ fn smith_normalisation_and_white_furnace() {
     // Smith's Λ satisfies ∫ p(ζ) (v·n)⁺/(n_z v_z) d²ζ = 1 + Λ(v) for Gaussian slopes; and the BRDF
     // with F = 1 reflects at most all of the light, ∫ ρ l_z dω ≤ 1 (the visibility-weighted
     // density 1/(1 + Λ(v) + Λ(l)) ≤ 1/(1 + Λ(v))).
-    /// The reference quadrature resolves the smooth parts to ~10⁻⁸; the cut l_z = 0 inside the
+    /// The reference quadrature resolves the smooth parts to ~10⁻⁸; the cut `l_z = 0` inside the
     /// domain is not a panel edge, which costs up to ~10⁻⁴.
     const CUT: f64 = 2e-4;
     for (sx, sy) in [(0.01, 0.006), (0.04, 0.03), (0.1, 0.02)] {

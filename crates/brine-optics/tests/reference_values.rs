@@ -34,7 +34,8 @@ fn pope_fry_1997_table_is_returned_exactly() {
         assert_relative_eq!(pure_water_absorption(l), a, max_relative = SHEET_ROUNDING);
     }
     // Pope & Fry's abstract: the minimum is 0.0044 ± 0.0006 m⁻¹ at 418 nm.
-    let (l_min, a_min) = r.iter().map(|x| (x[0], x[1])).fold((0.0, f64::INFINITY), |m, x| if x.1 < m.1 { x } else { m });
+    let (l_min, a_min) =
+        r.iter().map(|x| (x[0], x[1])).fold((0.0, f64::INFINITY), |m, x| if x.1 < m.1 { x } else { m });
     assert!((l_min - 418.0).abs() <= 2.5 && (a_min - 0.0044).abs() <= 0.0006, "{l_min} {a_min}");
 }
 
@@ -108,7 +109,7 @@ fn jerlov_types_are_ordered_by_turbidity_in_the_blue() {
 fn case1_fit_reproduces_jerlov_oceanic_kd() {
     // A Case-1 water at the fitted chlorophyll reproduces Jerlov's oceanic K_d(λ) to about 10 %
     // rms in log (Jerlov's classes are themselves about ±10 % wide at a given λ).
-    /// rms of ln(K_Morel/K_Jerlov) allowed for the oceanic types.
+    /// rms of `ln(K_Morel/K_Jerlov)` allowed for the oceanic types.
     const OCEANIC_RMS: f64 = 0.10;
     for t in [JerlovType::I, JerlovType::IA, JerlovType::IB, JerlovType::II, JerlovType::III] {
         assert!(t.equivalent_fit_rms() < OCEANIC_RMS, "type {t}: {}", t.equivalent_fit_rms());

@@ -4,8 +4,8 @@
 use std::path::Path;
 
 use brine_optics::{
-    JerlovType, LiYingParameters, SlopeVariance, WATER_IOR, WaterBody, case1_iops, fresnel_dielectric,
-    fresnel_schlick, ocean_brdf, pure_water_absorption,
+    JerlovType, LiYingParameters, SlopeVariance, WATER_IOR, WaterBody, case1_iops, fresnel_dielectric, fresnel_schlick,
+    ocean_brdf, pure_water_absorption,
 };
 use glam::DVec3;
 
@@ -55,7 +55,10 @@ pub fn plot(dir: &Path) -> Result<(), String> {
     }
     .write(&dir.join("optics-schlick-error.svg"))?;
 
-    let mut series = vec![("pure water a_w (Pope & Fry 1997)".to_owned(), wavelengths().map(|l| (l, pure_water_absorption(l))).collect())];
+    let mut series = vec![(
+        "pure water a_w (Pope & Fry 1997)".to_owned(),
+        wavelengths().map(|l| (l, pure_water_absorption(l))).collect(),
+    )];
     for c in [0.03, 0.1, 0.3, 1.0, 3.0, 10.0] {
         let body = WaterBody::case1(c).map_err(|e| e.to_string())?;
         series.push((format!("C = {c} mg/m³"), wavelengths().map(|l| (l, body.iops(l).a)).collect()));

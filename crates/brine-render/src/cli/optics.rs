@@ -163,7 +163,9 @@ fn parse_wavelengths(spec: &str) -> Result<Vec<f64>, CliError> {
         }
         let count = ((stop - start) / step + 1e-9).floor() as usize + 1;
         if count > 10_000 {
-            return Err(CliError::Input(format!("--wavelength-nm = {spec:?} asks for {count} wavelengths (at most 10000)")));
+            return Err(CliError::Input(format!(
+                "--wavelength-nm = {spec:?} asks for {count} wavelengths (at most 10000)"
+            )));
         }
         (0..count).map(|i| start + step * i as f64).collect()
     } else {
