@@ -119,7 +119,7 @@ pub fn plot(dir: &Path) -> Result<(), String> {
     }
     .write(&dir.join("optics-kd-chlorophyll.svg"))?;
 
-    let radii: Vec<f64> = (0..=200).map(|i| 0.01 * 10f64.powf(f64::from(i) / 50.0)).collect();
+    let radii: Vec<f64> = (0..=150).map(|i| 0.01 * 10f64.powf(f64::from(i) / 50.0)).collect();
     let mut series = Vec::new();
     for set in 1..=3u8 {
         let p = LiYingParameters::table3(set).map_err(|e| e.to_string())?;
@@ -127,7 +127,10 @@ pub fn plot(dir: &Path) -> Result<(), String> {
         let (g, eta) = p.g_eta.unwrap_or((0.5, 0.74));
         let m = p.materials(g, eta).map_err(|e| e.to_string())?;
         for (ch, mat) in ["R", "G", "B"].iter().zip(m) {
-            series.push((format!("set {set} {ch}"), radii.iter().map(|&r| (r, mat.diffuse_reflectance(r))).collect()));
+            series.push((
+                format!("set {set} {ch}"),
+                radii.iter().map(|&r| (r, mat.diffuse_reflectance(r))).filter(|p| p.1 > 1e-7).collect(),
+            ));
         }
     }
     LineChart {
