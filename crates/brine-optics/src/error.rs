@@ -13,6 +13,16 @@ pub enum OpticsError {
         /// Accepted range, in words.
         range: &'static str,
     },
+    /// A name that is not one of the accepted ones.
+    #[error("{name} = {value:?} is not known: expected {expected}")]
+    UnknownName {
+        /// Parameter name.
+        name: &'static str,
+        /// Offending value.
+        value: String,
+        /// The accepted names, in words.
+        expected: &'static str,
+    },
 }
 
 pub(crate) fn check(name: &'static str, value: f64, ok: bool, range: &'static str) -> Result<f64, OpticsError> {

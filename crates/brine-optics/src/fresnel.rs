@@ -66,7 +66,7 @@ pub fn fresnel_normal(n_i: f64, n_t: f64) -> f64 {
 ///
 /// # Returns
 /// The approximate reflectance in `[0, 1]`. Its error against [`fresnel_dielectric`] for
-/// air → water is at most 0.05 (at grazing angles; see the tests and `docs/models/brine-optics.md`).
+/// air → water is at most 0.0592 (at 83.8°; see the tests and `docs/models/brine-optics.md`).
 ///
 /// # References
 /// Schlick C. 1994, "An inexpensive BRDF model for physically-based rendering", CGF 13(3), Eq. 24.
@@ -82,6 +82,69 @@ pub fn fresnel_schlick(cos_theta_i: f64, n_i: f64, n_t: f64) -> f64 {
         c = (1.0 - sin2_t).sqrt();
     }
     f0 + (1.0 - f0) * (1.0 - c).powi(5)
+}
+
+/// Fresnel transmittance `T = 1 − F` of a dielectric interface (fraction of the power).
+///
+/// # Arguments
+/// As [`fresnel_dielectric`].
+///
+/// # Returns
+/// `T` in `[0, 1]`; `0` under total internal reflection. Reciprocal: `T(θᵢ; n_i → n_t) =
+/// T(θ_t; n_t → n_i)` for the Snell pair `(θᵢ, θ_t)`.
+///
+/// # References
+/// Energy conservation at a non-absorbing interface; equation sheet §9.
+#[inline]
+pub fn fresnel_transmittance(cos_theta_i: f64, n_i: f64, n_t: f64) -> f64 {
+    1.0 - fresnel_dielectric(cos_theta_i, n_i, n_t)
+}
+
+/// Critical angle of total internal reflection from the denser side, `θ_c = asin(n_t/n_i)`.
+///
+/// # Arguments
+/// - `n_i`, `n_t`: indices, `n_i > n_t > 0`.
+///
+/// # Returns
+/// `θ_c` (rad); `None` if `n_i ≤ n_t` (no total internal reflection). 48.607° from water (1.333).
+///
+/// # References
+/// Snell's law at `θ_t = 90°`; equation sheet §9.
+pub fn critical_angle(n_i: f64, n_t: f64) -> Option<f64> {
+    (n_i > n_t).then(|| (n_t / n_i).asin())
+}
+
+/// Hemispherical (diffuse) Fresnel reflectance for uniform radiance incident from the side of
+/// index `n_i`: `F_dr = 2 ∫₀¹ F(μ) μ dμ`, computed exactly (the part beyond the critical angle,
+/// where `F = 1`, in closed form; the rest by 64-point Gauss–Legendre quadrature in
+/// `t`, `μ = μ_c + (1 − μ_c) t²`).
+///
+/// # Arguments
+/// - `n_i`: index on the incident side, `> 0`.
+/// - `n_t`: index across the interface, `> 0`.
+///
+/// # Returns
+/// `F_dr` in `[0, 1]`: 0.0664 for a uniform sky on water (1 → 1.333), 0.4746 for light inside
+/// water (1.333 → 1); Jensen's `F_dr(η)` is this with `n_i = η`, `n_t = 1`.
+///
+/// # References
+/// Jensen et al. 2001 §2.3 (definition of `F_dr`); Egan & Hilgeman 1973 (its fit).
+pub fn hemispherical_fresnel_reflectance(n_i: f64, n_t: f64) -> f64 {
+    // μ_c = cosine of the critical angle (0 when there is none).
+    let mu_c = if n_i > n_t { (1.0 - (n_t / n_i).powi(2)).sqrt() } else { 0.0 };
+    let (x, w) = crate::quadrature::gauss_legendre(64);
+    // μ = μ_c + (1 − μ_c) t² removes the square-root kink of F at μ_c; t ∈ [0, 1].
+    let span = 1.0 - mu_c;
+    let smooth: f64 = x
+        .iter()
+        .zip(&w)
+        .map(|(x, w)| {
+            let t = 0.5 * (x + 1.0);
+            let mu = mu_c + span * t * t;
+            0.5 * w * fresnel_dielectric(mu, n_i, n_t) * mu * 2.0 * span * t
+        })
+        .sum();
+    mu_c * mu_c + 2.0 * smooth
 }
 
 #[cfg(test)]

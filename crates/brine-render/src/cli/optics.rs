@@ -1,21 +1,240 @@
-//! `brine optics`: not implemented yet (issue #5).
-//!
-//! Replace the placeholder argument types and `run_*` functions with the real command.
+//! `brine optics fresnel …` and `brine optics water …`: queries of the brine-optics models.
+
+use brine_optics::{
+    JerlovType, LAMBDA_MAX_NM, LAMBDA_MIN_NM, WaterBody, check_wavelength, critical_angle, fresnel_dielectric,
+    fresnel_schlick,
+};
+use clap::Subcommand;
+use serde::Serialize;
 
 use super::CliError;
 
-/// Arguments of `brine optics` (placeholder: accepts anything).
+/// Arguments of `brine optics`.
 #[derive(Debug, clap::Args)]
 pub struct OpticsArgs {
-    /// Ignored until the subcommand is implemented.
-    #[arg(trailing_var_arg = true, allow_hyphen_values = true, hide = true)]
-    pub rest: Vec<String>,
+    /// The query.
+    #[command(subcommand)]
+    pub command: OpticsCommand,
+}
+
+/// The `brine optics` queries.
+#[derive(Debug, Subcommand)]
+pub enum OpticsCommand {
+    /// Exact unpolarised Fresnel reflectance of a dielectric interface (and Schlick's value).
+    Fresnel(FresnelArgs),
+    /// Inherent optical properties of sea water (m⁻¹) by wavelength, for a Jerlov type or a
+    /// chlorophyll concentration.
+    Water(WaterArgs),
+}
+
+/// Arguments of `brine optics fresnel`.
+#[derive(Debug, clap::Args)]
+pub struct FresnelArgs {
+    /// Index of the medium the light comes from (1.0 for air).
+    #[arg(long)]
+    pub n1: f64,
+    /// Index of the medium across the interface (1.333 for water).
+    #[arg(long)]
+    pub n2: f64,
+    /// Cosine of the angle of incidence, [0, 1].
+    #[arg(long, allow_hyphen_values = true)]
+    pub cos_theta: f64,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Arguments of `brine optics water`.
+#[derive(Debug, clap::Args)]
+#[command(group(clap::ArgGroup::new("water").required(true).args(["water_type", "chlorophyll_mg_m3"])))]
+pub struct WaterArgs {
+    /// Jerlov water type: I, IA, IB, II, III, 1C, 3C, 5C, 7C or 9C.
+    #[arg(long = "type")]
+    pub water_type: Option<String>,
+    /// Chlorophyll-a concentration of Case-1 water (mg m⁻³), [0, 100].
+    #[arg(long, allow_hyphen_values = true)]
+    pub chlorophyll_mg_m3: Option<f64>,
+    /// Wavelengths (nm) in [400, 700]: one value, a list `450,550,650` or a range `start:stop:step`.
+    #[arg(long, default_value = "400:700:10", allow_hyphen_values = true)]
+    pub wavelength_nm: String,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, Serialize)]
+struct FresnelOut {
+    n1: f64,
+    n2: f64,
+    cos_theta: f64,
+    reflectance: f64,
+    transmittance: f64,
+    schlick: f64,
+    total_internal_reflection: bool,
+}
+
+#[derive(Debug, Serialize)]
+struct WaterOut {
+    water: String,
+    chlorophyll_mg_m3: f64,
+    iop_source: String,
+    kd_source: String,
+    wavelength_nm: Vec<f64>,
+    absorption: Vec<f64>,
+    scattering: Vec<f64>,
+    backscattering: Vec<f64>,
+    attenuation: Vec<f64>,
+    kd: Vec<f64>,
+}
+
+fn input<E: std::fmt::Display>(e: E) -> CliError {
+    CliError::Input(e.to_string())
+}
+
+fn print_json<T: Serialize>(value: &T) -> Result<(), CliError> {
+    let text = serde_json::to_string_pretty(value).map_err(|e| CliError::Failure(e.to_string()))?;
+    println!("{text}");
+    Ok(())
 }
 
 /// Runs `brine optics`.
 ///
 /// # Errors
-/// [`CliError::NotYet`] until issue #5 lands.
-pub fn run_optics(_args: &OpticsArgs) -> Result<(), CliError> {
-    Err(CliError::NotYet { command: "optics", issue: 5 })
+/// [`CliError::Input`] for parameters out of range or malformed.
+pub fn run_optics(args: &OpticsArgs) -> Result<(), CliError> {
+    match &args.command {
+        OpticsCommand::Fresnel(a) => run_fresnel(a),
+        OpticsCommand::Water(a) => run_water(a),
+    }
+}
+
+fn run_fresnel(a: &FresnelArgs) -> Result<(), CliError> {
+    for (name, n) in [("--n1", a.n1), ("--n2", a.n2)] {
+        if !(n.is_finite() && (0.1..=10.0).contains(&n)) {
+            return Err(CliError::Input(format!("{name} = {n} is out of range: expected [0.1, 10]")));
+        }
+    }
+    if !(0.0..=1.0).contains(&a.cos_theta) {
+        return Err(CliError::Input(format!("--cos-theta = {} is out of range: expected [0, 1]", a.cos_theta)));
+    }
+    let reflectance = fresnel_dielectric(a.cos_theta, a.n1, a.n2);
+    let tir = critical_angle(a.n1, a.n2).is_some_and(|theta_c| a.cos_theta.acos() > theta_c);
+    let out = FresnelOut {
+        n1: a.n1,
+        n2: a.n2,
+        cos_theta: a.cos_theta,
+        reflectance,
+        transmittance: 1.0 - reflectance,
+        schlick: fresnel_schlick(a.cos_theta, a.n1, a.n2),
+        total_internal_reflection: tir,
+    };
+    if a.json {
+        print_json(&out)
+    } else {
+        println!(
+            "reflectance {:.6}  transmittance {:.6}  Schlick {:.6}{}",
+            out.reflectance,
+            out.transmittance,
+            out.schlick,
+            if tir { "  (total internal reflection)" } else { "" }
+        );
+        Ok(())
+    }
+}
+
+/// Parses `550`, `450,550,650` or `400:700:10` into wavelengths, each checked against the model.
+fn parse_wavelengths(spec: &str) -> Result<Vec<f64>, CliError> {
+    let bad = || {
+        CliError::Input(format!(
+            "--wavelength-nm = {spec:?} is malformed: expected a value, a list like 450,550,650 or a range start:stop:step"
+        ))
+    };
+    let num = |s: &str| s.trim().parse::<f64>().map_err(|_| bad());
+    let values = if spec.contains(':') {
+        let parts: Vec<&str> = spec.split(':').collect();
+        if parts.len() != 3 {
+            return Err(bad());
+        }
+        let (start, stop, step) = (num(parts[0])?, num(parts[1])?, num(parts[2])?);
+        if !(step > 0.0 && step.is_finite()) || stop < start {
+            return Err(CliError::Input(format!(
+                "--wavelength-nm = {spec:?}: the range needs start <= stop and a step > 0"
+            )));
+        }
+        let count = ((stop - start) / step + 1e-9).floor() as usize + 1;
+        if count > 10_000 {
+            return Err(CliError::Input(format!(
+                "--wavelength-nm = {spec:?} asks for {count} wavelengths (at most 10000)"
+            )));
+        }
+        (0..count).map(|i| start + step * i as f64).collect()
+    } else {
+        spec.split(',').map(num).collect::<Result<Vec<_>, _>>()?
+    };
+    for &l in &values {
+        check_wavelength(l).map_err(|_| {
+            CliError::Input(format!(
+                "--wavelength-nm: {l} is out of range: expected [{LAMBDA_MIN_NM}, {LAMBDA_MAX_NM}] nm"
+            ))
+        })?;
+    }
+    Ok(values)
+}
+
+fn run_water(a: &WaterArgs) -> Result<(), CliError> {
+    let (body, name) = match (&a.water_type, a.chlorophyll_mg_m3) {
+        (Some(t), None) => {
+            let t: JerlovType = t.parse().map_err(input)?;
+            (WaterBody::jerlov(t), format!("Jerlov {t}"))
+        }
+        (None, Some(c)) => (WaterBody::case1(c).map_err(input)?, format!("Case-1, C = {c} mg/m3")),
+        _ => return Err(CliError::Input("give exactly one of --type and --chlorophyll-mg-m3".to_owned())),
+    };
+    let wavelength_nm = parse_wavelengths(&a.wavelength_nm)?;
+    let iops: Vec<_> = wavelength_nm.iter().map(|&l| body.iops(l)).collect();
+    let out = WaterOut {
+        water: name,
+        chlorophyll_mg_m3: body.chlorophyll_mg_m3(),
+        iop_source: body.iop_source(),
+        kd_source: body.kd_source(),
+        absorption: iops.iter().map(|i| i.a).collect(),
+        scattering: iops.iter().map(|i| i.b).collect(),
+        backscattering: iops.iter().map(|i| i.b_b).collect(),
+        attenuation: iops.iter().map(|i| i.c).collect(),
+        kd: iops.iter().map(|i| i.k_d).collect(),
+        wavelength_nm,
+    };
+    if a.json {
+        print_json(&out)
+    } else {
+        println!("{} ({}; K_d: {})", out.water, out.iop_source, out.kd_source);
+        println!("{:>8} {:>10} {:>10} {:>10} {:>10} {:>10}", "nm", "a", "b", "b_b", "c", "K_d");
+        for (l, i) in out.wavelength_nm.iter().zip(&iops) {
+            println!("{l:>8.1} {:>10.5} {:>10.5} {:>10.6} {:>10.5} {:>10.5}", i.a, i.b, i.b_b, i.c, i.k_d);
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wavelength_specs() {
+        assert_eq!(parse_wavelengths("400:700:10").unwrap().len(), 31);
+        assert_eq!(parse_wavelengths("450, 550,650").unwrap(), vec![450.0, 550.0, 650.0]);
+        assert_eq!(parse_wavelengths("550").unwrap(), vec![550.0]);
+        for bad in ["300:400:10", "400:700", "400:700:0", "x", "700:400:10", "400:700:1e-9"] {
+            assert!(matches!(parse_wavelengths(bad), Err(CliError::Input(_))), "{bad}");
+        }
+    }
+
+    #[test]
+    fn bad_fresnel_input_is_an_input_error() {
+        let args = FresnelArgs { n1: 1.0, n2: 1.333, cos_theta: 1.5, json: true };
+        assert!(matches!(run_fresnel(&args), Err(CliError::Input(_))));
+        let args = FresnelArgs { n1: f64::NAN, n2: 1.333, cos_theta: 0.5, json: true };
+        assert!(matches!(run_fresnel(&args), Err(CliError::Input(_))));
+    }
 }
