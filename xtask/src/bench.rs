@@ -5,11 +5,18 @@
 //! Add an entry here when a crate adds a benchmark.
 
 /// `(name, what it measures, cargo arguments)`.
-const BENCHES: &[(&str, &str, &[&str])] = &[(
-    "frame",
-    "one 640×480 frame, 100 waves, every phenomenon, 1 spp: median of 5 (brine-render)",
-    &["bench", "-p", "brine-render", "--bench", "frame"],
-)];
+const BENCHES: &[(&str, &str, &[&str])] = &[
+    (
+        "frame",
+        "one 640×480 frame, 100 waves, every phenomenon, 1 spp: median of 5 (brine-render)",
+        &["bench", "-p", "brine-render", "--bench", "frame"],
+    ),
+    (
+        "optics",
+        "brine-optics per-pixel and per-scene costs (criterion)",
+        &["bench", "-p", "brine-optics", "--bench", "optics"],
+    ),
+];
 
 /// Runs the named benchmarks (all when `names` is empty) or lists them.
 pub fn run(names: &[String], list: bool) -> Result<(), String> {

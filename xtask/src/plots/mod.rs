@@ -90,6 +90,20 @@ fn range_of(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
     }
 }
 
+/// Tick label with at most four significant digits: plain for moderate magnitudes, scientific
+/// otherwise (log axes otherwise print values like `9.999999999e-5`).
+pub fn tick(v: &f64) -> String {
+    let a = v.abs();
+    if *v == 0.0 {
+        "0".into()
+    } else if (1e-3..1e5).contains(&a) {
+        format!("{v:.4}").trim_end_matches('0').trim_end_matches('.').to_owned()
+    } else {
+        let s = format!("{v:.2e}");
+        s.replace(".00e", "e")
+    }
+}
+
 impl LineChart<'_> {
     /// Writes the chart to `path` (SVG, 720 × 450).
     pub fn write(&self, path: &Path) -> Result<(), String> {
@@ -103,7 +117,14 @@ impl LineChart<'_> {
         macro_rules! draw {
             ($chart:expr) => {{
                 let mut chart = $chart.map_err(|e| err(&e))?;
-                chart.configure_mesh().x_desc(self.x_label).y_desc(self.y_label).draw().map_err(|e| err(&e))?;
+                chart
+                    .configure_mesh()
+                    .x_desc(self.x_label)
+                    .y_desc(self.y_label)
+                    .x_label_formatter(&tick)
+                    .y_label_formatter(&tick)
+                    .draw()
+                    .map_err(|e| err(&e))?;
                 for (i, (label, pts)) in self.series.iter().enumerate() {
                     let colour = Palette99::pick(i).to_rgba();
                     chart
