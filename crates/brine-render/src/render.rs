@@ -1,7 +1,7 @@
 //! Per-pixel composition and the parallel frame loop.
 
-use brine_optics::{SlopeVariance, WATER_IOR, fresnel_dielectric, reflect, reflected_sun_radiance};
-use brine_trace::{Ray, TraceStats, trace};
+use brine_optics::{SlopeVariance, WATER_IOR, fresnel_dielectric, reflect, reflected_sun_radiance, refract};
+use brine_trace::{Aabb, LipschitzSum, Ray, TraceOptions, TraceStats, trace};
 use brine_waves::TrochoidField;
 use glam::DVec3;
 use rand::{Rng, SeedableRng};
@@ -156,16 +156,22 @@ struct Sample {
 fn radiance(world: &World, field: &TrochoidField<'_>, d: DVec3, stats: &mut TraceStats) -> Sample {
     let origin = world.camera.position;
     let ray = Ray::new(origin, d).expect("camera rays are finite and normalised");
-    if let Some(hit) = trace(field, &ray, &world.trace, stats) {
+    let hit = trace(field, &ray, &world.trace, stats);
+    if world.underwater {
+        return underwater_radiance(world, field, d, hit.map(|h| (h.t, h.point)), stats);
+    }
+    if let Some(hit) = hit {
         let n = field.normal(hit.point.x, hit.point.z);
         let aov = Aov { depth: hit.t as f32, normal: n.as_vec3().to_array(), ..Aov::default() };
-        return Sample { radiance: shade_surface(world, d, n, &world.variance_unresolved), aov };
+        let l = shade_surface(world, hit.point, d, n, &world.variance_unresolved, stats);
+        return Sample { radiance: l, aov };
     }
     if d.y < 0.0 {
         // Beyond the trace distance: the mean plane, with every wave's slopes in the BRDF.
-        let t = (world.camera.position.y / -d.y) as f32;
-        let aov = Aov { depth: t, normal: [0.0, 1.0, 0.0], ..Aov::default() };
-        return Sample { radiance: shade_surface(world, d, DVec3::Y, &world.variance_total), aov };
+        let t = world.camera.position.y / -d.y;
+        let aov = Aov { depth: t as f32, normal: [0.0, 1.0, 0.0], ..Aov::default() };
+        let l = shade_surface(world, origin + t * d, d, DVec3::Y, &world.variance_total, stats);
+        return Sample { radiance: l, aov };
     }
     Sample { radiance: sky_radiance(world, d), aov: Aov { depth: f32::INFINITY, ..Aov::default() } }
 }
@@ -179,10 +185,75 @@ fn sky_radiance(world: &World, d: DVec3) -> DVec3 {
     l
 }
 
-/// Radiance leaving the sea surface toward the camera: Fresnel-weighted sky reflection, the sun
-/// through the ocean BRDF of the unresolved slopes, and the water body through `1 − F`
-/// (Chen et al. 2007 §3.4; Bruneton et al. 2010 §5).
-fn shade_surface(world: &World, d: DVec3, normal: DVec3, variance: &SlopeVariance) -> DVec3 {
+/// `F(p + (0, depth, 0))`: a component sum moved down by `depth` (the sea floor at `y = −depth + h`).
+struct Lowered<'a, S> {
+    inner: &'a S,
+    depth: f64,
+}
+
+impl<S: LipschitzSum> LipschitzSum for Lowered<'_, S> {
+    fn component_count(&self) -> usize {
+        self.inner.component_count()
+    }
+    fn component(&self, i: usize, p: DVec3) -> f64 {
+        self.inner.component(i, p + DVec3::Y * self.depth)
+    }
+    fn component_lipschitz(&self, i: usize) -> f64 {
+        self.inner.component_lipschitz(i)
+    }
+    fn component_min(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
+        self.inner.component_min(i, a + DVec3::Y * self.depth, b + DVec3::Y * self.depth)
+    }
+    fn component_directional_lipschitz(&self, i: usize, d: DVec3) -> f64 {
+        self.inner.component_directional_lipschitz(i, d)
+    }
+    fn value(&self, p: DVec3) -> f64 {
+        self.inner.value(p + DVec3::Y * self.depth)
+    }
+    fn zero_set_bounds(&self) -> Aabb {
+        let b = self.inner.zero_set_bounds();
+        Aabb { min: b.min - DVec3::Y * self.depth, max: b.max - DVec3::Y * self.depth }
+    }
+}
+
+/// Where a ray through the water from `p` along the unit `d` meets the floor: `(distance, point)`.
+fn floor_hit(world: &World, p: DVec3, d: DVec3, stats: &mut TraceStats) -> Option<(f64, DVec3)> {
+    let floor = world.floor.as_ref()?;
+    let field = floor.shape.at_time(0.0);
+    let lowered = Lowered { inner: &field, depth: floor.depth };
+    let ray = Ray::new(p, d).ok()?;
+    let options = TraceOptions { t_max: 50.0 * floor.depth + 100.0, ..world.trace };
+    trace(&lowered, &ray, &options, stats).map(|h| (h.t, h.point))
+}
+
+/// Radiance leaving the floor at `point` (Lambertian, lit by `E_d` attenuated down to its depth).
+fn floor_radiance(world: &World, point: DVec3) -> DVec3 {
+    let floor = world.floor.as_ref().expect("floor_radiance needs a floor");
+    world.water.lambertian_floor_radiance(floor.albedo, world.e_below, (-point.y).max(0.0))
+}
+
+/// Upwelling radiance just below the surface along the downward refracted ray `t` from the
+/// surface point `p`: Darles et al. 2007 Eq. 8–11 (corrected, equation sheet §7) with the floor
+/// traced by the same sphere tracer.
+fn water_column_radiance(world: &World, p: DVec3, t: DVec3, stats: &mut TraceStats) -> DVec3 {
+    let cos_theta = (-t.y).clamp(0.0, 1.0);
+    match floor_hit(world, p, t, stats) {
+        Some((s, q)) => world.water.refracted_ray_radiance(world.e_below, cos_theta, s, floor_radiance(world, q)),
+        None => world.water.refracted_ray_radiance(world.e_below, cos_theta, f64::INFINITY, DVec3::ZERO),
+    }
+}
+
+/// Radiance leaving the sea surface toward the camera at `p`: Fresnel-weighted sky reflection, the
+/// sun through the ocean BRDF of the unresolved slopes, and the water column through `1 − F` and
+/// the `n²` radiance law (Chen et al. 2007 §3.4; Bruneton et al. 2010 §5; Darles et al. 2007 §4.3).
+fn shade_surface(
+    world: &World,
+    p: DVec3,
+    d: DVec3,
+    normal: DVec3,
+    variance: &SlopeVariance,
+    stats: &mut TraceStats,
+) -> DVec3 {
     let v = -d;
     // Grazing views can see a facet from behind; tilt its normal toward the viewer just enough.
     let mut n = normal;
@@ -208,5 +279,50 @@ fn shade_surface(world: &World, d: DVec3, normal: DVec3, variance: &SlopeVarianc
     } else {
         DVec3::ZERO
     };
-    f * sky + sun + (1.0 - f) * world.water_radiance
+    let below = match refract(d, n, 1.0, WATER_IOR) {
+        Some(t) => water_column_radiance(world, p, t, stats),
+        None => DVec3::ZERO,
+    };
+    f * sky + sun + (1.0 - f) * below / (WATER_IOR * WATER_IOR)
+}
+
+/// Diffuse radiance of the water body at depth `z` (m), `L_df(0) e^{−K_d z}`, toward a camera
+/// under water: the in-water "background" (equation sheet §7, isotropic approximation).
+fn water_background(world: &World, z: f64) -> DVec3 {
+    let l0 = world.water.diffuse_upwelling_radiance(world.e_below);
+    l0 * (-world.water.k_d * z.max(0.0)).exp()
+}
+
+/// Radiance reaching a camera under water along `d`: the underside of the surface (Snell's window:
+/// the sky refracted through the surface inside the critical angle, total internal reflection of
+/// the water outside it) or the floor, attenuated by `e^{−c s}` over the path and filled in by the
+/// background radiance at the camera's depth (single-scattering equilibrium approximation).
+fn underwater_radiance(
+    world: &World,
+    field: &TrochoidField<'_>,
+    d: DVec3,
+    surface: Option<(f64, DVec3)>,
+    stats: &mut TraceStats,
+) -> Sample {
+    let origin = world.camera.position;
+    let z_cam = -origin.y;
+    let background = water_background(world, z_cam);
+    let (s, source, aov) = if let Some((t, p)) = surface {
+        let n = field.normal(p.x, p.z);
+        let cos_i = d.dot(n).abs();
+        let fw = fresnel_dielectric(cos_i, WATER_IOR, 1.0);
+        let above = match refract(d, n, WATER_IOR, 1.0) {
+            Some(tr) => sky_radiance(world, if tr.y > 1e-3 { tr } else { DVec3::new(tr.x, 1e-3, tr.z).normalize() }),
+            None => DVec3::ZERO,
+        };
+        // Radiance entering the water is compressed into a smaller solid angle: × n².
+        let l = (1.0 - fw) * above * WATER_IOR * WATER_IOR + fw * water_background(world, 0.0);
+        (t, l, Aov { depth: t as f32, normal: (-n).as_vec3().to_array(), ..Aov::default() })
+    } else if let Some((t, q)) = floor_hit(world, origin, d, stats) {
+        (t, floor_radiance(world, q), Aov { depth: t as f32, normal: [0.0, 1.0, 0.0], ..Aov::default() })
+    } else {
+        return Sample { radiance: background, aov: Aov { depth: f32::INFINITY, ..Aov::default() } };
+    };
+    let transmittance = (-world.water.c * s).exp();
+    Sample { radiance: source * transmittance + background * (DVec3::ONE - transmittance), aov }
 }

@@ -34,10 +34,64 @@ pub struct Scene {
     pub sky: SkyConfig,
     /// The output image.
     pub output: OutputConfig,
+    /// The water body and the sea floor.
+    pub water: WaterConfig,
     /// Phenomena switched on or off.
     pub phenomena: PhenomenaConfig,
     /// Animation timing.
     pub animation: AnimationConfig,
+}
+
+/// `[water]`: the optical water type and the sea floor.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct WaterConfig {
+    /// Jerlov water type (`I`, `IA`, `IB`, `II`, `III`, `1C`, `3C`, `5C`, `7C`, `9C`) or Darles et
+    /// al.'s `clear`, `turbid`, `very-turbid`; excludes `chlorophyll_mg_m3`.
+    #[serde(rename = "type")]
+    pub water_type: Option<String>,
+    /// Chlorophyll concentration of Case-1 water (mg m⁻³, `[0, 30]`); excludes `type`.
+    pub chlorophyll_mg_m3: Option<f64>,
+    /// The sea floor; deep water when absent.
+    pub floor: Option<FloorConfig>,
+}
+
+impl Default for WaterConfig {
+    fn default() -> Self {
+        Self { water_type: Some("IB".into()), chlorophyll_mg_m3: None, floor: None }
+    }
+}
+
+/// `[water.floor]`: a Lambertian sea floor shaped by its own static trochoid set (Darles et al.
+/// 2007 §4.3), traced by the same sphere tracer as the surface.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct FloorConfig {
+    /// Mean depth of the floor below sea level (m, `[0.5, 1000]`).
+    pub depth_m: f64,
+    /// Diffuse reflectance (linear sRGB, each `[0, 1]`); sand is about `[0.45, 0.40, 0.30]`.
+    pub albedo: [f64; 3],
+    /// Number of trochoids shaping the floor (`[0, 64]`).
+    pub waves: u32,
+    /// Sum of the floor trochoids' amplitudes (m, `[0, depth_m/2]`).
+    pub amplitude_m: f64,
+    /// Shortest and longest floor wavelengths (m, `0.05 ≤ min ≤ max ≤ 10⁴`).
+    pub wavelength_range_m: [f64; 2],
+    /// Seed of the floor's directions and phases.
+    pub seed: u64,
+}
+
+impl Default for FloorConfig {
+    fn default() -> Self {
+        Self {
+            depth_m: 6.0,
+            albedo: [0.45, 0.40, 0.30],
+            waves: 8,
+            amplitude_m: 0.4,
+            wavelength_range_m: [0.8, 25.0],
+            seed: 7,
+        }
+    }
 }
 
 /// `[phenomena]`: what the image shows beyond sea, sky and sun.
@@ -321,6 +375,42 @@ impl Scene {
         range("sky", "sun_azimuth_deg", k.sun_azimuth_deg, true, "a finite angle in degrees")?;
         let o = &self.output;
         range("output", "exposure_ev", o.exposure_ev, (-10.0..=30.0).contains(&o.exposure_ev), "[-10, 30] EV")?;
+        let w = &self.water;
+        if w.water_type.is_some() && w.chlorophyll_mg_m3.is_some() {
+            return Err((
+                "water",
+                "chlorophyll_mg_m3",
+                "water.type and water.chlorophyll_mg_m3 exclude each other: give one".into(),
+            ));
+        }
+        if let Some(t) = &w.water_type {
+            crate::world::water_body_of(Some(t), None).map_err(|m| ("water", "type", m))?;
+        }
+        if let Some(c) = w.chlorophyll_mg_m3 {
+            range("water", "chlorophyll_mg_m3", c, (0.0..=30.0).contains(&c), "[0, 30] mg/m³")?;
+        }
+        if let Some(f) = &w.floor {
+            range("water.floor", "depth_m", f.depth_m, (0.5..=1000.0).contains(&f.depth_m), "[0.5, 1000] m")?;
+            for v in f.albedo {
+                range("water.floor", "albedo", v, (0.0..=1.0).contains(&v), "each in [0, 1]")?;
+            }
+            range("water.floor", "waves", f64::from(f.waves), f.waves <= 64, "[0, 64]")?;
+            range(
+                "water.floor",
+                "amplitude_m",
+                f.amplitude_m,
+                (0.0..=0.5 * f.depth_m).contains(&f.amplitude_m),
+                "[0, depth_m/2] m",
+            )?;
+            let [lo, hi] = f.wavelength_range_m;
+            range(
+                "water.floor",
+                "wavelength_range_m",
+                lo,
+                lo >= 0.05 && lo <= hi && hi <= 1e4,
+                "0.05 ≤ min ≤ max ≤ 10⁴ m",
+            )?;
+        }
         let a = &self.animation;
         range("animation", "fps", a.fps, a.fps > 0.0 && a.fps <= 1000.0, "(0, 1000] frames per second")?;
         crate::output::OutputFormat::from_path(&o.path).map_err(|m| ("output", "path", m))?;

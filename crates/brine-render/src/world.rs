@@ -1,13 +1,20 @@
 //! A scene turned into models: the fitted sea, the sky and sun, the slope statistics.
 
-use brine_optics::{SlopeVariance, WATER_IOR, fresnel_dielectric};
+use brine_optics::{
+    DarlesWater, JerlovType, RgbBands, SlopeVariance, WATER_IOR, WaterBody, WaterRgb, fresnel_dielectric,
+    hemispherical_fresnel_reflectance,
+};
 use brine_sky::{PreethamSky, Sun};
 use brine_trace::{LipschitzSum, Method, TraceOptions};
-use brine_waves::{CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, TrochoidSet, TrochoidSum, fit_trochoids};
+use brine_waves::{
+    CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, Trochoid, TrochoidSet, TrochoidSum, fit_trochoids,
+};
 use glam::DVec3;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
 
 use crate::camera::{Camera, direction_from_bearing};
-use crate::scene::{Scene, SpectrumKind};
+use crate::scene::{FloorConfig, Scene, SpectrumKind};
 
 /// Why a scene could not be turned into models.
 #[derive(Debug, thiserror::Error)]
@@ -15,17 +22,6 @@ pub enum WorldError {
     /// A model rejected a parameter.
     #[error("{0}")]
     Model(String),
-    /// The camera is below the sea surface (underwater views arrive with issue #7).
-    #[error(
-        "the camera at y = {camera_y:.3} m is below the sea surface there (surface at {surface_y:.3} m); \
-         raise camera.position[1] (underwater cameras arrive with issue #7)"
-    )]
-    CameraUnderwater {
-        /// Camera height (m).
-        camera_y: f64,
-        /// Surface height under the camera (m).
-        surface_y: f64,
-    },
 }
 
 /// Everything the per-pixel shading needs, built once per frame.
@@ -46,9 +42,14 @@ pub struct World {
     pub variance_unresolved: SlopeVariance,
     /// Slope variances of the whole sea (Cox–Munk), used beyond the trace distance.
     pub variance_total: SlopeVariance,
-    /// Radiance leaving the water body just above the surface, before the `(1 − F)` weight
-    /// (linear sRGB, kcd m⁻²).
-    pub water_radiance: DVec3,
+    /// Optical properties of the water per channel.
+    pub water: WaterRgb,
+    /// Downwelling irradiance just below a flat surface, `E_d(0⁻)` (klx per channel).
+    pub e_below: DVec3,
+    /// The sea floor, if the water is not deep.
+    pub floor: Option<Floor>,
+    /// `true` when the camera is below the sea surface.
+    pub underwater: bool,
     /// Options of the tracer.
     pub trace: TraceOptions,
     /// The camera.
@@ -66,6 +67,64 @@ pub fn auto_exposure_ev(illuminance_lx: f64) -> f64 {
     (illuminance_lx.max(1e-6) / 2.5).log2()
 }
 
+/// A Lambertian sea floor `y = −depth + h(x, z)` shaped by a static trochoid set.
+pub struct Floor {
+    /// The floor's undulations (static: `ω = 0`).
+    pub shape: TrochoidSum,
+    /// Mean depth below sea level (m).
+    pub depth: f64,
+    /// Diffuse reflectance per channel.
+    pub albedo: DVec3,
+}
+
+impl Floor {
+    /// The floor of a (validated) `[water.floor]` section: `waves` trochoids with wavelengths
+    /// log-spaced over the range, amplitudes proportional to wavelength (equal slopes) summing to
+    /// `amplitude_m`, steepness `kA`, directions and phases from the seed.
+    fn new(c: &FloorConfig) -> Result<Self, WorldError> {
+        let mut rng = ChaCha8Rng::seed_from_u64(c.seed);
+        let n = c.waves as usize;
+        let [lo, hi] = c.wavelength_range_m;
+        let lambdas: Vec<f64> =
+            (0..n).map(|i| lo * (hi / lo).powf(if n > 1 { i as f64 / (n - 1) as f64 } else { 0.0 })).collect();
+        let total: f64 = lambdas.iter().sum();
+        let mut waves = Vec::with_capacity(n);
+        for lambda in lambdas {
+            let amplitude = c.amplitude_m * lambda / total;
+            let k = std::f64::consts::TAU / lambda;
+            let (dir, phase): (f64, f64) =
+                (rng.random::<f64>() * std::f64::consts::TAU, rng.random::<f64>() * std::f64::consts::TAU);
+            let q = (k * amplitude).min(0.5);
+            waves.push(Trochoid::new(amplitude, k, dir, 0.0, phase, q).map_err(|e| WorldError::Model(e.to_string()))?);
+        }
+        Ok(Self {
+            shape: TrochoidSum::new(&TrochoidSet::new(waves)),
+            depth: c.depth_m,
+            albedo: DVec3::from_array(c.albedo),
+        })
+    }
+}
+
+/// The water body of `[water]`: a Jerlov type, one of Darles et al.'s classes, or Case-1 water of
+/// a chlorophyll concentration (Jerlov IB when neither is given).
+///
+/// # Errors
+/// A message naming the unknown type.
+pub fn water_body_of(water_type: Option<&str>, chlorophyll_mg_m3: Option<f64>) -> Result<WaterBody, String> {
+    if let Some(c) = chlorophyll_mg_m3 {
+        return WaterBody::case1(c).map_err(|e| e.to_string());
+    }
+    let name = water_type.unwrap_or("IB");
+    Ok(match name.to_ascii_lowercase().as_str() {
+        "clear" => WaterBody::darles(DarlesWater::Clear),
+        "turbid" => WaterBody::darles(DarlesWater::Turbid),
+        "very-turbid" => WaterBody::darles(DarlesWater::VeryTurbid),
+        _ => WaterBody::jerlov(name.parse::<JerlovType>().map_err(|_| {
+            format!("water.type = {name:?} is unknown: expected I, IA, IB, II, III, 1C, 3C, 5C, 7C, 9C, clear, turbid or very-turbid")
+        })?),
+    })
+}
+
 /// Wind speed 12.5 m above the sea from `U₁₀` by the neutral logarithmic profile with roughness
 /// length `z₀ = 2×10⁻⁴ m`: `U₁₂.₅ = U₁₀ ln(12.5/z₀)/ln(10/z₀)` (factor 1.0206).
 fn u12_5_from_u10(u10: f64) -> f64 {
@@ -73,20 +132,11 @@ fn u12_5_from_u10(u10: f64) -> f64 {
     u10 * (12.5 / z0).ln() / (10.0 / z0).ln()
 }
 
-/// **Provisional** deep-water diffuse reflectance just below the surface, `R(0⁻) = 0.33 b_b/a`
-/// (Morel & Prieur 1977) for pure sea water at 650, 550 and 450 nm (one wavelength per sRGB
-/// channel): `a` from Pope & Fry 1997 (0.340, 0.0565, 0.0092 m⁻¹), `b_b = ½ b_w`,
-/// `b_w = 0.00758 (400/λ)^{4.32}` m⁻¹. Replaced by the brine-optics water model with issue #5.
-fn pure_water_reflectance_rgb() -> DVec3 {
-    let r = |lambda: f64, a: f64| 0.33 * 0.5 * 0.00758 * (400.0 / lambda).powf(4.32) / a;
-    DVec3::new(r(650.0, 0.340), r(550.0, 0.0565), r(450.0, 0.0092))
-}
-
 impl World {
     /// Builds the models of a validated scene.
     ///
     /// # Errors
-    /// [`WorldError`] if a model rejects a parameter or the camera is under the surface.
+    /// [`WorldError`] if a model rejects a parameter.
     pub fn new(scene: &Scene) -> Result<Self, WorldError> {
         let model = |e: &dyn std::fmt::Display| WorldError::Model(e.to_string());
         let s = &scene.sea;
@@ -123,14 +173,15 @@ impl World {
         let variance_unresolved = variance_total.minus(rx, ry);
 
         // Downwelling irradiance just below a flat surface: the sun's share through Fresnel, the
-        // sky's through its hemispherical mean transmittance 1 − 0.066 (uniform sky).
+        // sky's through the hemispherical Fresnel reflectance of a uniform sky (0.066).
         let sky_e = sky.horizontal_irradiance_rgb();
         let cos_sun = sun_dir.y.max(0.0);
         let e_below = sun.irradiance_rgb() * cos_sun * (1.0 - fresnel_dielectric(cos_sun, 1.0, WATER_IOR))
-            + sky_e * (1.0 - 0.066);
-        // Upwelling radiance below, L_u = R E_d/π, carried through the surface with the n²
-        // radiance law (the (1 − F) factor is applied per pixel).
-        let water_radiance = pure_water_reflectance_rgb() * e_below / std::f64::consts::PI / (WATER_IOR * WATER_IOR);
+            + sky_e * (1.0 - hemispherical_fresnel_reflectance(1.0, WATER_IOR));
+        let body = water_body_of(scene.water.water_type.as_deref(), scene.water.chlorophyll_mg_m3)
+            .map_err(WorldError::Model)?;
+        let water = WaterRgb::new(&body, RgbBands::SrgbAverage);
+        let floor = scene.water.floor.as_ref().map(Floor::new).transpose()?;
 
         let camera = Camera::from_config(&scene.camera);
         let exposure_ev = if scene.output.auto_exposure {
@@ -158,16 +209,16 @@ impl World {
             wind,
             variance_unresolved,
             variance_total,
-            water_radiance,
+            water,
+            e_below,
+            floor,
+            underwater: false,
             trace,
             camera,
             exposure_ev,
         };
-        let field = world.sea.at_time(world.time);
-        let f = field.value(camera.position);
-        if f <= 0.0 {
-            return Err(WorldError::CameraUnderwater { camera_y: camera.position.y, surface_y: camera.position.y - f });
-        }
+        let mut world = world;
+        world.underwater = world.sea.at_time(world.time).value(camera.position) < 0.0;
         Ok(world)
     }
 }

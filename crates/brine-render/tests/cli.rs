@@ -67,14 +67,6 @@ fn out_of_range_values() {
 }
 
 #[test]
-fn camera_under_the_sea_is_refused() {
-    let (dir, code, err) = render_scene("[camera]\nposition = [0.0, -3.0, 0.0]\nwidth = 8\nheight = 8\n");
-    assert_eq!(code, Some(2));
-    assert!(err.contains("below the sea surface"), "{err}");
-    assert_nothing_written(dir.path());
-}
-
-#[test]
 fn a_small_render_writes_exactly_the_image() {
     let (dir, code, err) = render_scene("[camera]\nwidth = 12\nheight = 8\n[sea]\nwaves = 8\n");
     assert_eq!(code, Some(0), "{err}");
