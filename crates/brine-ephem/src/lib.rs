@@ -65,4 +65,6 @@ pub use observer::{EARTH_EQUATORIAL_RADIUS_KM, EARTH_FLATTENING, Observer};
 pub use refraction::{Atmosphere, REFRACTION_CUTOFF_DEG, REFRACTION_FADE_DEG};
 pub use schlyter::{MoonEcliptic, SunOrbit, local_sidereal_time, moon_ecliptic, obliquity, sun_orbit};
 pub use sun::{AU_KM, Options, SunModel, SunPosition, sun_position};
+/// The UTC instant type of the API (re-exported from `jiff`).
+pub use jiff::Timestamp;
 pub use time::{check_range, decimal_year, julian_date, parse_utc, schlyter_day, ut_hours};
