@@ -63,8 +63,9 @@ pub struct Disc {
     pub direction: DVec3,
     /// Angular radius `ρ` (rad).
     pub angular_radius: f64,
-    /// Mean radiance of the disc's lit part as seen from sea level (linear sRGB, kcd m⁻²); for
-    /// the Moon, the radiance of a fully lit disc of the same irradiance.
+    /// Mean radiance of the disc's lit part as seen from sea level (linear sRGB, kcd m⁻²), zero
+    /// once the disc has set; for the Moon, the radiance of a fully lit disc of the same
+    /// irradiance.
     pub radiance_rgb: DVec3,
     /// Irradiance on a plane facing the disc at sea level, counting only the part of the disc
     /// above the horizon (linear sRGB, klx); zero once the disc has set.
@@ -165,7 +166,7 @@ impl Sky {
         let sun = Disc {
             direction: s,
             angular_radius: rho,
-            radiance_rgb: sun_rgb,
+            radiance_rgb: if fraction > 0.0 { sun_rgb } else { DVec3::ZERO },
             irradiance_rgb: sun_rgb * omega * fraction,
             visible_fraction: fraction,
         };
@@ -342,10 +343,11 @@ impl Sky {
     }
 
     /// Radiance of the sun disc toward `view`: the disc's radiance inside its angular radius,
-    /// zero outside (linear sRGB, kcd m⁻²). The horizon is not applied here (the sea hides it).
+    /// zero outside or once it has set (linear sRGB, kcd m⁻²). The horizon does not cut the disc
+    /// here (the sea hides its lower part).
     pub fn sun_radiance_rgb(&self, view: DVec3) -> DVec3 {
         if view.normalize_or_zero().dot(self.sun.direction) >= self.sun.cos_half_angle() {
-            self.sun_radiance_unclipped
+            self.sun.radiance_rgb
         } else {
             DVec3::ZERO
         }

@@ -29,7 +29,7 @@ use crate::aerial::{
 use crate::cie::cmf;
 use crate::solar_tables::{K_OZONE, interpolate, solar_radiance};
 use crate::sun::OZONE_CM;
-use crate::xyz_to_linear_srgb;
+use crate::{MIN_COS_VIEW, xyz_to_linear_srgb};
 
 /// Mean Earth radius (m).
 pub const EARTH_RADIUS_M: f64 = 6_371_000.0;
@@ -38,7 +38,8 @@ pub const ATMOSPHERE_TOP_M: f64 = 100_000.0;
 /// Ozone layer: tent profile from 10 to 40 km, peak at 25 km (m).
 const OZONE_LAYER_M: (f64, f64, f64) = (10_000.0, 25_000.0, 40_000.0);
 
-/// View elevations of the table: `90° (i/(N − 1))²`, dense near the horizon.
+/// View elevations of the table: `a₀ + (90° − a₀)(i/(N − 1))²`, dense near the horizon, from
+/// `a₀ = asin(0.01)` (0.573°, Preetham's lowest view, [`crate::MIN_COS_VIEW`]).
 const N_ELEVATION: usize = 16;
 /// Relative azimuths of the table: `0..180°` uniform (the sky is symmetric about the sun's
 /// vertical plane).
@@ -182,11 +183,12 @@ impl TwilightRatio {
         Self { table }
     }
 
-    /// The ratio for a view at elevation `a` (rad; below 0 treated as 0) and azimuth `φ` from the
+    /// The ratio for a view at elevation `a` (rad; below 0.573° treated as 0.573°) and azimuth `φ` from the
     /// sun's vertical plane (rad, any; folded to `[0, π]`), bilinear in the table.
     pub fn ratio(&self, elevation: f64, relative_azimuth: f64) -> DVec3 {
-        let a = elevation.clamp(0.0, PI / 2.0);
-        let u = ((a / (PI / 2.0)).sqrt() * (N_ELEVATION - 1) as f64).min((N_ELEVATION - 1) as f64);
+        let a0 = MIN_COS_VIEW.asin();
+        let a = elevation.clamp(a0, PI / 2.0);
+        let u = (((a - a0) / (PI / 2.0 - a0)).sqrt() * (N_ELEVATION - 1) as f64).min((N_ELEVATION - 1) as f64);
         let phi = relative_azimuth.rem_euclid(2.0 * PI);
         let phi = if phi > PI { 2.0 * PI - phi } else { phi };
         let w = (phi / PI * (N_AZIMUTH - 1) as f64).clamp(0.0, (N_AZIMUTH - 1) as f64);
@@ -202,7 +204,8 @@ impl TwilightRatio {
 /// Elevation (rad) of table row `i`.
 fn elevation_of(i: usize) -> f64 {
     let s = i as f64 / (N_ELEVATION - 1) as f64;
-    PI / 2.0 * s * s
+    let a0 = MIN_COS_VIEW.asin();
+    a0 + (PI / 2.0 - a0) * s * s
 }
 
 #[cfg(test)]
