@@ -14,9 +14,11 @@
 //! sunset, so the sky is continuous at `e = 0`. It is tabulated in the constructor over view
 //! elevation and azimuth relative to the sun and interpolated bilinearly.
 //!
-//! **Approximation.** Single scattering only: below about −6° multiple scattering dominates the
-//! real twilight sky, which this model makes too dark (see the docs page for the comparison with
-//! measured twilight illuminances); the night-sky glow takes over in deep twilight.
+//! **Approximation.** Single scattering is computed; the higher orders, which dominate the real
+//! sky below about −6° and light the Earth's shadow, are approximated by an isotropic term equal
+//! to half the dome-averaged single scattering (a crude second order, not a radiative-transfer
+//! solution). See the docs page for the comparison with measured twilight illuminances; the
+//! night-sky glow takes over in deep twilight.
 
 use std::f64::consts::PI;
 
@@ -43,10 +45,12 @@ const OZONE_LAYER_M: (f64, f64, f64) = (10_000.0, 25_000.0, 40_000.0);
 const N_ELEVATION: usize = 16;
 /// Relative azimuths of the table: `0..180°` uniform (the sky is symmetric about the sun's
 /// vertical plane).
-const N_AZIMUTH: usize = 13;
+const N_AZIMUTH: usize = 19;
 /// Samples along a view ray and along a sun ray.
 const N_VIEW: usize = 40;
 const N_SUN: usize = 32;
+/// Isotropic higher-order scattering as a fraction of the dome-averaged single scattering.
+const MULTIPLE_SCATTERING: f64 = 0.5;
 /// Wavelengths of the spectral single scattering: 400, 420, …, 700 nm.
 const N_LAMBDA: usize = 16;
 
@@ -155,7 +159,7 @@ pub struct TwilightRatio {
 
 impl TwilightRatio {
     /// Tabulates the ratio for a sun at elevation `sun_elevation` (rad, ≤ 0) and turbidity `T`
-    /// (16 × 13 view directions, two single-scattering integrals each, 16 wavelengths from 400
+    /// (16 × 19 view directions, two single-scattering integrals each, 16 wavelengths from 400
     /// to 700 nm weighted by the solar spectrum and the CIE matching functions, then linear sRGB).
     ///
     /// # Arguments
@@ -169,17 +173,25 @@ impl TwilightRatio {
         let sp = Spectral::new(turbidity);
         let e = sun_elevation.min(0.0);
         let sun_at = |e: f64| DVec3::new(e.cos(), e.sin(), 0.0);
-        let mut table = Vec::with_capacity(N_ELEVATION * N_AZIMUTH);
+        let (mut num, mut den) = (Vec::with_capacity(N_ELEVATION * N_AZIMUTH), Vec::new());
         for i in 0..N_ELEVATION {
             let a = elevation_of(i);
             for j in 0..N_AZIMUTH {
                 let phi = PI * j as f64 / (N_AZIMUTH - 1) as f64;
                 let v = DVec3::new(a.cos() * phi.cos(), a.sin(), a.cos() * phi.sin());
-                let num = single_scattering(v, sun_at(e), &sp);
-                let den = single_scattering(v, sun_at(0.0), &sp);
-                table.push(DVec3::select(den.cmpgt(DVec3::ZERO), num / den, DVec3::ZERO).min(DVec3::ONE));
+                num.push(single_scattering(v, sun_at(e), &sp));
+                den.push(single_scattering(v, sun_at(0.0), &sp));
             }
         }
+        // Higher orders, approximated as isotropic: a fraction of the dome's mean single-scattered
+        // radiance added everywhere (it lights the Earth's shadow, which single scattering leaves
+        // black).
+        let (ms_num, ms_den) = (dome_mean(&num) * MULTIPLE_SCATTERING, dome_mean(&den) * MULTIPLE_SCATTERING);
+        let table = num
+            .iter()
+            .zip(&den)
+            .map(|(n, d)| ((*n + ms_num) / (*d + ms_den)).min(DVec3::ONE))
+            .collect();
         Self { table }
     }
 
@@ -199,6 +211,22 @@ impl TwilightRatio {
         let bottom = at(i + 1, j).lerp(at(i + 1, j + 1), fw);
         top.lerp(bottom, fu)
     }
+}
+
+/// Mean of a table over the dome, each cell weighted by its solid angle `cos a Δa Δφ`.
+fn dome_mean(cells: &[DVec3]) -> DVec3 {
+    let (mut sum, mut weight) = (DVec3::ZERO, 0.0);
+    for i in 0..N_ELEVATION {
+        let lo = if i == 0 { elevation_of(0) } else { 0.5 * (elevation_of(i - 1) + elevation_of(i)) };
+        let hi = if i + 1 == N_ELEVATION { PI / 2.0 } else { 0.5 * (elevation_of(i) + elevation_of(i + 1)) };
+        let w = hi.sin() - lo.sin();
+        for j in 0..N_AZIMUTH {
+            let wj = if j == 0 || j + 1 == N_AZIMUTH { 0.5 } else { 1.0 };
+            sum += cells[i * N_AZIMUTH + j] * (w * wj);
+            weight += w * wj;
+        }
+    }
+    sum / weight
 }
 
 /// Elevation (rad) of table row `i`.

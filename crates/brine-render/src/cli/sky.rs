@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use brine_sky::{CloudParams, MoonParams, Sky, SkyParams};
+use brine_sky::{CloudParams, MoonParams, Sky, SkyParams, fisheye_pixel_direction};
 use glam::{DVec2, DVec3};
 
 use super::CliError;
@@ -68,21 +68,6 @@ fn direction(elevation_deg: f64, azimuth_deg: f64) -> DVec3 {
     DVec3::new(a.sin() * e.cos(), e.sin(), -a.cos() * e.cos())
 }
 
-/// The view direction of fisheye pixel `(i, j)` of an `n × n` image (equidistant: the distance
-/// from the centre is proportional to the zenith angle), or `None` outside the horizon circle.
-pub fn fisheye_direction(i: u32, j: u32, n: u32) -> Option<DVec3> {
-    let half = n as f64 / 2.0;
-    let x = (i as f64 + 0.5 - half) / half;
-    let y = (j as f64 + 0.5 - half) / half;
-    let r = x.hypot(y);
-    if r > 1.0 {
-        return None;
-    }
-    // North up, east left: bearing measured from up toward the left.
-    let bearing = (-x).atan2(-y);
-    Some(direction(90.0 * (1.0 - r), bearing.to_degrees()))
-}
-
 /// Runs `brine sky`.
 ///
 /// # Errors
@@ -145,7 +130,7 @@ pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
         let mut pixels = vec![DVec3::ZERO; (n * n) as usize];
         for j in 0..n {
             for i in 0..n {
-                if let Some(v) = fisheye_direction(i, j, n) {
+                if let Some(v) = fisheye_pixel_direction(i, j, n) {
                     pixels[(j * n + i) as usize] = sky.background_rgb(v);
                 }
             }
@@ -161,20 +146,4 @@ pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
         eprintln!("wrote {} ({n}×{n}, EV {ev:.2})", path.display());
     }
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn fisheye_centre_is_zenith_and_top_is_north() {
-        let z = fisheye_direction(50, 50, 101).unwrap();
-        assert!((z.y - 1.0).abs() < 1e-3);
-        let north = fisheye_direction(50, 0, 101).unwrap();
-        assert!(north.z < -0.99 * north.x.hypot(north.z), "{north:?}");
-        let east = fisheye_direction(0, 50, 101).unwrap();
-        assert!(east.x > 0.99 * east.x.hypot(east.z), "{east:?}");
-        assert!(fisheye_direction(0, 0, 101).is_none());
-    }
 }
