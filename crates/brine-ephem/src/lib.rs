@@ -60,11 +60,11 @@ mod time;
 
 pub use coords::Horizontal;
 pub use error::EphemError;
+/// The UTC instant type of the API (re-exported from `jiff`).
+pub use jiff::Timestamp;
 pub use moon::{MOON_RADIUS_KM, MoonPosition, moon_position, phase_angle};
 pub use observer::{EARTH_EQUATORIAL_RADIUS_KM, EARTH_FLATTENING, Observer};
 pub use refraction::{Atmosphere, REFRACTION_CUTOFF_DEG, REFRACTION_FADE_DEG};
 pub use schlyter::{MoonEcliptic, SunOrbit, local_sidereal_time, moon_ecliptic, obliquity, sun_orbit};
 pub use sun::{AU_KM, Options, SunModel, SunPosition, sun_position};
-/// The UTC instant type of the API (re-exported from `jiff`).
-pub use jiff::Timestamp;
 pub use time::{check_range, decimal_year, julian_date, parse_utc, schlyter_day, ut_hours};

@@ -28,12 +28,8 @@ impl Atmosphere {
     /// [`EphemError::OutOfRange`] naming the parameter.
     pub fn new(pressure_hpa: f64, temperature_c: f64) -> Result<Self, EphemError> {
         let p = check("pressure_hpa", pressure_hpa, pressure_hpa > 0.0 && pressure_hpa <= 2000.0, "(0, 2000] hPa")?;
-        let t = check(
-            "temperature_c",
-            temperature_c,
-            temperature_c > -273.0 && temperature_c <= 100.0,
-            "(-273, 100] °C",
-        )?;
+        let t =
+            check("temperature_c", temperature_c, temperature_c > -273.0 && temperature_c <= 100.0, "(-273, 100] °C")?;
         Ok(Self { pressure_hpa: p, temperature_c: t })
     }
 

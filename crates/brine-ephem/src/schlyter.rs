@@ -96,14 +96,17 @@ pub struct MoonEcliptic {
 /// `N = 125.1228° − 0.0529538083° d`, `i = 5.1454°`, `w = 318.0634° + 0.1643573223° d`,
 /// `a = 60.2666`, `e = 0.0549`, `M = 115.3654° + 13.0649929509° d`; Kepler's equation; the
 /// position in the orbit rotated by `N`, `i`, `w`; then
-/// `Δλ = −1.274° sin(M_m − 2D) + 0.658° sin 2D − 0.186° sin M_s − 0.059° sin(2M_m − 2D)
-/// − 0.057° sin(M_m − 2D + M_s) + 0.053° sin(M_m + 2D) + 0.046° sin(2D − M_s)
-/// + 0.041° sin(M_m − M_s) − 0.035° sin D − 0.031° sin(M_m + M_s) − 0.015° sin(2F − 2D)
-/// + 0.011° sin(M_m − 4D)`,
-/// `Δβ = −0.173° sin(F − 2D) − 0.055° sin(M_m − F − 2D) − 0.046° sin(M_m + F − 2D)
-/// + 0.033° sin(F + 2D) + 0.017° sin(2M_m + F)`,
-/// `Δr = −0.58 cos(M_m − 2D) − 0.46 cos 2D` (Earth radii), with `L_m = N + w + M_m`,
-/// `D = L_m − L_s`, `F = L_m − N`.
+/// ```text
+/// Δλ = −1.274° sin(Mm − 2D) + 0.658° sin 2D − 0.186° sin Ms − 0.059° sin(2Mm − 2D)
+///      − 0.057° sin(Mm − 2D + Ms) + 0.053° sin(Mm + 2D) + 0.046° sin(2D − Ms)
+///      + 0.041° sin(Mm − Ms) − 0.035° sin D − 0.031° sin(Mm + Ms) − 0.015° sin(2F − 2D)
+///      + 0.011° sin(Mm − 4D)
+/// Δβ = −0.173° sin(F − 2D) − 0.055° sin(Mm − F − 2D) − 0.046° sin(Mm + F − 2D)
+///      + 0.033° sin(F + 2D) + 0.017° sin(2Mm + F)
+/// Δr = −0.58 cos(Mm − 2D) − 0.46 cos 2D   (Earth radii)
+/// ```
+/// with `Lm = N + w + Mm`, `D = Lm − Ls`, `F = Lm − N` (`Ms`, `Ls`: the Sun's mean anomaly and
+/// longitude).
 ///
 /// # Arguments
 /// - `d`: Schlyter day number.
@@ -138,7 +141,9 @@ pub fn moon_ecliptic(d: f64) -> MoonEcliptic {
     let dd = lm - sun.mean_longitude;
     let f = lm - n;
     let s = |x: f64| x.sin();
-    let dlon = -1.274 * s(mm - 2.0 * dd) + 0.658 * s(2.0 * dd) - 0.186 * s(ms) - 0.059 * s(2.0 * mm - 2.0 * dd)
+    let dlon = -1.274 * s(mm - 2.0 * dd) + 0.658 * s(2.0 * dd)
+        - 0.186 * s(ms)
+        - 0.059 * s(2.0 * mm - 2.0 * dd)
         - 0.057 * s(mm - 2.0 * dd + ms)
         + 0.053 * s(mm + 2.0 * dd)
         + 0.046 * s(2.0 * dd - ms)

@@ -1,9 +1,7 @@
 //! Analytic limits and properties of brine-ephem: solar noon at the solstices and equinoxes, the
 //! full moon opposite the Sun, continuity over a day, and ranges on random instants and places.
 
-use brine_ephem::{
-    Atmosphere, Horizontal, Observer, Options, SunModel, moon_position, parse_utc, sun_position,
-};
+use brine_ephem::{Atmosphere, Horizontal, Observer, Options, SunModel, moon_position, parse_utc, sun_position};
 use jiff::{SignedDuration, Timestamp};
 use proptest::prelude::*;
 

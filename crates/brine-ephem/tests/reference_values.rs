@@ -107,7 +107,10 @@ fn against_erfa_over_1950_2050() {
         worst[2],
         (sum_sq[2] / n).sqrt()
     );
-    println!("sun distance max {:.2e} AU; moon distance max {:.2e} rel; moon k max {:.4}", worst[3], worst[4], worst[5]);
+    println!(
+        "sun distance max {:.2e} AU; moon distance max {:.2e} rel; moon k max {:.4}",
+        worst[3], worst[4], worst[5]
+    );
     assert!(rows.len() == 240);
     assert!(worst[0] < SPA_SUN_DEG, "SPA sun {}", worst[0]);
     assert!(worst[1] < SCHLYTER_SUN_DEG, "Schlyter sun {}", worst[1]);
@@ -138,7 +141,11 @@ fn meeus_examples_25b_and_47a() {
     // 199°54′26.45″ = 199.907347° (VSOP87), R = 0.99760775 AU. Schlyter: 0.01°, 2×10⁻⁴ AU.
     let t = parse_utc("1992-10-12T23:59:01Z").unwrap();
     let s = sun_orbit(schlyter_day(t));
-    println!("Sun 25.b: dλ = {:.5}°, dR = {:.2e} AU", s.longitude.to_degrees() - 199.907347, s.distance_au - 0.99760775);
+    println!(
+        "Sun 25.b: dλ = {:.5}°, dR = {:.2e} AU",
+        s.longitude.to_degrees() - 199.907347,
+        s.distance_au - 0.99760775
+    );
     assert!((s.longitude.to_degrees() - 199.907347).abs() < 0.01);
     assert!((s.distance_au - 0.99760775).abs() < 2e-4);
 }

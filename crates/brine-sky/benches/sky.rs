@@ -49,10 +49,13 @@ fn main() {
         ("Sky::radiance_rgb, night with Moon", median_ns(n, 9, |i| night.radiance_rgb(v(i)))),
         ("Sky::radiance_rgb, day with clouds", median_ns(n, 9, |i| cloudy.radiance_rgb(v(i)))),
         ("Sky::background_rgb, night (discs)", median_ns(n, 9, |i| night.background_rgb(v(i)))),
-        ("Sky::aerial_perspective", median_ns(n, 9, |i| {
-            let ap = day.aerial_perspective(5.0, v(i) * DVec3::new(1.0, -0.2, 1.0), 1000.0 + i as f64);
-            ap.extinction + ap.inscatter
-        })),
+        (
+            "Sky::aerial_perspective",
+            median_ns(n, 9, |i| {
+                let ap = day.aerial_perspective(5.0, v(i) * DVec3::new(1.0, -0.2, 1.0), 1000.0 + i as f64);
+                ap.extinction + ap.inscatter
+            }),
+        ),
     ];
     println!("{:<44} {:>12} {:>10}", "per call", "median (ns)", "× Preetham");
     for (name, t) in rows {
@@ -60,8 +63,14 @@ fn main() {
     }
     let ctor = |f: &dyn Fn() -> DVec3| median_ns(1, 15, |_| f()) / 1e3;
     let rows = [
-        ("Sun::through_atmosphere (spectral)", ctor(&|| Sun::through_atmosphere(3.0, dir(30.0, 0.0)).unwrap().radiance_rgb())),
-        ("Sky::new, day", ctor(&|| Sky::new(&SkyParams::new(3.0, dir(30.0, 0.0))).unwrap().horizontal_irradiance_rgb())),
+        (
+            "Sun::through_atmosphere (spectral)",
+            ctor(&|| Sun::through_atmosphere(3.0, dir(30.0, 0.0)).unwrap().radiance_rgb()),
+        ),
+        (
+            "Sky::new, day",
+            ctor(&|| Sky::new(&SkyParams::new(3.0, dir(30.0, 0.0))).unwrap().horizontal_irradiance_rgb()),
+        ),
         (
             "Sky::new, twilight (twilight table)",
             ctor(&|| Sky::new(&SkyParams::new(3.0, dir(-5.0, 0.0))).unwrap().horizontal_irradiance_rgb()),

@@ -82,7 +82,7 @@ pub fn rayleigh_phase(cos_theta: f64) -> f64 {
 /// - `g`: asymmetry, `(−1, 1)`.
 ///
 /// # References
-/// Henyey & Greenstein 1941, ApJ 93:70; equation sheet §8 (Hoffman & Preetham and Chen et al.
+/// Henyey & Greenstein 1941, Astrophys. J. 93:70; equation sheet §8 (Hoffman & Preetham and Chen et al.
 /// print `(1 − g)²`, which integrates to `(1 − g)/(1 + g)`, not 1).
 pub fn henyey_greenstein(cos_theta: f64, g: f64) -> f64 {
     (1.0 - g * g) / (4.0 * PI * (1.0 + g * g - 2.0 * g * cos_theta).powf(1.5))

@@ -221,10 +221,8 @@ impl Sky {
         }
 
         let clouds = params.clouds.as_ref().map(CloudLayers::new).transpose()?;
-        let lights = [
-            (s, sun.irradiance_rgb),
-            moon.map_or((DVec3::Y, DVec3::ZERO), |(d, _)| (d.direction, d.irradiance_rgb)),
-        ];
+        let lights =
+            [(s, sun.irradiance_rgb), moon.map_or((DVec3::Y, DVec3::ZERO), |(d, _)| (d.direction, d.irradiance_rgb))];
         let mut sky = Self {
             turbidity: t,
             sun,
@@ -471,7 +469,8 @@ mod tests {
         // ∫_disc L dω over the shaded disc equals the irradiance (midpoint rule on a 200 × 200
         // grid over the disc: 0.5 % for the edge cells).
         for phase_deg in [0.0f64, 60.0, 120.0] {
-            let m = MoonParams { direction: dir(40.0, 120.0), phase_angle: phase_deg.to_radians(), distance_km: 384_400.0 };
+            let m =
+                MoonParams { direction: dir(40.0, 120.0), phase_angle: phase_deg.to_radians(), distance_km: 384_400.0 };
             let sun = dir(-20.0, 300.0);
             let sky = Sky::new(&SkyParams { moon: Some(m), ..SkyParams::new(3.0, sun) }).unwrap();
             let disc = *sky.moon().unwrap();

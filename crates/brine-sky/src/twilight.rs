@@ -66,7 +66,8 @@ struct Spectral {
 impl Spectral {
     fn new(turbidity: f64) -> Self {
         // Preetham's K(λ) between his three knots (0.666 at 450, 0.678 at 550, 0.686 at 680 nm).
-        let k = |l: f64| interpolate(&[(380.0, 0.666), (450.0, 0.666), (550.0, 0.678), (680.0, 0.686), (780.0, 0.686)], l);
+        let k =
+            |l: f64| interpolate(&[(380.0, 0.666), (450.0, 0.666), (550.0, 0.678), (680.0, 0.686), (780.0, 0.686)], l);
         let lambda = |i: usize| 400.0 + 20.0 * i as f64;
         Self {
             rayleigh: std::array::from_fn(|i| rayleigh_beta(lambda(i))),
@@ -187,11 +188,7 @@ impl TwilightRatio {
         // radiance added everywhere (it lights the Earth's shadow, which single scattering leaves
         // black).
         let (ms_num, ms_den) = (dome_mean(&num) * MULTIPLE_SCATTERING, dome_mean(&den) * MULTIPLE_SCATTERING);
-        let table = num
-            .iter()
-            .zip(&den)
-            .map(|(n, d)| ((*n + ms_num) / (*d + ms_den)).min(DVec3::ONE))
-            .collect();
+        let table = num.iter().zip(&den).map(|(n, d)| ((*n + ms_num) / (*d + ms_den)).min(DVec3::ONE)).collect();
         Self { table }
     }
 

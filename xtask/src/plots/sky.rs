@@ -4,8 +4,8 @@
 use std::path::Path;
 
 use brine_sky::{
-    MoonParams, RGB_WAVELENGTHS_NM, Scattering, Sky, SkyParams, fisheye_pixel_direction,
-    linear_srgb_to_xyz, sun_spectral_radiance,
+    MoonParams, RGB_WAVELENGTHS_NM, Scattering, Sky, SkyParams, fisheye_pixel_direction, linear_srgb_to_xyz,
+    sun_spectral_radiance,
 };
 use glam::DVec3;
 

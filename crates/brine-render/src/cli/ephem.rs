@@ -39,8 +39,11 @@ impl PlaceArgs {
         let input = |e: brine_ephem::EphemError| CliError::Input(e.to_string());
         let t = parse_utc(&self.time).map_err(input)?;
         let o = Observer::from_degrees(self.lat, self.lon, self.height_m).map_err(input)?;
-        let refraction =
-            if self.refraction { Some(Atmosphere::new(self.pressure_hpa, self.temperature_c).map_err(input)?) } else { None };
+        let refraction = if self.refraction {
+            Some(Atmosphere::new(self.pressure_hpa, self.temperature_c).map_err(input)?)
+        } else {
+            None
+        };
         Ok((t, o, Options { refraction, delta_t_s: None }))
     }
 }

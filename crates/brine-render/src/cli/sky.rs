@@ -76,7 +76,10 @@ fn direction(elevation_deg: f64, azimuth_deg: f64) -> DVec3 {
 pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
     let input = |m: String| CliError::Input(m);
     if !(-90.0..=90.0).contains(&args.sun_elevation_deg) {
-        return Err(input(format!("sun_elevation_deg = {} is out of range: expected [-90, 90]°", args.sun_elevation_deg)));
+        return Err(input(format!(
+            "sun_elevation_deg = {} is out of range: expected [-90, 90]°",
+            args.sun_elevation_deg
+        )));
     }
     if !(0.0..=180.0).contains(&args.moon_phase_deg) {
         return Err(input(format!("moon_phase_deg = {} is out of range: expected [0, 180]°", args.moon_phase_deg)));
