@@ -60,14 +60,15 @@ proptest! {
     ) {
         let sc = Scattering::new(t);
         let d = dir(view_e, view_a);
+        // Segments stay above the sea (y ≥ 0), as in a scene.
+        let s = if d.y < 0.0 { s.min(h / -d.y) } else { s };
         let lights = [(dir(sun_e, 120.0), DVec3::new(90.0, 95.0, 100.0))];
         let ap = sc.aerial_perspective(h, d, s, &lights, DVec3::splat(2.0));
-        prop_assert!(ap.extinction.min_element() > 0.0 || s > 1e4, "F_ex underflow only over long paths");
-        prop_assert!(ap.extinction.min_element() >= 0.0 && ap.extinction.max_element() <= 1.0);
+        prop_assert!(ap.extinction.min_element() > 0.0 && ap.extinction.max_element() <= 1.0, "{:?}", ap.extinction);
         prop_assert!(ap.inscatter.is_finite() && ap.inscatter.min_element() >= 0.0);
-        // Longer segments transmit less.
-        let longer = sc.aerial_perspective(h, d, s * 1.5 + 1.0, &lights, DVec3::splat(2.0));
-        prop_assert!((longer.extinction - ap.extinction).max_element() <= 0.0);
+        // Longer segments transmit less: the first half transmits at least as much as the whole.
+        let half = sc.aerial_perspective(h, d, s * 0.5, &lights, DVec3::splat(2.0));
+        prop_assert!((ap.extinction - half.extinction).max_element() <= 0.0);
     }
 }
 
