@@ -21,6 +21,22 @@ pub fn xyz_to_linear_srgb(xyz: DVec3) -> DVec3 {
     DVec3::new(rgb.red, rgb.green, rgb.blue)
 }
 
+/// Linear sRGB to CIE 1931 XYZ (D65), the inverse of [`xyz_to_linear_srgb`], through `palette`.
+///
+/// # Arguments
+/// - `rgb`: linear sRGB in any photometric unit.
+///
+/// # Returns
+/// XYZ in the same unit (Y is luminance).
+///
+/// # References
+/// IEC 61966-2-1:1999 (sRGB) matrix.
+pub fn linear_srgb_to_xyz(rgb: DVec3) -> DVec3 {
+    let c: LinSrgb<f64> = LinSrgb::new(rgb.x, rgb.y, rgb.z);
+    let xyz: Xyz<D65, f64> = Xyz::from_color_unclamped(c);
+    DVec3::new(xyz.x, xyz.y, xyz.z)
+}
+
 /// CIE xyY chromaticity and luminance to XYZ: `X = xY/y`, `Z = (1 − x − y)Y/y`.
 ///
 /// # Arguments
@@ -42,6 +58,14 @@ pub fn xyy_to_xyz(x: f64, y: f64, luminance: f64) -> DVec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn round_trip() {
+        let v = DVec3::new(0.2, 0.5, 0.9);
+        let back = linear_srgb_to_xyz(xyz_to_linear_srgb(v));
+        // palette derives both matrices from the primaries; they invert each other to ~10⁻⁷.
+        assert!((back - v).abs().max_element() < 1e-6, "{back:?}");
+    }
 
     #[test]
     fn d65_white_maps_to_equal_rgb() {

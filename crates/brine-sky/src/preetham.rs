@@ -138,6 +138,8 @@ pub struct PreethamSky {
     k_x: PerezCoefficients,
     k_yy: PerezCoefficients,
     zenith: (f64, f64, f64),
+    /// `F(0, θ_s)` for Y, x, y (the normalisation, computed once).
+    at_zenith: [f64; 3],
 }
 
 impl PreethamSky {
@@ -156,15 +158,26 @@ impl PreethamSky {
         check("sun_elevation_deg", d.y.asin().to_degrees(), d.y >= 0.0, "[0, 90]°")?;
         let theta_s = d.y.clamp(0.0, 1.0).acos();
         let (xz, yz) = zenith_chromaticity_xy(turbidity, theta_s);
+        let (k_y, k_x, k_yy) = (
+            PerezCoefficients::luminance(turbidity),
+            PerezCoefficients::chromaticity_x(turbidity),
+            PerezCoefficients::chromaticity_y(turbidity),
+        );
         Ok(Self {
             turbidity,
             sun_direction: d,
             theta_s,
-            k_y: PerezCoefficients::luminance(turbidity),
-            k_x: PerezCoefficients::chromaticity_x(turbidity),
-            k_yy: PerezCoefficients::chromaticity_y(turbidity),
+            k_y,
+            k_x,
+            k_yy,
             zenith: (zenith_luminance(turbidity, theta_s), xz, yz),
+            at_zenith: [perez(1.0, theta_s, &k_y), perez(1.0, theta_s, &k_x), perez(1.0, theta_s, &k_yy)],
         })
+    }
+
+    /// Sun zenith angle `θ_s` (rad).
+    pub fn theta_s(&self) -> f64 {
+        self.theta_s
     }
 
     /// Turbidity `T`.
@@ -191,9 +204,13 @@ impl PreethamSky {
         let v = view.normalize_or_zero();
         let cos_theta = v.y.max(MIN_COS_VIEW);
         let gamma = v.dot(self.sun_direction).clamp(-1.0, 1.0).acos();
-        let ratio = |k: &PerezCoefficients| perez(cos_theta, gamma, k) / perez(1.0, self.theta_s, k);
         let (yz, xz, yyz) = self.zenith;
-        (yz * ratio(&self.k_y), xz * ratio(&self.k_x), yyz * ratio(&self.k_yy))
+        let [ny, nx, nyy] = self.at_zenith;
+        (
+            yz * perez(cos_theta, gamma, &self.k_y) / ny,
+            xz * perez(cos_theta, gamma, &self.k_x) / nx,
+            yyz * perez(cos_theta, gamma, &self.k_yy) / nyy,
+        )
     }
 
     /// Sky radiance as CIE XYZ (kcd m⁻²) for a unit view direction.

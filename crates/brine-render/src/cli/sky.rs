@@ -1,21 +1,152 @@
-//! `brine sky`: not implemented yet (issue #4).
-//!
-//! Replace the placeholder argument types and `run_*` functions with the real command.
+//! `brine sky`: sky radiance for a view direction (JSON), or a fisheye sky-dome image (brine-sky).
+
+use std::path::PathBuf;
+
+use brine_sky::{CloudParams, MoonParams, Sky, SkyParams, fisheye_pixel_direction};
+use glam::{DVec2, DVec3};
 
 use super::CliError;
+use crate::write_image;
 
-/// Arguments of `brine sky` (placeholder: accepts anything).
-#[derive(Debug, clap::Args)]
+/// Arguments of `brine sky`.
+#[derive(Debug, Clone, clap::Args)]
 pub struct SkyArgs {
-    /// Ignored until the subcommand is implemented.
-    #[arg(trailing_var_arg = true, allow_hyphen_values = true, hide = true)]
-    pub rest: Vec<String>,
+    /// Turbidity T, [1.7, 10].
+    #[arg(long, default_value_t = 3.0)]
+    pub turbidity: f64,
+    /// Sun elevation (degrees), [-90, 90].
+    #[arg(long, allow_hyphen_values = true)]
+    pub sun_elevation_deg: f64,
+    /// Sun azimuth, compass bearing from north through east (degrees).
+    #[arg(long, default_value_t = 180.0, allow_hyphen_values = true)]
+    pub sun_azimuth_deg: f64,
+    /// Moon elevation (degrees); with --moon-azimuth-deg adds the Moon.
+    #[arg(long, allow_hyphen_values = true, requires = "moon_azimuth_deg")]
+    pub moon_elevation_deg: Option<f64>,
+    /// Moon azimuth (degrees from north through east).
+    #[arg(long, allow_hyphen_values = true, requires = "moon_elevation_deg")]
+    pub moon_azimuth_deg: Option<f64>,
+    /// Moon phase angle (degrees, 0 = full), [0, 180].
+    #[arg(long, default_value_t = 0.0)]
+    pub moon_phase_deg: f64,
+    /// Moon distance (km).
+    #[arg(long, default_value_t = 384_400.0)]
+    pub moon_distance_km: f64,
+    /// Cloud cover [0, 1]; 0 (default) is a clear sky.
+    #[arg(long, default_value_t = 0.0)]
+    pub clouds: f64,
+    /// Cloud seed.
+    #[arg(long, default_value_t = 1)]
+    pub cloud_seed: u64,
+    /// Time (s) at which the clouds are drawn.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub time_s: f64,
+    /// View elevation (degrees) for --json.
+    #[arg(long, default_value_t = 90.0, allow_hyphen_values = true)]
+    pub view_elevation_deg: f64,
+    /// View azimuth (degrees from north through east) for --json.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub view_azimuth_deg: f64,
+    /// Print the radiance toward the view direction as JSON (XYZ and linear sRGB, kcd/m²).
+    #[arg(long)]
+    pub json: bool,
+    /// Write a fisheye image of the dome (.png or .exr): zenith at the centre, north up, east to
+    /// the left (the sky seen from below), horizon on the circle.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Image size in pixels (square).
+    #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=8192))]
+    pub size: u32,
+    /// Exposure EV (1.2·2^EV cd/m² maps to white); default: the zenith at mid-grey.
+    #[arg(long, allow_hyphen_values = true)]
+    pub exposure_ev: Option<f64>,
+}
+
+/// Unit vector of a compass bearing and an elevation, in degrees (y up, x east, z south).
+fn direction(elevation_deg: f64, azimuth_deg: f64) -> DVec3 {
+    let (e, a) = (elevation_deg.to_radians(), azimuth_deg.to_radians());
+    DVec3::new(a.sin() * e.cos(), e.sin(), -a.cos() * e.cos())
 }
 
 /// Runs `brine sky`.
 ///
 /// # Errors
-/// [`CliError::NotYet`] until issue #4 lands.
-pub fn run_sky(_args: &SkyArgs) -> Result<(), CliError> {
-    Err(CliError::NotYet { command: "sky", issue: 4 })
+/// [`CliError::Input`] for a parameter out of range or a missing output; [`CliError::Failure`]
+/// if the image cannot be written.
+pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
+    let input = |m: String| CliError::Input(m);
+    if !(-90.0..=90.0).contains(&args.sun_elevation_deg) {
+        return Err(input(format!(
+            "sun_elevation_deg = {} is out of range: expected [-90, 90]°",
+            args.sun_elevation_deg
+        )));
+    }
+    if !(0.0..=180.0).contains(&args.moon_phase_deg) {
+        return Err(input(format!("moon_phase_deg = {} is out of range: expected [0, 180]°", args.moon_phase_deg)));
+    }
+    if !args.json && args.out.is_none() {
+        return Err(input("nothing to do: give --json and/or --out FILE".to_string()));
+    }
+    let moon = match (args.moon_elevation_deg, args.moon_azimuth_deg) {
+        (Some(e), Some(a)) => Some(MoonParams {
+            direction: direction(e, a),
+            phase_angle: args.moon_phase_deg.to_radians(),
+            distance_km: args.moon_distance_km,
+        }),
+        _ => None,
+    };
+    let clouds = (args.clouds > 0.0).then(|| CloudParams {
+        cover: args.clouds,
+        seed: args.cloud_seed,
+        wind_m_s: DVec2::new(8.0, 0.0),
+        ..CloudParams::default()
+    });
+    let params = SkyParams {
+        moon,
+        clouds,
+        time_s: args.time_s,
+        ..SkyParams::new(args.turbidity, direction(args.sun_elevation_deg, args.sun_azimuth_deg))
+    };
+    let sky = Sky::new(&params).map_err(|e| input(e.to_string()))?;
+
+    if args.json {
+        let v = direction(args.view_elevation_deg, args.view_azimuth_deg);
+        let rgb = sky.radiance_rgb(v);
+        let xyz = sky.radiance_xyz(v);
+        let sun = sky.sun();
+        let mut out = serde_json::json!({
+            "view_elevation_deg": args.view_elevation_deg,
+            "view_azimuth_deg": args.view_azimuth_deg,
+            "xyz_kcd_m2": xyz.to_array(),
+            "rgb_kcd_m2": rgb.to_array(),
+            "sun_radiance_rgb_kcd_m2": sun.radiance_rgb.to_array(),
+            "sun_irradiance_rgb_klx": sun.irradiance_rgb.to_array(),
+            "sky_horizontal_irradiance_rgb_klx": sky.horizontal_irradiance_rgb().to_array(),
+        });
+        if let Some(m) = sky.moon() {
+            out["moon_irradiance_rgb_klx"] = serde_json::json!(m.irradiance_rgb.to_array());
+        }
+        println!("{out}");
+    }
+    if let Some(path) = &args.out {
+        let n = args.size;
+        let mut pixels = vec![DVec3::ZERO; (n * n) as usize];
+        for j in 0..n {
+            for i in 0..n {
+                if let Some(v) = fisheye_pixel_direction(i, j, n) {
+                    pixels[(j * n + i) as usize] = sky.background_rgb(v);
+                }
+            }
+        }
+        let ev = args.exposure_ev.unwrap_or_else(|| {
+            let zenith_cd = sky.radiance_xyz(DVec3::Y).y.max(1e-12) * 1000.0;
+            (2.0 * zenith_cd / 1.2).log2()
+        });
+        write_image(path, n, n, &pixels, ev).map_err(|e| match e {
+            crate::OutputError::Format(m) => CliError::Input(m.replacen("output.path", "--out", 1)),
+            other => CliError::Failure(other.to_string()),
+        })?;
+        eprintln!("wrote {} ({n}×{n}, EV {ev:.2})", path.display());
+    }
+    Ok(())
 }

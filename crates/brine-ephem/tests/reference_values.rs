@@ -1,0 +1,151 @@
+//! brine-ephem against published positions and a high-precision ephemeris.
+//!
+//! - `tests/data/reference_positions.csv`: 240 instants over 1950–2050 at random places, Sun and
+//!   Moon from astropy/ERFA (Moon: Meeus ch. 47 series, 2.9″ RMS against ELP/MPP02); see the
+//!   file's header and `make_reference_positions.py`.
+//! - Meeus 1998, Examples 25.b (Sun, 1992-10-13 0h TD) and 47.a (Moon, 1992-04-12 0h TD).
+
+use brine_ephem::{
+    Observer, Options, SunModel, moon_ecliptic, moon_position, parse_utc, schlyter_day, sun_orbit, sun_position,
+};
+
+/// Angle between two (altitude, azimuth) directions, degrees.
+fn separation_deg(alt1: f64, az1: f64, alt2: f64, az2: f64) -> f64 {
+    let (a1, a2) = (alt1.to_radians(), alt2.to_radians());
+    // Haversine form (acos loses precision for small angles).
+    let h = ((a2 - a1) / 2.0).sin().powi(2) + a1.cos() * a2.cos() * ((az2 - az1).to_radians() / 2.0).sin().powi(2);
+    (2.0 * h.sqrt().asin()).to_degrees()
+}
+
+struct Row {
+    utc: String,
+    lat: f64,
+    lon: f64,
+    sun_alt: f64,
+    sun_az: f64,
+    sun_au: f64,
+    moon_alt: f64,
+    moon_az: f64,
+    moon_km: f64,
+    moon_k: f64,
+}
+
+fn rows() -> Vec<Row> {
+    let text = include_str!("data/reference_positions.csv");
+    text.lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("utc"))
+        .map(|l| {
+            let f: Vec<&str> = l.split(',').collect();
+            let n = |i: usize| f[i].parse::<f64>().unwrap();
+            Row {
+                utc: f[0].to_string(),
+                lat: n(1),
+                lon: n(2),
+                sun_alt: n(3),
+                sun_az: n(4),
+                sun_au: n(5),
+                moon_alt: n(6),
+                moon_az: n(7),
+                moon_km: n(8),
+                moon_k: n(9),
+            }
+        })
+        .collect()
+}
+
+/// Largest angular error of the SPA Sun: the target, 0.01°. SPA is good to 0.0003°;
+/// ΔT estimates differ by < 30 s (0.0002° of solar motion).
+const SPA_SUN_DEG: f64 = 0.01;
+/// Largest angular error of the Schlyter Sun: 0.02°. No nutation (≤ 17″) nor aberration (20.5″),
+/// and the elements' own error (Schlyter: "a fraction of an arc minute").
+const SCHLYTER_SUN_DEG: f64 = 0.02;
+/// Largest angular error of the Schlyter Moon, topocentric: the target, 0.1°.
+const SCHLYTER_MOON_DEG: f64 = 0.1;
+/// Earth–Sun distance from Schlyter's elements: 2×10⁻⁴ AU (no planetary perturbations).
+const SUN_AU: f64 = 2e-4;
+/// Geocentric Moon distance: 0.4 %. Schlyter keeps two distance terms (3 700 and 2 900 km); the
+/// next ones of ELP-2000/82 (Meeus table 47.A: 570, 246, 205, 171, 153, 130 km…) add up to
+/// about 1 000 km, 0.27 % of the distance.
+const MOON_KM_REL: f64 = 4e-3;
+/// Illuminated fraction: 0.01 (from the 0.1° elongation error: dk = sin(i)/2 di).
+const MOON_K: f64 = 0.01;
+
+#[test]
+fn against_erfa_over_1950_2050() {
+    let mut worst = [0.0f64; 6];
+    let mut sum_sq = [0.0f64; 3];
+    let rows = rows();
+    for r in &rows {
+        let t = parse_utc(&r.utc).unwrap();
+        let o = Observer::from_degrees(r.lat, r.lon, 0.0).unwrap();
+        let opts = Options::default();
+        let spa = sun_position(t, &o, SunModel::Spa, &opts).unwrap();
+        let sch = sun_position(t, &o, SunModel::Schlyter, &opts).unwrap();
+        let moon = moon_position(t, &o, &opts).unwrap();
+        let e = [
+            separation_deg(spa.altitude.to_degrees(), spa.azimuth.to_degrees(), r.sun_alt, r.sun_az),
+            separation_deg(sch.altitude.to_degrees(), sch.azimuth.to_degrees(), r.sun_alt, r.sun_az),
+            separation_deg(moon.altitude.to_degrees(), moon.azimuth.to_degrees(), r.moon_alt, r.moon_az),
+            (sch.distance_au - r.sun_au).abs(),
+            (moon.distance_km / r.moon_km - 1.0).abs(),
+            (moon.illuminated_fraction - r.moon_k).abs(),
+        ];
+        for i in 0..6 {
+            worst[i] = worst[i].max(e[i]);
+        }
+        for i in 0..3 {
+            sum_sq[i] += e[i] * e[i];
+        }
+    }
+    let n = rows.len() as f64;
+    println!(
+        "n = {n}: SPA sun max {:.5}° rms {:.5}°; Schlyter sun max {:.4}° rms {:.4}°; Schlyter moon max {:.4}° rms {:.4}°",
+        worst[0],
+        (sum_sq[0] / n).sqrt(),
+        worst[1],
+        (sum_sq[1] / n).sqrt(),
+        worst[2],
+        (sum_sq[2] / n).sqrt()
+    );
+    println!(
+        "sun distance max {:.2e} AU; moon distance max {:.2e} rel; moon k max {:.4}",
+        worst[3], worst[4], worst[5]
+    );
+    assert!(rows.len() == 240);
+    assert!(worst[0] < SPA_SUN_DEG, "SPA sun {}", worst[0]);
+    assert!(worst[1] < SCHLYTER_SUN_DEG, "Schlyter sun {}", worst[1]);
+    assert!(worst[2] < SCHLYTER_MOON_DEG, "Schlyter moon {}", worst[2]);
+    assert!(worst[3] < SUN_AU, "sun distance {}", worst[3]);
+    assert!(worst[4] < MOON_KM_REL, "moon distance {}", worst[4]);
+    assert!(worst[5] < MOON_K, "moon fraction {}", worst[5]);
+}
+
+#[test]
+fn meeus_examples_25b_and_47a() {
+    // Meeus Example 47.a, 1992-04-12 0h TD (ΔT ≈ 59 s, so 23:59:01 UT the day before): geometric
+    // λ = 133.162655°, β = −3.229126°, Δ = 368409.7 km (ELP-2000/82 truncated). Schlyter's
+    // claim is 1–2′: tolerances 0.05° in λ, β and 0.1 % (370 km) in distance.
+    let t = parse_utc("1992-04-11T23:59:01Z").unwrap();
+    let m = moon_ecliptic(schlyter_day(t));
+    println!(
+        "Moon 47.a: dλ = {:.4}°, dβ = {:.4}°, dΔ = {:.1} km",
+        m.longitude.to_degrees() - 133.162655,
+        m.latitude.to_degrees() + 3.229126,
+        m.distance_earth_radii * 6378.137 - 368409.7
+    );
+    assert!((m.longitude.to_degrees() - 133.162655).abs() < 0.05);
+    assert!((m.latitude.to_degrees() + 3.229126).abs() < 0.05);
+    assert!((m.distance_earth_radii * 6378.137 / 368409.7 - 1.0).abs() < 1e-3);
+
+    // Meeus Example 25.b, 1992-10-13 0h TD (ΔT ≈ 59 s): geometric longitude of date
+    // 199°54′26.45″ = 199.907347° (VSOP87), R = 0.99760775 AU. Schlyter: 0.01°, 2×10⁻⁴ AU.
+    let t = parse_utc("1992-10-12T23:59:01Z").unwrap();
+    let s = sun_orbit(schlyter_day(t));
+    println!(
+        "Sun 25.b: dλ = {:.5}°, dR = {:.2e} AU",
+        s.longitude.to_degrees() - 199.907347,
+        s.distance_au - 0.99760775
+    );
+    assert!((s.longitude.to_degrees() - 199.907347).abs() < 0.01);
+    assert!((s.distance_au - 0.99760775).abs() < 2e-4);
+}

@@ -1,0 +1,90 @@
+//! `cargo bench -p brine-sky --bench sky`: per-call costs of the sky a renderer pays per pixel,
+//! and the constructor costs, measured side by side in one process (medians of repeated runs).
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use brine_sky::{CloudParams, MoonParams, PreethamSky, Sky, SkyParams, Sun};
+use glam::DVec3;
+
+fn dir(elevation_deg: f64, azimuth_deg: f64) -> DVec3 {
+    let (e, a) = (elevation_deg.to_radians(), azimuth_deg.to_radians());
+    DVec3::new(a.sin() * e.cos(), e.sin(), -a.cos() * e.cos())
+}
+
+/// Median time per call (ns) of `f` over `reps` repetitions of `n` calls.
+fn median_ns(n: usize, reps: usize, mut f: impl FnMut(usize) -> DVec3) -> f64 {
+    let mut times: Vec<f64> = (0..reps)
+        .map(|_| {
+            let t = Instant::now();
+            let mut acc = DVec3::ZERO;
+            for i in 0..n {
+                acc += f(i);
+            }
+            black_box(acc);
+            t.elapsed().as_nanos() as f64 / n as f64
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[reps / 2]
+}
+
+fn main() {
+    let views: Vec<DVec3> = (0..4096).map(|i| dir((i % 90) as f64, (i * 37 % 360) as f64)).collect();
+    let v = |i: usize| views[i % views.len()];
+    let moon = MoonParams { direction: dir(30.0, 150.0), phase_angle: 0.3, distance_km: 384_400.0 };
+    let day = Sky::new(&SkyParams::new(3.0, dir(30.0, 180.0))).unwrap();
+    let dusk = Sky::new(&SkyParams::new(3.0, dir(-5.0, 270.0))).unwrap();
+    let night = Sky::new(&SkyParams { moon: Some(moon), ..SkyParams::new(3.0, dir(-30.0, 0.0)) }).unwrap();
+    let cloudy =
+        Sky::new(&SkyParams { clouds: Some(CloudParams::default()), ..SkyParams::new(3.0, dir(30.0, 180.0)) }).unwrap();
+    let preetham = PreethamSky::new(3.0, dir(30.0, 180.0)).unwrap();
+
+    let n = 200_000;
+    let base = median_ns(n, 9, |i| preetham.radiance_rgb(v(i)));
+    let rows = [
+        ("PreethamSky::radiance_rgb (day)", base),
+        ("Sky::radiance_rgb, day", median_ns(n, 9, |i| day.radiance_rgb(v(i)))),
+        ("Sky::radiance_rgb, twilight (sun −5°)", median_ns(n, 9, |i| dusk.radiance_rgb(v(i)))),
+        ("Sky::radiance_rgb, night with Moon", median_ns(n, 9, |i| night.radiance_rgb(v(i)))),
+        ("Sky::radiance_rgb, day with clouds", median_ns(n, 9, |i| cloudy.radiance_rgb(v(i)))),
+        ("Sky::background_rgb, night (discs)", median_ns(n, 9, |i| night.background_rgb(v(i)))),
+        (
+            "Sky::aerial_perspective",
+            median_ns(n, 9, |i| {
+                let ap = day.aerial_perspective(5.0, v(i) * DVec3::new(1.0, -0.2, 1.0), 1000.0 + i as f64);
+                ap.extinction + ap.inscatter
+            }),
+        ),
+    ];
+    println!("{:<44} {:>12} {:>10}", "per call", "median (ns)", "× Preetham");
+    for (name, t) in rows {
+        println!("{name:<44} {t:>12.1} {:>10.2}", t / base);
+    }
+    let ctor = |f: &dyn Fn() -> DVec3| median_ns(1, 15, |_| f()) / 1e3;
+    let rows = [
+        (
+            "Sun::through_atmosphere (spectral)",
+            ctor(&|| Sun::through_atmosphere(3.0, dir(30.0, 0.0)).unwrap().radiance_rgb()),
+        ),
+        (
+            "Sky::new, day",
+            ctor(&|| Sky::new(&SkyParams::new(3.0, dir(30.0, 0.0))).unwrap().horizontal_irradiance_rgb()),
+        ),
+        (
+            "Sky::new, twilight (twilight table)",
+            ctor(&|| Sky::new(&SkyParams::new(3.0, dir(-5.0, 0.0))).unwrap().horizontal_irradiance_rgb()),
+        ),
+        (
+            "Sky::new, day with clouds",
+            ctor(&|| {
+                let p = SkyParams { clouds: Some(CloudParams::default()), ..SkyParams::new(3.0, dir(30.0, 0.0)) };
+                Sky::new(&p).unwrap().horizontal_irradiance_rgb()
+            }),
+        ),
+    ];
+    println!("\n{:<44} {:>12}", "constructor", "median (µs)");
+    for (name, t) in rows {
+        println!("{name:<44} {t:>12.1}");
+    }
+}

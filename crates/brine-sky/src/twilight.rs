@@ -1,0 +1,263 @@
+//! Twilight: how the sky darkens and changes colour as the sun sinks below the horizon.
+//!
+//! Preetham's model stops at the horizon. Below it, Brine keeps Preetham's angular distribution
+//! of the sky at sunset (the sun at elevation 0 in its azimuth) and multiplies it, per channel and
+//! per view direction, by the ratio of two *single-scattering* radiances computed in a spherical
+//! atmosphere: with the sun at its true depression, and with the sun on the horizon,
+//!
+//! `L(v, e) = L_Preetham(v; e = 0) ⊙ L_ss(v; e)/L_ss(v; 0)`.
+//!
+//! The single-scattering model (Nishita et al. 1993 style) has Rayleigh and Mie scattering with
+//! the scale heights and sea-level coefficients of Hoffman & Preetham ([`crate::Scattering`]),
+//! Chappuis ozone absorption (Iqbal's `k_o`, 0.35 cm in a layer from 10 to 40 km peaking at
+//! 25 km), the Earth's shadow (a point sun), and no refraction. The ratio is exactly 1 at
+//! sunset, so the sky is continuous at `e = 0`. It is tabulated in the constructor over view
+//! elevation and azimuth relative to the sun and interpolated bilinearly.
+//!
+//! **Approximation.** Single scattering is computed; the higher orders, which dominate the real
+//! sky below about −6° and light the Earth's shadow, are approximated by an isotropic term equal
+//! to half the dome-averaged single scattering (a crude second order, not a radiative-transfer
+//! solution). See the docs page for the comparison with measured twilight illuminances; the
+//! night-sky glow takes over in deep twilight.
+
+use std::f64::consts::PI;
+
+use glam::DVec3;
+
+use crate::aerial::{
+    HAZE_ASYMMETRY, MIE_SCALE_HEIGHT_M, RAYLEIGH_SCALE_HEIGHT_M, henyey_greenstein, mie_beta, rayleigh_beta,
+    rayleigh_phase,
+};
+use crate::cie::cmf;
+use crate::solar_tables::{K_OZONE, interpolate, solar_radiance};
+use crate::sun::OZONE_CM;
+use crate::{MIN_COS_VIEW, xyz_to_linear_srgb};
+
+/// Mean Earth radius (m).
+pub const EARTH_RADIUS_M: f64 = 6_371_000.0;
+/// Top of the model atmosphere (m above the ground).
+pub const ATMOSPHERE_TOP_M: f64 = 100_000.0;
+/// Ozone layer: tent profile from 10 to 40 km, peak at 25 km (m).
+const OZONE_LAYER_M: (f64, f64, f64) = (10_000.0, 25_000.0, 40_000.0);
+
+/// View elevations of the table: `a₀ + (90° − a₀)(i/(N − 1))²`, dense near the horizon, from
+/// `a₀ = asin(0.01)` (0.573°, Preetham's lowest view, [`crate::MIN_COS_VIEW`]).
+const N_ELEVATION: usize = 16;
+/// Relative azimuths of the table: `0..180°` uniform (the sky is symmetric about the sun's
+/// vertical plane).
+const N_AZIMUTH: usize = 19;
+/// Samples along a view ray and along a sun ray.
+const N_VIEW: usize = 40;
+const N_SUN: usize = 32;
+/// Isotropic higher-order scattering as a fraction of the dome-averaged single scattering.
+const MULTIPLE_SCATTERING: f64 = 0.5;
+/// Wavelengths of the spectral single scattering: 400, 420, …, 700 nm.
+const N_LAMBDA: usize = 16;
+
+/// Per-wavelength constants of the single-scattering integral.
+struct Spectral {
+    rayleigh: [f64; N_LAMBDA],
+    mie: [f64; N_LAMBDA],
+    ozone: [f64; N_LAMBDA],
+    /// `L₀(λ) [x̄, ȳ, z̄](λ) Δλ`: weights from spectral radiance to XYZ.
+    to_xyz: [DVec3; N_LAMBDA],
+}
+
+impl Spectral {
+    fn new(turbidity: f64) -> Self {
+        // Preetham's K(λ) between his three knots (0.666 at 450, 0.678 at 550, 0.686 at 680 nm).
+        let k =
+            |l: f64| interpolate(&[(380.0, 0.666), (450.0, 0.666), (550.0, 0.678), (680.0, 0.686), (780.0, 0.686)], l);
+        let lambda = |i: usize| 400.0 + 20.0 * i as f64;
+        Self {
+            rayleigh: std::array::from_fn(|i| rayleigh_beta(lambda(i))),
+            mie: std::array::from_fn(|i| mie_beta(lambda(i), turbidity, k(lambda(i)))),
+            // τ_O = k_o (cm⁻¹) · l (cm) · ∫ρ_O dt, the last factor the layer's relative air mass.
+            ozone: std::array::from_fn(|i| interpolate(&K_OZONE, lambda(i)) * OZONE_CM),
+            to_xyz: std::array::from_fn(|i| DVec3::from(cmf(lambda(i))) * solar_radiance(lambda(i)) * 20.0),
+        }
+    }
+}
+
+/// Densities relative to sea level `(ρ_R, ρ_M, ρ_O)` at height `h` (m); `ρ_O` is per metre of
+/// the layer's vertical column (its vertical integral is 1).
+fn densities(h: f64) -> DVec3 {
+    let (lo, peak, hi) = OZONE_LAYER_M;
+    let ozone = if h <= lo || h >= hi {
+        0.0
+    } else if h < peak {
+        (h - lo) / (peak - lo)
+    } else {
+        (hi - h) / (hi - peak)
+    };
+    DVec3::new((-h / RAYLEIGH_SCALE_HEIGHT_M).exp(), (-h / MIE_SCALE_HEIGHT_M).exp(), ozone * 2.0 / (hi - lo))
+}
+
+/// Distance along the ray `p + t d` to the sphere of radius `r` (the far root), or `None`.
+fn exit_distance(p: DVec3, d: DVec3, r: f64) -> Option<f64> {
+    let b = p.dot(d);
+    let c = p.length_squared() - r * r;
+    let disc = b * b - c;
+    (disc >= 0.0).then(|| -b + disc.sqrt())
+}
+
+/// Whether the ray `p + t d`, `t > 0`, hits the ground sphere.
+fn hits_ground(p: DVec3, d: DVec3) -> bool {
+    let b = p.dot(d);
+    if b >= 0.0 {
+        return false;
+    }
+    let c = p.length_squared() - EARTH_RADIUS_M * EARTH_RADIUS_M;
+    b * b - c > 0.0
+}
+
+/// Column amounts `(∫ρ_R, ∫ρ_M, ∫ρ_O)` (m) from `p` to the top of the atmosphere along `d`.
+fn column_to_top(p: DVec3, d: DVec3) -> DVec3 {
+    let top = EARTH_RADIUS_M + ATMOSPHERE_TOP_M;
+    let Some(t_exit) = exit_distance(p, d, top) else { return DVec3::ZERO };
+    let dt = t_exit / N_SUN as f64;
+    (0..N_SUN).map(|k| densities((p + d * ((k as f64 + 0.5) * dt)).length() - EARTH_RADIUS_M)).sum::<DVec3>() * dt
+}
+
+/// Single-scattered radiance seen from the ground in direction `view`, sun in direction `sun`
+/// (extraterrestrial solar spectrum, unit irradiance scale), integrated to linear sRGB.
+fn single_scattering(view: DVec3, sun: DVec3, sp: &Spectral) -> DVec3 {
+    let origin = DVec3::new(0.0, EARTH_RADIUS_M + 1.0, 0.0);
+    let top = EARTH_RADIUS_M + ATMOSPHERE_TOP_M;
+    let t_end = exit_distance(origin, view, top).unwrap_or(0.0);
+    let dt = t_end / N_VIEW as f64;
+    let cos_theta = view.dot(sun);
+    let phase_r = rayleigh_phase(cos_theta);
+    let phase_m = henyey_greenstein(cos_theta, HAZE_ASYMMETRY);
+    let mut view_col = DVec3::ZERO;
+    let mut l = [0.0; N_LAMBDA];
+    for k in 0..N_VIEW {
+        let p = origin + view * ((k as f64 + 0.5) * dt);
+        let rho = densities(p.length() - EARTH_RADIUS_M);
+        let col_here = view_col + rho * (0.5 * dt);
+        view_col += rho * dt;
+        if hits_ground(p, sun) {
+            continue;
+        }
+        let col = col_here + column_to_top(p, sun);
+        for (i, li) in l.iter_mut().enumerate() {
+            let tau = sp.rayleigh[i] * col.x + sp.mie[i] * col.y + sp.ozone[i] * col.z;
+            *li += (sp.rayleigh[i] * rho.x * phase_r + sp.mie[i] * rho.y * phase_m) * (-tau).exp() * dt;
+        }
+    }
+    let xyz: DVec3 = (0..N_LAMBDA).map(|i| sp.to_xyz[i] * l[i]).sum();
+    // Saturated reds toward the setting sun fall outside the sRGB gamut (negative G, B): floor
+    // each channel at 10⁻³ of the largest so that the ratios stay defined.
+    let rgb = xyz_to_linear_srgb(xyz);
+    rgb.max(DVec3::splat(1e-3 * rgb.max_element().max(0.0)))
+}
+
+/// The tabulated ratio `L_ss(v; e)/L_ss(v; 0)` for one sun depression.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TwilightRatio {
+    table: Vec<DVec3>,
+}
+
+impl TwilightRatio {
+    /// Tabulates the ratio for a sun at elevation `sun_elevation` (rad, ≤ 0) and turbidity `T`
+    /// (16 × 19 view directions, two single-scattering integrals each, 16 wavelengths from 400
+    /// to 700 nm weighted by the solar spectrum and the CIE matching functions, then linear sRGB).
+    ///
+    /// # Arguments
+    /// - `sun_elevation`: `e` (rad), `[−π/2, 0]` (values above 0 are treated as 0).
+    /// - `turbidity`: `T`, `[1.7, 10]`.
+    ///
+    /// # References
+    /// Nishita T. et al. 1993, "Display of the Earth taking into account atmospheric scattering",
+    /// SIGGRAPH 175–182 (single scattering in a spherical atmosphere).
+    pub fn new(sun_elevation: f64, turbidity: f64) -> Self {
+        let sp = Spectral::new(turbidity);
+        let e = sun_elevation.min(0.0);
+        let sun_at = |e: f64| DVec3::new(e.cos(), e.sin(), 0.0);
+        let (mut num, mut den) = (Vec::with_capacity(N_ELEVATION * N_AZIMUTH), Vec::new());
+        for i in 0..N_ELEVATION {
+            let a = elevation_of(i);
+            for j in 0..N_AZIMUTH {
+                let phi = PI * j as f64 / (N_AZIMUTH - 1) as f64;
+                let v = DVec3::new(a.cos() * phi.cos(), a.sin(), a.cos() * phi.sin());
+                num.push(single_scattering(v, sun_at(e), &sp));
+                den.push(single_scattering(v, sun_at(0.0), &sp));
+            }
+        }
+        // Higher orders, approximated as isotropic: a fraction of the dome's mean single-scattered
+        // radiance added everywhere (it lights the Earth's shadow, which single scattering leaves
+        // black).
+        let (ms_num, ms_den) = (dome_mean(&num) * MULTIPLE_SCATTERING, dome_mean(&den) * MULTIPLE_SCATTERING);
+        let table = num.iter().zip(&den).map(|(n, d)| ((*n + ms_num) / (*d + ms_den)).min(DVec3::ONE)).collect();
+        Self { table }
+    }
+
+    /// The ratio for a view at elevation `a` (rad; below 0.573° treated as 0.573°) and azimuth `φ` from the
+    /// sun's vertical plane (rad, any; folded to `[0, π]`), bilinear in the table.
+    pub fn ratio(&self, elevation: f64, relative_azimuth: f64) -> DVec3 {
+        let a0 = MIN_COS_VIEW.asin();
+        let a = elevation.clamp(a0, PI / 2.0);
+        let u = (((a - a0) / (PI / 2.0 - a0)).sqrt() * (N_ELEVATION - 1) as f64).min((N_ELEVATION - 1) as f64);
+        let phi = relative_azimuth.rem_euclid(2.0 * PI);
+        let phi = if phi > PI { 2.0 * PI - phi } else { phi };
+        let w = (phi / PI * (N_AZIMUTH - 1) as f64).clamp(0.0, (N_AZIMUTH - 1) as f64);
+        let (i, j) = ((u as usize).min(N_ELEVATION - 2), (w as usize).min(N_AZIMUTH - 2));
+        let (fu, fw) = (u - i as f64, w - j as f64);
+        let at = |i: usize, j: usize| self.table[i * N_AZIMUTH + j];
+        let top = at(i, j).lerp(at(i, j + 1), fw);
+        let bottom = at(i + 1, j).lerp(at(i + 1, j + 1), fw);
+        top.lerp(bottom, fu)
+    }
+}
+
+/// Mean of a table over the dome, each cell weighted by its solid angle `cos a Δa Δφ`.
+fn dome_mean(cells: &[DVec3]) -> DVec3 {
+    let (mut sum, mut weight) = (DVec3::ZERO, 0.0);
+    for i in 0..N_ELEVATION {
+        let lo = if i == 0 { elevation_of(0) } else { 0.5 * (elevation_of(i - 1) + elevation_of(i)) };
+        let hi = if i + 1 == N_ELEVATION { PI / 2.0 } else { 0.5 * (elevation_of(i) + elevation_of(i + 1)) };
+        let w = hi.sin() - lo.sin();
+        for j in 0..N_AZIMUTH {
+            let wj = if j == 0 || j + 1 == N_AZIMUTH { 0.5 } else { 1.0 };
+            sum += cells[i * N_AZIMUTH + j] * (w * wj);
+            weight += w * wj;
+        }
+    }
+    sum / weight
+}
+
+/// Elevation (rad) of table row `i`.
+fn elevation_of(i: usize) -> f64 {
+    let s = i as f64 / (N_ELEVATION - 1) as f64;
+    let a0 = MIN_COS_VIEW.asin();
+    a0 + (PI / 2.0 - a0) * s * s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ratio_is_one_at_sunset_and_falls_with_depression() {
+        let at0 = TwilightRatio::new(0.0, 3.0);
+        for (a, p) in [(0.0, 0.0), (0.3, 1.0), (1.5, 3.0)] {
+            let r = at0.ratio(a, p);
+            assert!((r - DVec3::ONE).abs().max_element() < 1e-12, "{r:?}");
+        }
+        let mut last = DVec3::ONE;
+        for e in [-2.0f64, -4.0, -6.0, -9.0, -12.0] {
+            let r = TwilightRatio::new(e.to_radians(), 3.0).ratio(1.2, 2.0);
+            assert!(r.max_element() < last.max_element(), "{e}: {r:?}");
+            assert!(r.min_element() >= 0.0 && r.is_finite());
+            last = r;
+        }
+    }
+
+    #[test]
+    fn zenith_turns_blue_in_twilight() {
+        // The Chappuis band absorbs green and red light along the long, high sun paths: the
+        // twilight zenith loses less blue than red (Hulburt 1953, JOSA 43:113).
+        let r = TwilightRatio::new(-4f64.to_radians(), 3.0).ratio(PI / 2.0, 0.0);
+        assert!(r.z > r.x, "{r:?}");
+    }
+}

@@ -1,0 +1,118 @@
+//! Property tests of brine-sky: bounds, symmetry and normalisation over the documented domain.
+
+use brine_sky::{CloudParams, MoonParams, PreethamSky, Scattering, Sky, SkyParams};
+use glam::{DVec2, DVec3};
+use proptest::prelude::*;
+
+fn dir(elevation_deg: f64, azimuth_deg: f64) -> DVec3 {
+    let (e, a) = (elevation_deg.to_radians(), azimuth_deg.to_radians());
+    DVec3::new(a.sin() * e.cos(), e.sin(), -a.cos() * e.cos())
+}
+
+/// Mirror of `v` across the vertical plane containing the sun direction `s`.
+fn mirror(v: DVec3, s: DVec3) -> DVec3 {
+    let n = DVec3::new(-s.z, 0.0, s.x).normalize();
+    v - n * (2.0 * v.dot(n))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn preetham_radiance_is_finite_and_non_negative(
+        t in 2.0f64..=10.0, sun_e in 0.0f64..=90.0, sun_a in 0.0f64..360.0,
+        view_e in -10.0f64..=90.0, view_a in 0.0f64..360.0,
+    ) {
+        let sky = PreethamSky::new(t, dir(sun_e, sun_a)).unwrap();
+        let l = sky.radiance_rgb(dir(view_e, view_a));
+        prop_assert!(l.is_finite() && l.min_element() >= 0.0, "{l:?}");
+        let xyz = sky.xyz(dir(view_e, view_a));
+        prop_assert!(xyz.is_finite() && xyz.y >= 0.0);
+    }
+
+    #[test]
+    fn perez_is_normalised_at_the_zenith(t in 1.7f64..=10.0, sun_e in 0.0f64..=90.0) {
+        // Y(zenith) = Y_z F(0, θ_s)/F(0, θ_s) = Y_z, likewise x and y.
+        let sky = PreethamSky::new(t, dir(sun_e, 30.0)).unwrap();
+        let theta_s = (90.0 - sun_e).to_radians();
+        let (y, x, yy) = sky.yxy(DVec3::Y);
+        let (xz, yz) = brine_sky::zenith_chromaticity_xy(t, theta_s);
+        prop_assert!((y / brine_sky::zenith_luminance(t, theta_s) - 1.0).abs() < 1e-12);
+        prop_assert!((x - xz).abs() < 1e-12 && (yy - yz).abs() < 1e-12);
+    }
+
+    #[test]
+    fn symmetric_about_the_solar_meridian(
+        t in 2.0f64..=10.0, sun_e in 0.0f64..=90.0, sun_a in 0.0f64..360.0,
+        view_e in 0.0f64..=90.0, view_a in 0.0f64..360.0,
+    ) {
+        let s = dir(sun_e.min(89.9), sun_a);
+        let sky = PreethamSky::new(t, s).unwrap();
+        let v = dir(view_e, view_a);
+        let (a, b) = (sky.radiance_rgb(v), sky.radiance_rgb(mirror(v, s)));
+        prop_assert!(((a - b).abs()).max_element() <= 1e-9 * a.max_element().max(1e-12), "{a:?} {b:?}");
+    }
+
+    #[test]
+    fn aerial_perspective_bounds(
+        t in 1.7f64..=10.0, h in 0.0f64..5000.0, view_e in -90.0f64..=90.0, view_a in 0.0f64..360.0,
+        s in 0.0f64..2e5, sun_e in -90.0f64..=90.0,
+    ) {
+        let sc = Scattering::new(t);
+        let d = dir(view_e, view_a);
+        // Segments stay above the sea (y ≥ 0), as in a scene.
+        let s = if d.y < 0.0 { s.min(h / -d.y) } else { s };
+        let lights = [(dir(sun_e, 120.0), DVec3::new(90.0, 95.0, 100.0))];
+        let ap = sc.aerial_perspective(h, d, s, &lights, DVec3::splat(2.0));
+        prop_assert!(ap.extinction.min_element() > 0.0 && ap.extinction.max_element() <= 1.0, "{:?}", ap.extinction);
+        prop_assert!(ap.inscatter.is_finite() && ap.inscatter.min_element() >= 0.0);
+        // Longer segments transmit less: the first half transmits at least as much as the whole.
+        let half = sc.aerial_perspective(h, d, s * 0.5, &lights, DVec3::splat(2.0));
+        prop_assert!((ap.extinction - half.extinction).max_element() <= 0.0);
+    }
+}
+
+proptest! {
+    // Each case below the horizon tabulates the twilight ratio (about 50 ms unoptimised).
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    #[test]
+    fn sky_is_finite_for_every_sun_elevation(
+        t in 1.7f64..=10.0, sun_e in -90.0f64..=90.0, sun_a in 0.0f64..360.0,
+        moon_e in -90.0f64..=90.0, phase in 0.0f64..=std::f64::consts::PI, cover in 0.0f64..=1.0,
+        time in 0.0f64..1e4,
+    ) {
+        let moon = MoonParams { direction: dir(moon_e, 77.0), phase_angle: phase, distance_km: 384_400.0 };
+        let clouds = CloudParams { cover, wind_m_s: DVec2::new(5.0, -3.0), ..CloudParams::default() };
+        let params = SkyParams { moon: Some(moon), clouds: Some(clouds), time_s: time, ..SkyParams::new(t, dir(sun_e, sun_a)) };
+        let sky = Sky::new(&params).unwrap();
+        for (e, a) in [(90.0, 0.0), (30.0, sun_a), (1.0, sun_a + 180.0), (-20.0, 10.0), (45.0, 77.0), (moon_e, 77.0)] {
+            let v = dir(e, a);
+            let l = sky.background_rgb(v);
+            prop_assert!(l.is_finite() && l.min_element() >= 0.0, "{e} {a}: {l:?}");
+            let ap = sky.aerial_perspective(2.0, v, 3000.0);
+            prop_assert!(ap.inscatter.is_finite() && ap.inscatter.min_element() >= 0.0);
+            prop_assert!(ap.extinction.min_element() > 0.0 && ap.extinction.max_element() <= 1.0);
+        }
+        let (sun, moon) = (sky.sun(), sky.moon().unwrap());
+        for d in [sun, moon] {
+            prop_assert!(d.irradiance_rgb.is_finite() && d.irradiance_rgb.min_element() >= 0.0);
+            prop_assert!((0.0..=1.0).contains(&d.visible_fraction));
+        }
+        if sun_e < -0.3 {
+            prop_assert!(sun.irradiance_rgb == DVec3::ZERO, "a set sun gives no light");
+        }
+        prop_assert!(sky.horizontal_irradiance_rgb().min_element() > 0.0);
+    }
+
+    #[test]
+    fn twilight_is_symmetric_and_darkens(sun_e in -17.0f64..-0.5, sun_a in 0.0f64..360.0, view_e in 0.0f64..=90.0, view_a in 0.0f64..360.0) {
+        let s = dir(sun_e, sun_a);
+        let sky = Sky::new(&SkyParams::new(3.0, s)).unwrap();
+        let v = dir(view_e, view_a);
+        let (a, b) = (sky.radiance_rgb(v), sky.radiance_rgb(mirror(v, s)));
+        prop_assert!(((a - b).abs()).max_element() <= 1e-6 * a.max_element(), "{a:?} {b:?}");
+        let deeper = Sky::new(&SkyParams::new(3.0, dir(sun_e - 1.0, sun_a))).unwrap();
+        prop_assert!(deeper.radiance_rgb(v).y <= a.y * (1.0 + 1e-9), "darker as the sun sinks");
+    }
+}

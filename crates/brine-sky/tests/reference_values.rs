@@ -1,0 +1,37 @@
+//! brine-sky against the equation sheet's oracles (`tests/data/sheet_oracles.csv`, see its header)
+//! and published daylight figures.
+
+use brine_sky::{
+    PerezCoefficients, henyey_greenstein, mie_beta, perez, rayleigh_beta, rayleigh_phase, zenith_chromaticity_xy,
+    zenith_luminance,
+};
+
+#[test]
+fn sheet_oracles() {
+    let text = include_str!("data/sheet_oracles.csv");
+    let mut n = 0;
+    for line in text.lines().filter(|l| !l.starts_with('#') && !l.starts_with("kind")) {
+        let f: Vec<&str> = line.split(',').collect();
+        let num = |i: usize| f[i].parse::<f64>().unwrap_or(f64::NAN);
+        let (t, ts) = (num(1), num(2).to_radians());
+        let got = match f[0] {
+            "zenith_Y" => zenith_luminance(t, ts),
+            "zenith_x" => zenith_chromaticity_xy(t, ts).0,
+            "zenith_y" => zenith_chromaticity_xy(t, ts).1,
+            "perez_ratio_Y" => {
+                let k = PerezCoefficients::luminance(t);
+                perez(num(3).to_radians().cos(), num(4).to_radians(), &k) / perez(1.0, ts, &k)
+            }
+            "beta_R" => rayleigh_beta(num(5)),
+            "beta_M" => mie_beta(num(5), t, 0.678),
+            "phase_R" => rayleigh_phase(0.0),
+            "phase_iso" => henyey_greenstein(0.3, 0.0),
+            other => panic!("unknown oracle {other}"),
+        };
+        let (want, tol) = (num(6), num(7));
+        let err = if f[8] == "rel" { (got / want - 1.0).abs() } else { (got - want).abs() };
+        assert!(err < tol, "{line}: got {got}");
+        n += 1;
+    }
+    assert_eq!(n, 13);
+}
