@@ -164,25 +164,31 @@ fn radiance(world: &World, field: &TrochoidField<'_>, d: DVec3, stats: &mut Trac
         let n = field.normal(hit.point.x, hit.point.z);
         let aov = Aov { depth: hit.t as f32, normal: n.as_vec3().to_array(), ..Aov::default() };
         let l = shade_surface(world, hit.point, d, n, &world.variance_unresolved, stats);
-        return Sample { radiance: l, aov };
+        return Sample { radiance: aerial(world, d, hit.t, l), aov };
     }
     if d.y < 0.0 {
         // Beyond the trace distance: the mean plane, with every wave's slopes in the BRDF.
         let t = world.camera.position.y / -d.y;
         let aov = Aov { depth: t as f32, normal: [0.0, 1.0, 0.0], ..Aov::default() };
         let l = shade_surface(world, origin + t * d, d, DVec3::Y, &world.variance_total, stats);
-        return Sample { radiance: l, aov };
+        return Sample { radiance: aerial(world, d, t, l), aov };
     }
     Sample { radiance: sky_radiance(world, d), aov: Aov { depth: f32::INFINITY, ..Aov::default() } }
 }
 
-/// Sky along `d`, with the sun disc.
-fn sky_radiance(world: &World, d: DVec3) -> DVec3 {
-    let mut l = world.sky.radiance_rgb(d);
-    if d.dot(world.sun.direction()) >= world.sun.cos_half_angle() {
-        l += world.sun.radiance_rgb();
+/// Aerial perspective of the segment from the eye along `d` over `t` metres:
+/// `L = L₀ F_ex + L_in` (Hoffman & Preetham 2002, brine-sky).
+fn aerial(world: &World, d: DVec3, t: f64, l0: DVec3) -> DVec3 {
+    if !world.aerial_perspective {
+        return l0;
     }
-    l
+    let ap = world.sky.aerial_perspective(world.camera.position.y.max(0.0), d, t);
+    l0 * ap.extinction + ap.inscatter
+}
+
+/// Everything seen along `d` above the sea: sky, clouds, sun and moon discs.
+fn sky_radiance(world: &World, d: DVec3) -> DVec3 {
+    world.sky.background_rgb(d)
 }
 
 /// `F(p + (0, depth, 0))`: a component sum moved down by `depth` (the sea floor at `y = −depth + h`).
@@ -273,12 +279,16 @@ fn shade_surface(
     let x = (world.wind - world.wind.dot(n) * n).normalize_or(n.any_orthonormal_vector());
     let y = n.cross(x);
     let to_local = |a: DVec3| DVec3::new(a.dot(x), a.dot(y), a.dot(n));
-    let l = world.sun.direction();
-    let sun = if l.dot(n) > 0.0 {
-        world.sun.irradiance_rgb() * reflected_sun_radiance(to_local(v), to_local(l), variance, 1.0)
-    } else {
-        DVec3::ZERO
+    // Sun glint and moon glitter through the BRDF of the unresolved slopes.
+    let glint = |disc: &brine_sky::Disc| {
+        let l = disc.direction;
+        if l.dot(n) > 0.0 && disc.irradiance_rgb != DVec3::ZERO {
+            disc.irradiance_rgb * reflected_sun_radiance(to_local(v), to_local(l), variance, 1.0)
+        } else {
+            DVec3::ZERO
+        }
     };
+    let sun = glint(world.sky.sun()) + world.sky.moon().map_or(DVec3::ZERO, glint);
     let below = match refract(d, n, 1.0, WATER_IOR) {
         Some(t) => water_column_radiance(world, p, t, stats),
         None => DVec3::ZERO,

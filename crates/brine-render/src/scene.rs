@@ -26,6 +26,8 @@ pub struct SceneError {
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Scene {
+    /// Place and time: the sun and the moon from brine-ephem.
+    pub place: Option<PlaceConfig>,
     /// The camera.
     pub camera: CameraConfig,
     /// The sea.
@@ -40,6 +42,42 @@ pub struct Scene {
     pub phenomena: PhenomenaConfig,
     /// Animation timing.
     pub animation: AnimationConfig,
+    /// Seconds elapsed since `place.time_utc` (set per frame by animations, not in files).
+    #[serde(skip)]
+    pub elapsed_s: f64,
+}
+
+/// `[place]`: where and when; the sun and the moon follow from them.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlaceConfig {
+    /// Geodetic latitude (°, `[−90, 90]`, north positive).
+    pub latitude_deg: f64,
+    /// Longitude (°, `[−180, 180]`, east positive).
+    pub longitude_deg: f64,
+    /// UTC instant (RFC 3339, e.g. `2024-06-21T09:30:00Z`), 1800–2200.
+    pub time_utc: String,
+    /// Sun model: `spa` (NREL SPA, ±0.0003°) or `schlyter` (Schlyter's elements, ~0.01°).
+    #[serde(default)]
+    pub sun_model: SunModelKind,
+    /// Atmospheric refraction of the sun and moon near the horizon (standard air).
+    #[serde(default = "yes")]
+    pub refraction: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+/// Which sun-position model `[place]` uses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum SunModelKind {
+    /// NREL's Solar Position Algorithm.
+    #[default]
+    Spa,
+    /// Schlyter's simplified model (the one of Li Ying et al. 2018).
+    Schlyter,
 }
 
 /// `[water]`: the optical water type and the sea floor.
@@ -100,11 +138,15 @@ impl Default for FloorConfig {
 pub struct PhenomenaConfig {
     /// Glare of the eye (Spencer et al. 1995 point-spread function).
     pub glare: bool,
+    /// Aerial perspective between the eye and the sea (Hoffman & Preetham 2002).
+    pub aerial_perspective: bool,
+    /// The cloud layers of `[sky.clouds]`.
+    pub clouds: bool,
 }
 
 impl Default for PhenomenaConfig {
     fn default() -> Self {
-        Self { glare: true }
+        Self { glare: true, aerial_perspective: true, clouds: true }
     }
 }
 
@@ -206,21 +248,52 @@ impl Default for SeaConfig {
     }
 }
 
-/// `[sky]`: daylight.
+/// `[sky]`: atmosphere, sun (when there is no `[place]`) and clouds.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct SkyConfig {
     /// Atmospheric turbidity `T` (`[1.7, 10]`).
     pub turbidity: f64,
-    /// Sun elevation above the horizon (°, `[0, 90]`).
-    pub sun_elevation_deg: f64,
-    /// Sun azimuth as a compass bearing (°, 0 north, 90 east).
-    pub sun_azimuth_deg: f64,
+    /// Sun elevation (°, `[−90, 90]`); only without `[place]` (default 24°).
+    pub sun_elevation_deg: Option<f64>,
+    /// Sun azimuth as a compass bearing (°, 0 north, 90 east); only without `[place]` (default 115°).
+    pub sun_azimuth_deg: Option<f64>,
+    /// Cloud layers; a clear sky when absent.
+    pub clouds: Option<CloudConfig>,
 }
 
 impl Default for SkyConfig {
     fn default() -> Self {
-        Self { turbidity: 3.0, sun_elevation_deg: 24.0, sun_azimuth_deg: 115.0 }
+        Self { turbidity: 3.0, sun_elevation_deg: None, sun_azimuth_deg: None, clouds: None }
+    }
+}
+
+impl SkyConfig {
+    /// Sun elevation used without `[place]` (°).
+    pub const DEFAULT_SUN_ELEVATION_DEG: f64 = 24.0;
+    /// Sun azimuth used without `[place]` (°).
+    pub const DEFAULT_SUN_AZIMUTH_DEG: f64 = 115.0;
+}
+
+/// `[sky.clouds]`: procedural cloud layers after Chen et al. 2007 (brine-sky).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct CloudConfig {
+    /// Fraction of the sky covered (`[0, 1]`).
+    pub cover: f64,
+    /// Altitude of the cloud base (m, `(0, 20000]`).
+    pub altitude_m: f64,
+    /// Size of the largest cloud features (m, `[10, 10⁶]`).
+    pub scale_m: f64,
+    /// Wind carrying the clouds, `[east, south]` (m/s, each `[−100, 100]`).
+    pub wind_m_s: [f64; 2],
+    /// Seed of the cloud noise.
+    pub seed: u64,
+}
+
+impl Default for CloudConfig {
+    fn default() -> Self {
+        Self { cover: 0.4, altitude_m: 2000.0, scale_m: 4000.0, wind_m_s: [8.0, 0.0], seed: 1 }
     }
 }
 
@@ -230,13 +303,13 @@ impl Default for SkyConfig {
 pub struct OutputConfig {
     /// Output file; `.png` (8-bit sRGB, tone-mapped) or `.exr` (linear f32 radiance).
     pub path: PathBuf,
-    /// Exposure as EV₁₀₀ (`[−10, 30]`): the luminance mapped to white before the tone curve is
-    /// `1.2 · 2^EV` cd m⁻² (saturation-based exposure, ISO 12232). With `auto_exposure`, an offset
-    /// added to the automatic value.
-    pub exposure_ev: f64,
-    /// Expose from the horizontal illuminance of sun and sky (`EV = log₂(E/2.5 lx)`, the
-    /// incident-light meter calibration `C = 250`) plus `exposure_ev`.
-    pub auto_exposure: bool,
+    /// Manual exposure as EV₁₀₀ (`[−10, 30]`): the luminance mapped to white before the tone
+    /// curve is `1.2 · 2^EV` cd m⁻² (saturation-based exposure, ISO 12232). Automatic when absent.
+    pub exposure_ev: Option<f64>,
+    /// Exposure compensation of the automatic exposure (EV, `[−10, 10]`; positive is brighter):
+    /// `EV = log₂(E/2.5 lx) − compensation` with `E` the horizontal illuminance of sun, moon and
+    /// sky (incident-light meter calibration `C = 250`).
+    pub exposure_compensation_ev: f64,
     /// Write the output variables (depth, normal, foam, whitecap, evaluations) as extra EXR
     /// channels (`.exr` only).
     pub aovs: bool,
@@ -244,7 +317,7 @@ pub struct OutputConfig {
 
 impl Default for OutputConfig {
     fn default() -> Self {
-        Self { path: PathBuf::from("ocean.png"), exposure_ev: 15.0, auto_exposure: false, aovs: false }
+        Self { path: PathBuf::from("ocean.png"), exposure_ev: None, exposure_compensation_ev: -0.5, aovs: false }
     }
 }
 
@@ -365,16 +438,53 @@ impl Scene {
         )?;
         let k = &self.sky;
         range("sky", "turbidity", k.turbidity, (1.7..=10.0).contains(&k.turbidity), "[1.7, 10]")?;
-        range(
-            "sky",
-            "sun_elevation_deg",
-            k.sun_elevation_deg,
-            (0.0..=90.0).contains(&k.sun_elevation_deg),
-            "[0, 90]° (twilight and night arrive with issue #4)",
-        )?;
-        range("sky", "sun_azimuth_deg", k.sun_azimuth_deg, true, "a finite angle in degrees")?;
+        if let Some(e) = k.sun_elevation_deg {
+            range("sky", "sun_elevation_deg", e, (-90.0..=90.0).contains(&e), "[-90, 90]°")?;
+        }
+        if let Some(a) = k.sun_azimuth_deg {
+            range("sky", "sun_azimuth_deg", a, true, "a finite angle in degrees")?;
+        }
+        if let Some(p) = &self.place {
+            if k.sun_elevation_deg.is_some() || k.sun_azimuth_deg.is_some() {
+                let key = if k.sun_elevation_deg.is_some() { "sun_elevation_deg" } else { "sun_azimuth_deg" };
+                return Err((
+                    "sky",
+                    key,
+                    format!("sky.{key} cannot be combined with [place], which sets the sun: give one or the other"),
+                ));
+            }
+            range("place", "latitude_deg", p.latitude_deg, (-90.0..=90.0).contains(&p.latitude_deg), "[-90, 90]°")?;
+            range(
+                "place",
+                "longitude_deg",
+                p.longitude_deg,
+                (-180.0..=180.0).contains(&p.longitude_deg),
+                "[-180, 180]°",
+            )?;
+            brine_ephem::parse_utc(&p.time_utc)
+                .and_then(brine_ephem::check_range)
+                .map_err(|e| ("place", "time_utc", format!("place.time_utc: {e}")))?;
+        }
+        if let Some(c) = &k.clouds {
+            range("sky.clouds", "cover", c.cover, (0.0..=1.0).contains(&c.cover), "[0, 1]")?;
+            range(
+                "sky.clouds",
+                "altitude_m",
+                c.altitude_m,
+                c.altitude_m > 0.0 && c.altitude_m <= 20_000.0,
+                "(0, 20000] m",
+            )?;
+            range("sky.clouds", "scale_m", c.scale_m, (10.0..=1e6).contains(&c.scale_m), "[10, 10⁶] m")?;
+            for v in c.wind_m_s {
+                range("sky.clouds", "wind_m_s", v, (-100.0..=100.0).contains(&v), "each in [-100, 100] m/s")?;
+            }
+        }
         let o = &self.output;
-        range("output", "exposure_ev", o.exposure_ev, (-10.0..=30.0).contains(&o.exposure_ev), "[-10, 30] EV")?;
+        if let Some(ev) = o.exposure_ev {
+            range("output", "exposure_ev", ev, (-10.0..=30.0).contains(&ev), "[-10, 30] EV")?;
+        }
+        let c = o.exposure_compensation_ev;
+        range("output", "exposure_compensation_ev", c, (-10.0..=10.0).contains(&c), "[-10, 10] EV")?;
         let w = &self.water;
         if w.water_type.is_some() && w.chlorophyll_mg_m3.is_some() {
             return Err((
@@ -485,8 +595,29 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_embedded_scene_is_the_default_scene() {
-        assert_eq!(Scene::default_scene(), Scene::default());
+    fn the_embedded_scene_sets_a_place_and_the_rest_is_default() {
+        let mut s = Scene::default_scene();
+        assert!(s.place.is_some());
+        s.place = None;
+        assert_eq!(s, Scene::default());
+    }
+
+    #[test]
+    fn sun_angles_and_place_exclude_each_other() {
+        let e = Scene::from_toml_str(
+            "[place]\nlatitude_deg = 43.0\nlongitude_deg = 5.0\ntime_utc = \"2024-06-21T12:00:00Z\"\n[sky]\nsun_elevation_deg = 20.0\n",
+            "s.toml",
+        )
+        .unwrap_err();
+        assert!(e.message.contains("cannot be combined with [place]"), "{e}");
+        assert_eq!(e.line, Some(6));
+        let e = Scene::from_toml_str(
+            "[place]\nlatitude_deg = 43.0\nlongitude_deg = 5.0\ntime_utc = \"yesterday\"\n",
+            "s.toml",
+        )
+        .unwrap_err();
+        assert!(e.message.starts_with("place.time_utc:"), "{e}");
+        assert_eq!(e.line, Some(4));
     }
 
     #[test]

@@ -1,20 +1,21 @@
 //! A scene turned into models: the fitted sea, the sky and sun, the slope statistics.
 
+use brine_ephem::{Atmosphere, Observer, Options as EphemOptions, SunModel, moon_position, parse_utc, sun_position};
 use brine_optics::{
     DarlesWater, JerlovType, RgbBands, SlopeVariance, WATER_IOR, WaterBody, WaterRgb, fresnel_dielectric,
     hemispherical_fresnel_reflectance,
 };
-use brine_sky::{PreethamSky, Sun};
+use brine_sky::{CloudParams, MoonParams, Sky, SkyParams};
 use brine_trace::{LipschitzSum, Method, TraceOptions};
 use brine_waves::{
     CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, Trochoid, TrochoidSet, TrochoidSum, fit_trochoids,
 };
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 use crate::camera::{Camera, direction_from_bearing};
-use crate::scene::{FloorConfig, Scene, SpectrumKind};
+use crate::scene::{FloorConfig, Scene, SkyConfig, SpectrumKind, SunModelKind};
 
 /// Why a scene could not be turned into models.
 #[derive(Debug, thiserror::Error)]
@@ -32,10 +33,10 @@ pub struct World {
     pub sea: TrochoidSum,
     /// Time of the frame (s).
     pub time: f64,
-    /// The daylight sky.
-    pub sky: PreethamSky,
-    /// The sun.
-    pub sun: Sun,
+    /// Sky, sun, moon, clouds and aerial perspective, for any sun elevation.
+    pub sky: Sky,
+    /// Aerial perspective between the eye and the sea is on.
+    pub aerial_perspective: bool,
     /// Unit horizontal wind direction (the BRDF's x axis).
     pub wind: DVec3,
     /// Slope variances of the waves not drawn as geometry (Cox–Munk total minus the fitted set).
@@ -58,13 +59,24 @@ pub struct World {
     pub exposure_ev: f64,
 }
 
-/// Automatic exposure from the horizontal illuminance `E` (lx): `EV₁₀₀ = log₂(E/2.5)`, the
-/// exposure an incident-light meter with calibration constant `C = 250 lx·s` sets at ISO 100.
+/// Illuminance below which the automatic exposure stops following the light fully (lx), about
+/// the end of civil twilight's brightest part.
+pub const NIGHT_ADAPTATION_LX: f64 = 1000.0;
+
+/// Automatic exposure from the horizontal illuminance `E` (lx).
+///
+/// Above [`NIGHT_ADAPTATION_LX`], `EV₁₀₀ = log₂(E/2.5)`: the exposure an incident-light meter with
+/// calibration constant `C = 250 lx·s` sets at ISO 100, so a sunny and an overcast sea look alike.
+/// Below it the exposure follows the light with a third of the slope,
+/// `EV₁₀₀ = log₂(E/2.5) + ⅓ log₂(E₀/E)`, so that twilight and night stay dark as the eye sees them
+/// (a full-moon sea is about 4 EV darker than a fully compensated exposure) — a stated rendering
+/// choice, not a model of the eye's adaptation.
 ///
 /// # References
-/// ISO 2720:1974 (incident-light meter calibration); Ray S. 2000, *The Manual of Photography*, §21.
+/// ISO 2720:1974 (incident-light meter calibration).
 pub fn auto_exposure_ev(illuminance_lx: f64) -> f64 {
-    (illuminance_lx.max(1e-6) / 2.5).log2()
+    let e = illuminance_lx.max(1e-6);
+    (e / 2.5).log2() + (NIGHT_ADAPTATION_LX / e).log2().max(0.0) / 3.0
 }
 
 /// A Lambertian sea floor `y = −depth + h(x, z)` shaped by a static trochoid set.
@@ -125,6 +137,38 @@ pub fn water_body_of(water_type: Option<&str>, chlorophyll_mg_m3: Option<f64>) -
     })
 }
 
+/// The sun's direction and distance (AU) and the moon of a scene: from brine-ephem for `[place]`
+/// (the moon included), else from `[sky]`'s angles (no moon).
+fn sun_and_moon(scene: &Scene) -> Result<(DVec3, f64, Option<MoonParams>), WorldError> {
+    let err = |e: &dyn std::fmt::Display| WorldError::Model(e.to_string());
+    let Some(p) = &scene.place else {
+        let k = &scene.sky;
+        let dir = direction_from_bearing(
+            k.sun_azimuth_deg.unwrap_or(SkyConfig::DEFAULT_SUN_AZIMUTH_DEG),
+            k.sun_elevation_deg.unwrap_or(SkyConfig::DEFAULT_SUN_ELEVATION_DEG),
+        );
+        return Ok((dir, 1.0, None));
+    };
+    let t0 = parse_utc(&p.time_utc).map_err(|e| err(&e))?;
+    let t = t0
+        .checked_add(jiff::SignedDuration::from_secs_f64(scene.elapsed_s))
+        .map_err(|e| WorldError::Model(format!("place.time_utc + {} s: {e}", scene.elapsed_s)))?;
+    let observer = Observer::from_degrees(p.latitude_deg, p.longitude_deg, 0.0).map_err(|e| err(&e))?;
+    let options = EphemOptions { refraction: p.refraction.then(Atmosphere::standard), delta_t_s: None };
+    let model = match p.sun_model {
+        SunModelKind::Spa => SunModel::Spa,
+        SunModelKind::Schlyter => SunModel::Schlyter,
+    };
+    let sun = sun_position(t, &observer, model, &options).map_err(|e| err(&e))?;
+    let moon = moon_position(t, &observer, &options).map_err(|e| err(&e))?;
+    let moon = MoonParams {
+        direction: DVec3::from_array(moon.horizontal().direction()),
+        phase_angle: moon.phase_angle,
+        distance_km: moon.topocentric_distance_km,
+    };
+    Ok((DVec3::from_array(sun.horizontal().direction()), sun.distance_au, Some(moon)))
+}
+
 /// Wind speed 12.5 m above the sea from `U₁₀` by the neutral logarithmic profile with roughness
 /// length `z₀ = 2×10⁻⁴ m`: `U₁₂.₅ = U₁₀ ln(12.5/z₀)/ln(10/z₀)` (factor 1.0206).
 fn u12_5_from_u10(u10: f64) -> f64 {
@@ -157,9 +201,26 @@ impl World {
         let sea = TrochoidSum::new(&set);
 
         let k = &scene.sky;
-        let sun_dir = direction_from_bearing(k.sun_azimuth_deg, k.sun_elevation_deg);
-        let sky = PreethamSky::new(k.turbidity, sun_dir).map_err(|e| model(&e))?;
-        let sun = Sun::through_atmosphere(k.turbidity, sun_dir).map_err(|e| model(&e))?;
+        let (sun_dir, sun_distance_au, moon) = sun_and_moon(scene)?;
+        let clouds = match (&k.clouds, scene.phenomena.clouds) {
+            (Some(c), true) => Some(CloudParams {
+                cover: c.cover,
+                altitude_m: c.altitude_m,
+                scale_m: c.scale_m,
+                wind_m_s: DVec2::from_array(c.wind_m_s),
+                seed: c.seed,
+            }),
+            _ => None,
+        };
+        let sky = Sky::new(&SkyParams {
+            turbidity: k.turbidity,
+            sun_direction: sun_dir,
+            sun_distance_au,
+            moon,
+            clouds,
+            time_s: s.time_s,
+        })
+        .map_err(|e| model(&e))?;
 
         let variance_total =
             SlopeVariance::cox_munk_clean(u12_5_from_u10(s.wind_speed_m_s).min(60.0)).map_err(|e| model(&e))?;
@@ -172,24 +233,28 @@ impl World {
         }
         let variance_unresolved = variance_total.minus(rx, ry);
 
-        // Downwelling irradiance just below a flat surface: the sun's share through Fresnel, the
-        // sky's through the hemispherical Fresnel reflectance of a uniform sky (0.066).
+        // Downwelling irradiance just below a flat surface: the sun's and the moon's share
+        // through Fresnel, the sky's through the hemispherical Fresnel reflectance of a uniform
+        // sky (0.066).
         let sky_e = sky.horizontal_irradiance_rgb();
-        let cos_sun = sun_dir.y.max(0.0);
-        let e_below = sun.irradiance_rgb() * cos_sun * (1.0 - fresnel_dielectric(cos_sun, 1.0, WATER_IOR))
-            + sky_e * (1.0 - hemispherical_fresnel_reflectance(1.0, WATER_IOR));
+        let disc_e = |d: &brine_sky::Disc| {
+            let c = d.direction.y.max(0.0);
+            d.irradiance_rgb * c * (1.0 - fresnel_dielectric(c, 1.0, WATER_IOR))
+        };
+        let discs_e = disc_e(sky.sun()) + sky.moon().map_or(DVec3::ZERO, disc_e);
+        let e_below = discs_e + sky_e * (1.0 - hemispherical_fresnel_reflectance(1.0, WATER_IOR));
+        let e_horizontal = sky_e.y
+            + sky.sun().irradiance_rgb.y * sky.sun().direction.y.max(0.0)
+            + sky.moon().map_or(0.0, |m| m.irradiance_rgb.y * m.direction.y.max(0.0));
         let body = water_body_of(scene.water.water_type.as_deref(), scene.water.chlorophyll_mg_m3)
             .map_err(WorldError::Model)?;
         let water = WaterRgb::new(&body, RgbBands::SrgbAverage);
         let floor = scene.water.floor.as_ref().map(Floor::new).transpose()?;
 
         let camera = Camera::from_config(&scene.camera);
-        let exposure_ev = if scene.output.auto_exposure {
-            let e_klx = sun.irradiance_rgb().y * cos_sun + sky_e.y;
-            (auto_exposure_ev(e_klx * 1000.0) + scene.output.exposure_ev).clamp(-10.0, 30.0)
-        } else {
-            scene.output.exposure_ev
-        };
+        let exposure_ev = scene.output.exposure_ev.unwrap_or_else(|| {
+            (auto_exposure_ev(e_horizontal * 1000.0) - scene.output.exposure_compensation_ev).clamp(-10.0, 30.0)
+        });
         let trace = TraceOptions {
             method: Method::Directional,
             t_max: s.trace_distance_m,
@@ -205,7 +270,7 @@ impl World {
             sea,
             time: s.time_s,
             sky,
-            sun,
+            aerial_perspective: scene.phenomena.aerial_perspective,
             wind,
             variance_unresolved,
             variance_total,
