@@ -53,21 +53,40 @@
 //! - Hasselmann D., Dunckel M., Ewing J. 1980, JPO 10 (directional spreading).
 
 mod dispersion;
+mod elfouhaily;
 mod error;
 mod fit;
+mod gerstner;
+mod gerstner_lipschitz;
 mod integrate;
+mod jonswap;
+mod lanes;
 mod lipschitz;
+mod phillips;
+mod pierson_moskowitz;
 mod set;
+mod sine;
+mod sine_lipschitz;
 mod spectrum;
 mod spreading;
 mod surface;
+mod tma;
 mod trochoid;
 
+pub use dispersion::{Dispersion, ELFOUHAILY_K_M, SEA_WATER_DENSITY, SEA_WATER_SURFACE_TENSION};
 pub use dispersion::{G, omega_deep_water, wavenumber_deep_water};
+pub use elfouhaily::{Elfouhaily, ElfouhailySpreading};
 pub use error::WaveError;
+pub use fit::{AmplitudeRule, FrequencyBin, SeaComponent, SteepnessLimit, fit_sea_state, frequency_bins};
 pub use fit::{FitOptions, FrequencyPartition, fit_trochoids};
+pub use gerstner::{GERSTNER_MAX_ITERATIONS, GERSTNER_TOLERANCE_M, GerstnerField, GerstnerSurface, Inversion};
+pub use jonswap::Jonswap;
+pub use phillips::Phillips;
 pub use set::TrochoidSet;
+pub use sine::{SineField, SineSet};
 pub use spectrum::{PiersonMoskowitz, Spectrum};
+pub use spreading::{CosineSquared, Directions, DonelanBanner};
 pub use spreading::{CosineTwoS, Spreading};
+pub use tma::{Tma, kitaigorodskii_depth_factor};
 pub use surface::{TrochoidField, TrochoidSum, WaveSurface};
 pub use trochoid::{MAX_STEEPNESS, Trochoid, solve_trochoid_phase};
