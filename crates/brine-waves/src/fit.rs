@@ -35,7 +35,11 @@ pub enum AmplitudeRule {
     #[default]
     BinVariance,
     /// `Aᵢ = √(2 S(ωᵢ) Δωᵢ)`, the paper's formula (midpoint rule): the same to second order in the
-    /// bin width, but it misses the curvature of a sharp peak when bins are wide.
+    /// bin width, but it misses the curvature of a sharp peak when bins are wide (the fitted
+    /// variance is within 1 % of `∫ S dω` from 30 log-spaced waves, but needs about 100 equally
+    /// spaced ones). Equal-energy bins ignore it: their waves sit at the energy median, where
+    /// `S(ωᵢ)Δωᵢ` overestimates the wide tail bins (by 25 % in all at 30 waves), so they always
+    /// carry `√(2 ∫S dω / n)`.
     Midpoint,
 }
 
@@ -382,12 +386,13 @@ fn fit_component(c: &SeaComponent<'_>, rng: &mut ChaCha8Rng) -> Result<Vec<RawWa
     }
     let dispersion = c.spectrum.dispersion();
     let amplified_from = o.high_frequency_start_factor * omega_p;
+    let rule = if o.partition == FrequencyPartition::EqualEnergy { AmplitudeRule::BinVariance } else { o.amplitude_rule };
     let mut raw = Vec::with_capacity(bins.len());
     for bin in &bins {
         let u_dir: f64 = rng.random();
         let u_phase: f64 = rng.random();
         let gain = if bin.omega >= amplified_from { o.high_frequency_gain } else { 1.0 };
-        let amplitude = gain * bin.amplitude(c.spectrum, o.amplitude_rule);
+        let amplitude = gain * bin.amplitude(c.spectrum, rule);
         let k = dispersion.wavenumber(bin.omega);
         raw.push(RawWave {
             amplitude,

@@ -99,8 +99,9 @@ impl Spectrum for Tma {
     }
 }
 
-/// The maximum of a unimodal `f` on `[a, b]` by golden-section search in `ln ω` to a relative
-/// width of 10⁻¹².
+/// The maximum of a unimodal `f` on `[a, b]` by golden-section search in `ln ω`, run to a bracket
+/// of 10⁻¹²; a smooth maximum is flat to second order, so the result is good to about
+/// `√ε ≈ 10⁻⁸` relative.
 fn argmax_log(f: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
     let inv_phi = 0.5 * (5f64.sqrt() - 1.0);
     let (mut lo, mut hi) = (a.ln(), b.ln());
