@@ -8,7 +8,7 @@ use crate::{TrochoidSet, WaveSurface};
 /// Absolute part of the inversion tolerance (m): the residual `|u + D(u) − x|` the Newton solve
 /// of [`GerstnerField::solve`] reaches. The relative part `10⁻¹⁴ (|x| + Σ Aᵢ)` covers rounding
 /// in far-away coordinates.
-pub const GERSTNER_TOLERANCE_M: f64 = 1e-10;
+pub const GERSTNER_TOLERANCE_M: f64 = 1e-12;
 
 /// Iteration cap of the inversion (3–6 iterations are usual; the property tests never reach it).
 pub const GERSTNER_MAX_ITERATIONS: usize = 64;
