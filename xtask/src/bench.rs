@@ -5,7 +5,11 @@
 //! Add an entry here when a crate adds a benchmark.
 
 /// `(name, what it measures, cargo arguments)`.
-const BENCHES: &[(&str, &str, &[&str])] = &[];
+const BENCHES: &[(&str, &str, &[&str])] = &[(
+    "waves",
+    "brine-waves: height at one point × N waves, scalar loop vs SIMD lanes (trochoid, sine), Gerstner inversion",
+    &["bench", "-p", "brine-waves", "--bench", "surface_eval"],
+)];
 
 /// Runs the named benchmarks (all when `names` is empty) or lists them.
 pub fn run(names: &[String], list: bool) -> Result<(), String> {

@@ -24,9 +24,10 @@ fn reduce(s: f64x4) -> f64x4 {
     s - f64x4::splat(TAU) * (s * f64x4::splat(1.0 / TAU)).round()
 }
 
-/// Halley steps on Kepler's equation `θ − Q sin θ = s` until every lane's step is below `10⁻¹³`
-/// (at most 8; 5 suffice at `Q = 0.99` from this start), kept inside the bracket `[s − Q, s + Q]`.
-/// Returns `(cos θ, sin θ)`.
+/// Halley steps on Kepler's equation `θ − Q sin θ = s`, kept inside the bracket `[s − Q, s + Q]`,
+/// until every lane's step is below `10⁻¹³` (at most 8; 5 suffice at `Q = 0.99` from this start).
+/// Returns `(cos θ, sin θ)`; the last step `δ` is applied to them to first order
+/// (`cos(θ − δ) = cos θ + δ sin θ + O(δ²)`, `δ² < 10⁻²⁶`), which saves one `sin_cos`.
 #[inline(always)]
 fn kepler(s: f64x4, q: f64x4) -> (f64x4, f64x4) {
     let one = f64x4::ONE;
@@ -38,10 +39,10 @@ fn kepler(s: f64x4, q: f64x4) -> (f64x4, f64x4) {
         let f = theta - q * sn - s;
         let fp = one - q * cs;
         let step = f / (fp - f64x4::splat(0.5) * f * q * sn / fp);
-        theta = (theta - step).max(lo).min(hi);
         if step.abs().simd_lt(f64x4::splat(1e-13)).all() {
-            break;
+            return (cs + step * sn, sn - step * cs);
         }
+        theta = (theta - step).max(lo).min(hi);
     }
     let (sn, cs) = theta.sin_cos();
     (cs, sn)
@@ -69,6 +70,35 @@ pub(crate) fn trochoid_height(kx: &[f64], kz: &[f64], off: &[f64], amp: &[f64], 
     h
 }
 
+/// `cos x` for `x ∈ [−π, π]`: with `y = |x|` folded onto `z ∈ [0, π/2]` (`cos y = −cos(π − y)`),
+/// the Taylor series of `cos z` to `z²⁰` (remainder below `(π/2)²²/22! = 1.8×10⁻¹⁷`), in Horner
+/// form. Cheaper than a full `sin_cos` when only the cosine is needed.
+#[inline(always)]
+fn cos_reduced(x: f64x4) -> f64x4 {
+    const PI_F: f64 = std::f64::consts::PI;
+    let y = x.abs();
+    let flip = y.simd_gt(f64x4::splat(0.5 * PI_F));
+    let z = flip.select(f64x4::splat(PI_F) - y, y);
+    let z2 = z * z;
+    // (−1)ⁿ/(2n)! for n = 10 … 1.
+    let mut c = f64x4::splat(1.0 / 2_432_902_008_176_640_000.0);
+    for coef in [
+        -1.0 / 6_402_373_705_728_000.0,
+        1.0 / 20_922_789_888_000.0,
+        -1.0 / 87_178_291_200.0,
+        1.0 / 479_001_600.0,
+        -1.0 / 3_628_800.0,
+        1.0 / 40_320.0,
+        -1.0 / 720.0,
+        1.0 / 24.0,
+        -0.5,
+        1.0,
+    ] {
+        c = c * z2 + f64x4::splat(coef);
+    }
+    flip.select(-c, c)
+}
+
 /// `Σᵢ Aᵢ cos(kxᵢ x + kzᵢ z + offᵢ)`: the sine-set height.
 #[inline]
 pub(crate) fn sine_height(kx: &[f64], kz: &[f64], off: &[f64], amp: &[f64], x: f64, z: f64) -> f64 {
@@ -79,8 +109,7 @@ pub(crate) fn sine_height(kx: &[f64], kz: &[f64], off: &[f64], amp: &[f64], x: f
     let mut i = 0;
     while i < full {
         let s = reduce(load(kx, i) * xv + load(kz, i) * zv + load(off, i));
-        let (_, c) = s.sin_cos();
-        acc += load(amp, i) * c;
+        acc += load(amp, i) * cos_reduced(s);
         i += 4;
     }
     let mut h = acc.reduce_add();
@@ -93,6 +122,16 @@ pub(crate) fn sine_height(kx: &[f64], kz: &[f64], off: &[f64], amp: &[f64], x: f
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn cos_reduced_is_accurate_on_the_reduced_range() {
+        for j in -5000..=5000 {
+            let x = j as f64 * std::f64::consts::PI / 5000.0;
+            let got = cos_reduced(f64x4::splat(x)).to_array()[0];
+            // Series remainder 1.8e-17 plus a few roundings of terms below 1.
+            assert!((got - x.cos()).abs() < 4e-16, "x = {x}: {got} vs {}", x.cos());
+        }
+    }
 
     #[test]
     fn kepler_lanes_agree_with_the_scalar_solver() {
