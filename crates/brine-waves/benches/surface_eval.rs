@@ -6,7 +6,9 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use brine_waves::{CosineTwoS, FitOptions, GerstnerSurface, PiersonMoskowitz, SineSet, Spectrum, TrochoidSum, fit_trochoids};
+use brine_waves::{
+    CosineTwoS, FitOptions, GerstnerSurface, PiersonMoskowitz, SineSet, Spectrum, TrochoidSum, fit_trochoids,
+};
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 
 /// Wave counts of the paper's tables (30–50) and the mission's 100–200.
@@ -84,7 +86,10 @@ fn bench(c: &mut Criterion) {
 }
 
 fn config() -> Criterion {
-    Criterion::default().sample_size(40).warm_up_time(Duration::from_millis(500)).measurement_time(Duration::from_secs(2))
+    Criterion::default()
+        .sample_size(40)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(2))
 }
 
 criterion_group! { name = benches; config = config(); targets = bench }

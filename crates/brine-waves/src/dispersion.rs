@@ -103,7 +103,8 @@ impl Dispersion {
             (0.0..=1.0).contains(&surface_tension_n_m),
             "[0, 1] N/m",
         )?;
-        let rho = check("density_kg_m3", density_kg_m3, (500.0..=2000.0).contains(&density_kg_m3), "[500, 2000] kg/m³")?;
+        let rho =
+            check("density_kg_m3", density_kg_m3, (500.0..=2000.0).contains(&density_kg_m3), "[500, 2000] kg/m³")?;
         Ok(Self { depth, capillarity: sigma / rho })
     }
 

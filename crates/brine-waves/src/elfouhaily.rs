@@ -241,9 +241,7 @@ impl Elfouhaily {
     /// - `k`: wavenumber (rad m⁻¹), `> 0`.
     pub fn spreading_delta(&self, k: f64) -> f64 {
         let c = phase_speed(k);
-        libm::tanh(
-            Self::A0 + Self::A_P * libm::pow(c / self.c_p, 2.5) + self.a_m * libm::pow(Self::C_M / c, 2.5),
-        )
+        libm::tanh(Self::A0 + Self::A_P * libm::pow(c / self.c_p, 2.5) + self.a_m * libm::pow(Self::C_M / c, 2.5))
     }
 
     /// Directional spectrum `Ψ(k, φ) = (1/(2π)) k⁻⁴ (B_l + B_h)(1 + Δ cos 2φ)` (m⁴), Eq. 67.

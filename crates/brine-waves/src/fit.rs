@@ -121,9 +121,7 @@ impl FrequencyBin {
     pub fn amplitude(&self, spectrum: &dyn Spectrum, rule: AmplitudeRule) -> f64 {
         match rule {
             AmplitudeRule::BinVariance => libm::sqrt(2.0 * self.variance),
-            AmplitudeRule::Midpoint => {
-                libm::sqrt(2.0 * spectrum.s_omega(self.omega) * (self.omega_hi - self.omega_lo))
-            }
+            AmplitudeRule::Midpoint => libm::sqrt(2.0 * spectrum.s_omega(self.omega) * (self.omega_hi - self.omega_lo)),
         }
     }
 }
@@ -365,12 +363,7 @@ fn check_options(o: &FitOptions, n_waves: usize) -> Result<(), WaveError> {
     check("wind_direction_rad", o.wind_direction, true, "finite")?;
     check("choppiness", o.choppiness, o.choppiness >= 0.0, "[0, ∞)")?;
     check("high_frequency_gain", o.high_frequency_gain, (1.0..=100.0).contains(&o.high_frequency_gain), "[1, 100]")?;
-    check(
-        "high_frequency_start_factor",
-        o.high_frequency_start_factor,
-        o.high_frequency_start_factor > 0.0,
-        "(0, ∞)",
-    )?;
+    check("high_frequency_start_factor", o.high_frequency_start_factor, o.high_frequency_start_factor > 0.0, "(0, ∞)")?;
     Ok(())
 }
 
@@ -386,7 +379,8 @@ fn fit_component(c: &SeaComponent<'_>, rng: &mut ChaCha8Rng) -> Result<Vec<RawWa
     }
     let dispersion = c.spectrum.dispersion();
     let amplified_from = o.high_frequency_start_factor * omega_p;
-    let rule = if o.partition == FrequencyPartition::EqualEnergy { AmplitudeRule::BinVariance } else { o.amplitude_rule };
+    let rule =
+        if o.partition == FrequencyPartition::EqualEnergy { AmplitudeRule::BinVariance } else { o.amplitude_rule };
     let mut raw = Vec::with_capacity(bins.len());
     for bin in &bins {
         let u_dir: f64 = rng.random();

@@ -10,7 +10,7 @@ use crate::{TrochoidSet, WaveSurface};
 /// in far-away coordinates.
 pub const GERSTNER_TOLERANCE_M: f64 = 1e-12;
 
-/// Iteration cap of the inversion (3–6 iterations are usual; the property tests never reach it).
+/// Iteration cap of the inversion (2–3 iterations are usual; the property tests never reach it).
 pub const GERSTNER_MAX_ITERATIONS: usize = 64;
 
 /// The sum of Gerstner waves with all horizontal displacements composed, as Bruneton et al. 2010,
@@ -204,27 +204,33 @@ impl GerstnerField<'_> {
     /// Damped Newton on `G(u) = u + D(u) − x` from `u₀ = x − D(x)`: each step `J⁻¹G` is halved
     /// until `|G|` decreases (at most 30 halvings; if none decreases, a fixed-point step
     /// `u ← x − D(u)`, a contraction of rate `Σ Qᵢ`, is taken instead). Stops when
-    /// `|G| ≤ GERSTNER_TOLERANCE_M + 10⁻¹⁴ (|x| + Σ Aᵢ)` or after
-    /// [`GERSTNER_MAX_ITERATIONS`].
+    /// `|G| ≤ GERSTNER_TOLERANCE_M + 10⁻¹⁴ (|x| + Σ Aᵢ)` or after [`GERSTNER_MAX_ITERATIONS`]
+    /// (2–3 iterations are usual for fitted sets with `Σ Q` up to 0.99).
     pub fn solve(&self, x: f64, z: f64) -> Inversion {
+        self.solve_state(x, z).0
+    }
+
+    /// [`GerstnerField::solve`], also returning the waves' state at the rest position.
+    fn solve_state(&self, x: f64, z: f64) -> (Inversion, State) {
         let target = DVec2::new(x, z);
         let tol = GERSTNER_TOLERANCE_M + 1e-14 * (target.length() + self.surface.total_amplitude);
         let mut u = target - self.displacement_at_rest(target);
-        let mut residual = f64::INFINITY;
+        let mut st = self.state(u);
+        let mut g = u + st.displacement - target;
+        let mut residual = g.length();
         for it in 0..GERSTNER_MAX_ITERATIONS {
-            let st = self.state(u);
-            let g = u + st.displacement - target;
-            residual = g.length();
             if residual <= tol {
-                return Inversion { rest: u, residual, iterations: it };
+                return (Inversion { rest: u, residual, iterations: it }, st);
             }
             let step = st.solve(g);
             let mut lambda = 1.0;
             let mut accepted = false;
             for _ in 0..30 {
                 let cand = u - lambda * step;
-                if (cand + self.displacement_at_rest(cand) - target).length() < residual {
-                    u = cand;
+                let cand_st = self.state(cand);
+                let cand_g = cand + cand_st.displacement - target;
+                if cand_g.length() < residual {
+                    (u, st, g, residual) = (cand, cand_st, cand_g, cand_g.length());
                     accepted = true;
                     break;
                 }
@@ -232,9 +238,12 @@ impl GerstnerField<'_> {
             }
             if !accepted {
                 u = target - st.displacement;
+                st = self.state(u);
+                g = u + st.displacement - target;
+                residual = g.length();
             }
         }
-        Inversion { rest: u, residual, iterations: GERSTNER_MAX_ITERATIONS }
+        (Inversion { rest: u, residual, iterations: GERSTNER_MAX_ITERATIONS }, st)
     }
 
     /// Rest position `u` (m) of the particle above `(x, z)` (see [`GerstnerField::solve`]).
@@ -243,7 +252,7 @@ impl GerstnerField<'_> {
     }
 
     fn state_at(&self, x: f64, z: f64) -> State {
-        self.state(self.rest_position(x, z))
+        self.solve_state(x, z).1
     }
 
     /// Height `h(x, z) = Σ Aᵢ cos φᵢ(u)` (m).

@@ -125,7 +125,12 @@ impl Spectrum for Jonswap {
             return 0.0;
         }
         let r = self.omega_p / omega;
-        self.alpha * G * G * libm::pow(omega, -5.0) * libm::exp(-1.25 * libm::pow(r, 4.0)) * self.peak_enhancement(omega)
+        self.alpha
+            * G
+            * G
+            * libm::pow(omega, -5.0)
+            * libm::exp(-1.25 * libm::pow(r, 4.0))
+            * self.peak_enhancement(omega)
     }
 
     /// `ω_p`, where both the Pierson–Moskowitz factor and `γ^r` peak.

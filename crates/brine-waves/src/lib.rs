@@ -129,6 +129,6 @@ pub use sine::{SineField, SineSet};
 pub use spectrum::{PiersonMoskowitz, Spectrum};
 pub use spreading::{CosineSquared, Directions, DonelanBanner};
 pub use spreading::{CosineTwoS, Spreading};
-pub use tma::{Tma, kitaigorodskii_depth_factor};
 pub use surface::{TrochoidField, TrochoidSum, WaveSurface};
+pub use tma::{Tma, kitaigorodskii_depth_factor};
 pub use trochoid::{MAX_STEEPNESS, Trochoid, solve_trochoid_phase};

@@ -34,12 +34,8 @@ impl PiersonMoskowitz {
     /// # Errors
     /// [`WaveError::OutOfRange`] for a wind outside `(0, 61.56]` m s⁻¹.
     pub fn from_u19_5(u19_5: f64) -> Result<Self, WaveError> {
-        let u19_5 = check(
-            "u19_5_m_s",
-            u19_5,
-            u19_5 > 0.0 && u19_5 <= Self::MAX_WIND * Self::U19_5_OVER_U10,
-            "(0, 61.56] m/s",
-        )?;
+        let u19_5 =
+            check("u19_5_m_s", u19_5, u19_5 > 0.0 && u19_5 <= Self::MAX_WIND * Self::U19_5_OVER_U10, "(0, 61.56] m/s")?;
         Ok(Self { u19_5 })
     }
 

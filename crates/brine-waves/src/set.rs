@@ -60,7 +60,7 @@ impl TrochoidSet {
     /// the drawn waves already resolve.
     ///
     /// # References
-    /// Equation sheet §11 ("trochoid set: σ_x² = Σ cos²θᵢ (1 − √(1 − kᵢ²Aᵢ²))…").
+    /// Equation sheet §11 (trochoid set: `σ_x² = Σ cos²θᵢ (1 − √(1 − kᵢ²Aᵢ²))`).
     pub fn slope_variances(&self, direction: f64) -> (f64, f64) {
         let (mut along, mut across) = (0.0, 0.0);
         for w in &self.waves {

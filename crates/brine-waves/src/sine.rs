@@ -31,10 +31,10 @@ impl Waves {
     /// `(h, ∇h)` of `Σ Aᵢ cos(kᵢ·x + offᵢ)`.
     fn height_gradient(&self, off: &[f64], x: f64, z: f64) -> (f64, DVec2) {
         let (mut h, mut g) = (0.0, DVec2::ZERO);
-        for i in 0..self.kx.len() {
-            let (sn, c) = (self.kx[i] * x + self.kz[i] * z + off[i]).sin_cos();
-            h += self.amplitude[i] * c;
-            g -= self.amplitude[i] * sn * DVec2::new(self.kx[i], self.kz[i]);
+        for (((&kx, &kz), &a), &o) in self.kx.iter().zip(&self.kz).zip(&self.amplitude).zip(off) {
+            let (sn, c) = (kx * x + kz * z + o).sin_cos();
+            h += a * c;
+            g -= a * sn * DVec2::new(kx, kz);
         }
         (h, g)
     }

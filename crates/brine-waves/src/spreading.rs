@@ -164,7 +164,7 @@ impl Spreading for CosineTwoS {
 /// Donelan M.A., Hamilton J., Hui W.H. 1985, "Directional spectra of wind-generated waves",
 /// Phil. Trans. R. Soc. A315:509–562; Banner M.L. 1990, "Equilibrium spectra of wind waves", JPO
 /// 20:966–984; Horvath C.J. 2015, "Empirical directional wave spectra for computer graphics",
-/// DigiPro, §5.
+/// `DigiPro`, §5.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DonelanBanner {
     omega_p: f64,

@@ -238,8 +238,14 @@ fn elfouhaily(dir: &Path) -> Result<(), String> {
     for u in WINDS {
         let e = Elfouhaily::fully_developed(u).map_err(err)?;
         let ks = || logspace(1e-3, 1e4, 600);
-        series.push((format!("B_l + B_h, U10 = {u} m/s"), ks().map(|k| (k, e.curvature_long(k) + e.curvature_short(k))).filter(|p| p.1 > 1e-4).collect()));
-        series.push((format!("B_h, U10 = {u} m/s"), ks().map(|k| (k, e.curvature_short(k))).filter(|p| p.1 > 1e-4).collect()));
+        series.push((
+            format!("B_l + B_h, U10 = {u} m/s"),
+            ks().map(|k| (k, e.curvature_long(k) + e.curvature_short(k))).filter(|p| p.1 > 1e-4).collect(),
+        ));
+        series.push((
+            format!("B_h, U10 = {u} m/s"),
+            ks().map(|k| (k, e.curvature_short(k))).filter(|p| p.1 > 1e-4).collect(),
+        ));
     }
     LineChart {
         title: "Elfouhaily et al. 1997: curvature spectrum B(k) = k³S(k), long + short waves",

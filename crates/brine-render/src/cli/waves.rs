@@ -105,10 +105,10 @@ pub struct SpectrumArgs {
     /// The spectrum.
     #[command(flatten)]
     pub spectrum: SpectrumParams,
-    /// Lowest angular frequency (rad/s), > 0 (default 0.3 ω_p).
+    /// Lowest angular frequency (rad/s), > 0 (default 0.3 ωₚ).
     #[arg(long)]
     pub omega_min: Option<f64>,
-    /// Highest angular frequency (rad/s), > omega-min (default 10 ω_p).
+    /// Highest angular frequency (rad/s), > omega-min (default 10 ωₚ).
     #[arg(long)]
     pub omega_max: Option<f64>,
     /// Number of samples, [2, 100000].
@@ -165,7 +165,7 @@ pub fn run_spectrum(args: &SpectrumArgs) -> Result<(), CliError> {
         println!("{doc}");
     } else {
         println!(
-            "# {} spectrum, U10 = {} m/s: ω_p = {:.5} rad/s, Hs = {:.4} m",
+            "# {} spectrum, U10 = {} m/s: ωₚ = {:.5} rad/s, Hs = {:.4} m",
             doc["model"].as_str().unwrap_or(""),
             args.spectrum.u10,
             doc["peak_omega_rad_s"].as_f64().unwrap_or(f64::NAN),
@@ -245,16 +245,16 @@ pub struct FitArgs {
     /// Cap on Σ Q, (0, 0.99]; steeper sets are scaled down together.
     #[arg(long, default_value_t = 0.9)]
     pub max_total_steepness: f64,
-    /// Lower band edge as a multiple of ω_p.
+    /// Lower band edge as a multiple of ωₚ.
     #[arg(long, default_value_t = 0.5)]
     pub omega_min_factor: f64,
-    /// Upper band edge as a multiple of ω_p.
+    /// Upper band edge as a multiple of ωₚ.
     #[arg(long, default_value_t = 12.0)]
     pub omega_max_factor: f64,
     /// Amplification of the high-frequency waves (Darles et al.'s capillary waves), [1, 100].
     #[arg(long, default_value_t = 1.0)]
     pub high_frequency_gain: f64,
-    /// Start of the amplified range as a multiple of ω_p.
+    /// Start of the amplified range as a multiple of ωₚ.
     #[arg(long, default_value_t = 6.0)]
     pub high_frequency_start_factor: f64,
     /// Print JSON instead of a table.
@@ -394,7 +394,19 @@ mod tests {
 
     #[test]
     fn spectrum_json_has_the_requested_samples() {
-        let a = spectrum_args(&["--model", "pm", "--u10", "10", "--omega-min", "0.2", "--omega-max", "3", "--samples", "5", "--json"]);
+        let a = spectrum_args(&[
+            "--model",
+            "pm",
+            "--u10",
+            "10",
+            "--omega-min",
+            "0.2",
+            "--omega-max",
+            "3",
+            "--samples",
+            "5",
+            "--json",
+        ]);
         let doc = spectrum_json(&a).unwrap();
         let omega = doc["omega"].as_array().unwrap();
         assert_eq!(omega.len(), 5);
@@ -439,7 +451,17 @@ mod tests {
 
     #[test]
     fn fit_json_lists_the_waves() {
-        let a = fit_args(&["--model", "jonswap", "--waves", "40", "--seed", "3", "--spreading", "donelan-banner", "--json"]);
+        let a = fit_args(&[
+            "--model",
+            "jonswap",
+            "--waves",
+            "40",
+            "--seed",
+            "3",
+            "--spreading",
+            "donelan-banner",
+            "--json",
+        ]);
         let doc = fit_json(&a).unwrap();
         let waves = doc["waves"].as_array().unwrap();
         assert_eq!(waves.len(), 40);
