@@ -9,7 +9,8 @@ use std::time::Duration;
 use brine_waves::{
     CosineTwoS, FitOptions, GerstnerSurface, PiersonMoskowitz, SineSet, Spectrum, TrochoidSum, fit_trochoids,
 };
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::measurement::WallTime;
+use criterion::{BenchmarkGroup, BenchmarkId, Criterion, criterion_group, criterion_main};
 
 /// Wave counts of the paper's tables (30–50) and the mission's 100–200.
 const COUNTS: [usize; 4] = [30, 50, 100, 200];
@@ -24,26 +25,25 @@ fn set(n: usize) -> brine_waves::TrochoidSet {
     fit_trochoids(&pm, &d, n, 7, &FitOptions::default()).unwrap()
 }
 
+/// Benchmarks `height(x, z)` at the cycled points as `group/variant/n`.
+fn bench_height(g: &mut BenchmarkGroup<'_, WallTime>, variant: &str, n: usize, height: impl Fn(f64, f64) -> f64) {
+    let mut i = 0;
+    g.bench_with_input(BenchmarkId::new(variant, n), &n, |b, _| {
+        b.iter(|| {
+            i = (i + 1) % POINTS.len();
+            let (x, z) = black_box(POINTS[i]);
+            height(x, z)
+        })
+    });
+}
+
 fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("trochoid_height");
     for n in COUNTS {
         let sum = TrochoidSum::new(&set(n));
         let f = sum.at_time(1.0);
-        let mut i = 0;
-        g.bench_with_input(BenchmarkId::new("scalar", n), &n, |b, _| {
-            b.iter(|| {
-                i = (i + 1) % POINTS.len();
-                let (x, z) = black_box(POINTS[i]);
-                f.height(x, z)
-            })
-        });
-        g.bench_with_input(BenchmarkId::new("lanes", n), &n, |b, _| {
-            b.iter(|| {
-                i = (i + 1) % POINTS.len();
-                let (x, z) = black_box(POINTS[i]);
-                f.height_lanes(x, z)
-            })
-        });
+        bench_height(&mut g, "scalar", n, |x, z| f.height(x, z));
+        bench_height(&mut g, "lanes", n, |x, z| f.height_lanes(x, z));
     }
     g.finish();
 
@@ -51,21 +51,8 @@ fn bench(c: &mut Criterion) {
     for n in COUNTS {
         let sine = SineSet::new(&set(n));
         let f = sine.at_time(1.0);
-        let mut i = 0;
-        g.bench_with_input(BenchmarkId::new("scalar", n), &n, |b, _| {
-            b.iter(|| {
-                i = (i + 1) % POINTS.len();
-                let (x, z) = black_box(POINTS[i]);
-                f.height(x, z)
-            })
-        });
-        g.bench_with_input(BenchmarkId::new("lanes", n), &n, |b, _| {
-            b.iter(|| {
-                i = (i + 1) % POINTS.len();
-                let (x, z) = black_box(POINTS[i]);
-                f.height_lanes(x, z)
-            })
-        });
+        bench_height(&mut g, "scalar", n, |x, z| f.height(x, z));
+        bench_height(&mut g, "lanes", n, |x, z| f.height_lanes(x, z));
     }
     g.finish();
 
@@ -73,14 +60,7 @@ fn bench(c: &mut Criterion) {
     for n in COUNTS {
         let gerstner = GerstnerSurface::new(&set(n)).unwrap();
         let f = gerstner.at_time(1.0);
-        let mut i = 0;
-        g.bench_with_input(BenchmarkId::new("scalar", n), &n, |b, _| {
-            b.iter(|| {
-                i = (i + 1) % POINTS.len();
-                let (x, z) = black_box(POINTS[i]);
-                f.height(x, z)
-            })
-        });
+        bench_height(&mut g, "scalar", n, |x, z| f.height(x, z));
     }
     g.finish();
 }

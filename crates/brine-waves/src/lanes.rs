@@ -48,9 +48,16 @@ fn kepler(s: f64x4, q: f64x4) -> (f64x4, f64x4) {
     (cs, sn)
 }
 
-/// `Σᵢ Aᵢ cos θᵢ` with `θᵢ − Qᵢ sin θᵢ = kxᵢ x + kzᵢ z + offᵢ`: the trochoid-sum height.
-#[inline]
-pub(crate) fn trochoid_height(kx: &[f64], kz: &[f64], off: &[f64], amp: &[f64], q: &[f64], x: f64, z: f64) -> f64 {
+/// `Σᵢ Aᵢ profile(sᵢ, i)` with the phase `sᵢ = kxᵢ x + kzᵢ z + offᵢ`: four waves per vector by
+/// `lane(s reduced to [−π, π], first index)`, the remainder one by one by `single(sᵢ, i)`.
+#[inline(always)]
+fn wave_sum(
+    (kx, kz, off, amp): (&[f64], &[f64], &[f64], &[f64]),
+    x: f64,
+    z: f64,
+    lane: impl Fn(f64x4, usize) -> f64x4,
+    single: impl Fn(f64, usize) -> f64,
+) -> f64 {
     let n = kx.len();
     let full = n - n % 4;
     let (xv, zv) = (f64x4::splat(x), f64x4::splat(z));
@@ -58,16 +65,20 @@ pub(crate) fn trochoid_height(kx: &[f64], kz: &[f64], off: &[f64], amp: &[f64], 
     let mut i = 0;
     while i < full {
         let s = reduce(load(kx, i) * xv + load(kz, i) * zv + load(off, i));
-        let (c, _) = kepler(s, load(q, i));
-        acc += load(amp, i) * c;
+        acc += load(amp, i) * lane(s, i);
         i += 4;
     }
     let mut h = acc.reduce_add();
     for j in full..n {
-        let (_, c, _) = solve_trochoid_phase(kx[j] * x + kz[j] * z + off[j], q[j]);
-        h += amp[j] * c;
+        h += amp[j] * single(kx[j] * x + kz[j] * z + off[j], j);
     }
     h
+}
+
+/// `Σᵢ Aᵢ cos θᵢ` with `θᵢ − Qᵢ sin θᵢ = kxᵢ x + kzᵢ z + offᵢ`: the trochoid-sum height.
+#[inline]
+pub(crate) fn trochoid_height(kx: &[f64], kz: &[f64], off: &[f64], amp: &[f64], q: &[f64], x: f64, z: f64) -> f64 {
+    wave_sum((kx, kz, off, amp), x, z, |s, i| kepler(s, load(q, i)).0, |s, j| solve_trochoid_phase(s, q[j]).1)
 }
 
 /// `cos x` for `x ∈ [−π, π]`: with `y = |x|` folded onto `z ∈ [0, π/2]` (`cos y = −cos(π − y)`),
@@ -102,21 +113,7 @@ fn cos_reduced(x: f64x4) -> f64x4 {
 /// `Σᵢ Aᵢ cos(kxᵢ x + kzᵢ z + offᵢ)`: the sine-set height.
 #[inline]
 pub(crate) fn sine_height(kx: &[f64], kz: &[f64], off: &[f64], amp: &[f64], x: f64, z: f64) -> f64 {
-    let n = kx.len();
-    let full = n - n % 4;
-    let (xv, zv) = (f64x4::splat(x), f64x4::splat(z));
-    let mut acc = f64x4::ZERO;
-    let mut i = 0;
-    while i < full {
-        let s = reduce(load(kx, i) * xv + load(kz, i) * zv + load(off, i));
-        acc += load(amp, i) * cos_reduced(s);
-        i += 4;
-    }
-    let mut h = acc.reduce_add();
-    for j in full..n {
-        h += amp[j] * (kx[j] * x + kz[j] * z + off[j]).cos();
-    }
-    h
+    wave_sum((kx, kz, off, amp), x, z, |s, _| cos_reduced(s), |s, _| s.cos())
 }
 
 #[cfg(test)]
