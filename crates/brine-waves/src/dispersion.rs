@@ -179,6 +179,9 @@ impl Dispersion {
     ///
     /// # Returns
     /// `c` (m s⁻¹).
+    ///
+    /// # References
+    /// Lamb 1932 §228, §267; Elfouhaily et al. 1997, Eq. 24.
     pub fn phase_speed(&self, k: f64) -> f64 {
         self.omega(k) / k
     }
@@ -194,6 +197,9 @@ impl Dispersion {
     ///
     /// # Returns
     /// `k` (rad m⁻¹); `0` for `ω ≤ 0`.
+    ///
+    /// # References
+    /// Inverse of the relation of Lamb 1932 §267; equation sheet §1.
     pub fn wavenumber(&self, omega: f64) -> f64 {
         if !(omega > 0.0) {
             return 0.0;

@@ -190,10 +190,16 @@ impl Elfouhaily {
         self.gamma
     }
 
-    /// Phase speed `c(k) = √((g/k)(1 + (k/k_m)²))` (m s⁻¹), Eq. 24.
+    /// Phase speed of capillary–gravity waves, `c(k) = √((g/k)(1 + (k/k_m)²))`.
     ///
     /// # Arguments
     /// - `k`: wavenumber (rad m⁻¹), `> 0`.
+    ///
+    /// # Returns
+    /// `c` (m s⁻¹).
+    ///
+    /// # References
+    /// Elfouhaily et al. 1997, Eq. 24.
     pub fn phase_speed(&self, k: f64) -> f64 {
         phase_speed(k)
     }
@@ -204,10 +210,16 @@ impl Elfouhaily {
         libm::exp(-1.25 * r * r)
     }
 
-    /// Long-wave curvature spectrum `B_l(k) = ½ α_p (c_p/c) F_p` (dimensionless), Eq. 31–32.
+    /// Long-wave curvature spectrum, `B_l(k) = ½ α_p (c_p/c) F_p`.
     ///
     /// # Arguments
     /// - `k`: wavenumber (rad m⁻¹), `> 0`.
+    ///
+    /// # Returns
+    /// `B_l` (dimensionless; `k³ S_l(k)`).
+    ///
+    /// # References
+    /// Elfouhaily et al. 1997, Eq. 31–34; equation sheet §4.
     pub fn curvature_long(&self, k: f64) -> f64 {
         if !(k > 0.0) {
             return 0.0;
@@ -219,11 +231,16 @@ impl Elfouhaily {
         0.5 * self.alpha_p * self.c_p / phase_speed(k) * f_p
     }
 
-    /// Short-wave curvature spectrum `B_h(k) = ½ α_m (c_m/c) F_m [× L_PM]` (dimensionless),
-    /// Eq. 40–41.
+    /// Short-wave curvature spectrum, `B_h(k) = ½ α_m (c_m/c) F_m [× L_PM]`.
     ///
     /// # Arguments
     /// - `k`: wavenumber (rad m⁻¹), `> 0`.
+    ///
+    /// # Returns
+    /// `B_h` (dimensionless).
+    ///
+    /// # References
+    /// Elfouhaily et al. 1997, Eq. 40–44; equation sheet §4 (the `L_PM` factor of the authors' code).
     pub fn curvature_short(&self, k: f64) -> f64 {
         if !(k > 0.0) {
             return 0.0;
@@ -234,11 +251,16 @@ impl Elfouhaily {
         if self.short_wave_peak_cutoff { b * self.l_pm(k) } else { b }
     }
 
-    /// Up-wind/cross-wind ratio `Δ(k) = tanh[a₀ + a_p(c/c_p)^{2.5} + a_m(c_m/c)^{2.5}]`
-    /// (dimensionless, in `(0, 1)`), Eq. 57.
+    /// Up-wind/cross-wind ratio of the spreading, `Δ(k) = tanh[a₀ + a_p(c/c_p)^{2.5} + a_m(c_m/c)^{2.5}]`.
     ///
     /// # Arguments
     /// - `k`: wavenumber (rad m⁻¹), `> 0`.
+    ///
+    /// # Returns
+    /// `Δ` (dimensionless, in `(0, 1)`).
+    ///
+    /// # References
+    /// Elfouhaily et al. 1997, Eq. 57, 59; equation sheet §4.
     pub fn spreading_delta(&self, k: f64) -> f64 {
         let c = phase_speed(k);
         libm::tanh(Self::A0 + Self::A_P * libm::pow(c / self.c_p, 2.5) + self.a_m * libm::pow(Self::C_M / c, 2.5))
@@ -265,6 +287,9 @@ impl Elfouhaily {
     ///
     /// # Arguments
     /// - `k_max`: largest wavenumber (rad m⁻¹), `> 0`.
+    ///
+    /// # Returns
+    /// `(σ_u², σ_c²)` (dimensionless), summing to [`Spectrum::mean_square_slope`].
     ///
     /// # References
     /// Elfouhaily et al. 1997, §6; equation sheet §11.

@@ -41,6 +41,12 @@ impl Jonswap {
 
     /// Dimensionless fetch `X̃ = gF/U₁₀²` at which the JONSWAP peak `22 X̃^{−1/3} g/U₁₀` equals the
     /// Pierson–Moskowitz peak `(4β/5)^{1/4} g/(1.026 U₁₀)`: `X̃ = (22 · 1.026/(4β/5)^{1/4})³ ≈ 1.70×10⁴`.
+    ///
+    /// # Returns
+    /// `X̃` (dimensionless).
+    ///
+    /// # References
+    /// Derived from Hasselmann et al. 1973 and Pierson & Moskowitz 1964 (equation sheet §4).
     pub fn fully_developed_fetch() -> f64 {
         let pm_peak = libm::pow(0.8 * crate::PiersonMoskowitz::BETA, 0.25) / crate::PiersonMoskowitz::U19_5_OVER_U10;
         libm::pow(22.0 / pm_peak, 3.0)
@@ -107,10 +113,16 @@ impl Jonswap {
         (self.sigma_a, self.sigma_b)
     }
 
-    /// Peak enhancement factor `γ^r`, `r = exp[−(ω − ω_p)²/(2σ²ω_p²)]` (dimensionless, in `[1, γ]`).
+    /// Peak enhancement factor, `γ^r` with `r = exp[−(ω − ω_p)²/(2σ²ω_p²)]`.
     ///
     /// # Arguments
     /// - `omega`: angular frequency (rad s⁻¹).
+    ///
+    /// # Returns
+    /// `γ^r` (dimensionless, in `[1, γ]`).
+    ///
+    /// # References
+    /// Hasselmann et al. 1973; equation sheet §4.
     pub fn peak_enhancement(&self, omega: f64) -> f64 {
         let sigma = if omega <= self.omega_p { self.sigma_a } else { self.sigma_b };
         let d = (omega - self.omega_p) / (sigma * self.omega_p);

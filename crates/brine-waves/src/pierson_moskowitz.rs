@@ -59,12 +59,24 @@ impl PiersonMoskowitz {
         G / self.u19_5
     }
 
-    /// Elevation variance `m₀ = ∫₀^∞ S dω = α g² / (4 β ω₀⁴)` (m²), in closed form.
+    /// Elevation variance in closed form, `m₀ = ∫₀^∞ S dω = α g² / (4 β ω₀⁴)`.
+    ///
+    /// # Returns
+    /// `m₀` (m²).
+    ///
+    /// # References
+    /// Pierson & Moskowitz 1964 (integral of their spectrum); equation sheet §4.
     pub fn m0(&self) -> f64 {
         Self::ALPHA * G * G / (4.0 * Self::BETA * libm::pow(self.omega_0(), 4.0))
     }
 
-    /// Significant wave height `H_s = 4 √m₀ = 4 √(α/(4β)) U₁₉.₅²/g ≈ 0.209 U₁₉.₅²/g` (m).
+    /// Significant wave height, `H_s = 4 √m₀ = 4 √(α/(4β)) U₁₉.₅²/g ≈ 0.209 U₁₉.₅²/g`.
+    ///
+    /// # Returns
+    /// `H_s` (m).
+    ///
+    /// # References
+    /// Pierson & Moskowitz 1964 (`0.21 U₁₉.₅²/g`); equation sheet §4.
     pub fn significant_wave_height(&self) -> f64 {
         4.0 * libm::sqrt(self.m0())
     }

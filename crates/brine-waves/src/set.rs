@@ -59,6 +59,12 @@ impl TrochoidSet {
     /// [`Trochoid::mean_square_slope`] (dimensionless). For the renderer's BRDF: the slope variance
     /// the drawn waves already resolve.
     ///
+    /// # Arguments
+    /// - `direction`: reference direction `θ_w` (rad) from +x toward +z.
+    ///
+    /// # Returns
+    /// `(σ_along², σ_across²)` (dimensionless).
+    ///
     /// # References
     /// Equation sheet §11 (trochoid set: `σ_x² = Σ cos²θᵢ (1 − √(1 − kᵢ²Aᵢ²))`).
     pub fn slope_variances(&self, direction: f64) -> (f64, f64) {

@@ -126,10 +126,16 @@ impl CosineTwoS {
         Ok(Self { omega_p: 1.0, s_below: s, s_above: s, p_below: 0.0, p_above: 0.0 })
     }
 
-    /// The spreading exponent `s(ω)` (dimensionless).
+    /// The spreading exponent, `s(ω) = s_a (ω/ω_p)^{p_a}` below the peak, `s_b (ω/ω_p)^{p_b}` above.
     ///
     /// # Arguments
     /// - `omega`: angular frequency (rad s⁻¹), `> 0`.
+    ///
+    /// # Returns
+    /// `s` (dimensionless).
+    ///
+    /// # References
+    /// Mitsuyasu et al. 1975; Hasselmann et al. 1980; equation sheet §1.
     pub fn exponent(&self, omega: f64) -> f64 {
         let r = omega / self.omega_p;
         if r < 1.0 { self.s_below * libm::pow(r, self.p_below) } else { self.s_above * libm::pow(r, self.p_above) }
@@ -180,10 +186,17 @@ impl DonelanBanner {
         Ok(Self { omega_p })
     }
 
-    /// The width parameter `β(ω)` (dimensionless).
+    /// The width parameter `β(ω)` of the sech² law (branches in the type's documentation).
     ///
     /// # Arguments
     /// - `omega`: angular frequency (rad s⁻¹), `> 0`.
+    ///
+    /// # Returns
+    /// `β` (dimensionless).
+    ///
+    /// # References
+    /// Donelan, Hamilton & Hui 1985 (the sech² fit); Banner 1990 (above `1.6 ω_p`); as collected by
+    /// Horvath 2015, §5.
     pub fn beta(&self, omega: f64) -> f64 {
         let r = omega / self.omega_p;
         if r < 0.56 {

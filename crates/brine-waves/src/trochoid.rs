@@ -149,8 +149,11 @@ impl Trochoid {
         -0.5 * self.steepness * self.amplitude
     }
 
-    /// Variance of the height over horizontal position, `A² (2 − Q²)/4` (m²); with `Q = kA` the
+    /// Variance of the height over horizontal position, `A² (2 − Q²)/4`; with `Q = kA` the
     /// equation sheet's `A² (2 − k²A²)/4`.
+    ///
+    /// # Returns
+    /// The variance (m²).
     ///
     /// # References
     /// Equation sheet §1 (derived).
@@ -158,7 +161,13 @@ impl Trochoid {
         0.25 * self.amplitude * self.amplitude * (2.0 - self.steepness * self.steepness)
     }
 
-    /// Height `Q·A` (m) at which the slope is steepest (`cos θ = Q`).
+    /// Height at which the slope is steepest, `Q·A` (where `cos θ = Q`).
+    ///
+    /// # Returns
+    /// The height (m) above the orbit centres.
+    ///
+    /// # References
+    /// Equation sheet §1 ("max |slope| … reached where cos φ = Q").
     pub fn max_slope_height(&self) -> f64 {
         self.steepness * self.amplitude
     }
