@@ -53,8 +53,8 @@ pub fn wavenumber_deep_water(omega: f64) -> f64 {
 /// write the capillary term as `ω² = g k (1 + (k/k_m)²)`, i.e. `σ/ρ = g/k_m²`.
 ///
 /// # References
-/// Lamb 1932, *Hydrodynamics* §228 and §267; Airy 1845; equation sheet §1 ("Parameters from
-/// dispersion"); Elfouhaily et al. 1997, JGR 102(C7), Eq. 24.
+/// Lamb H. 1932, *Hydrodynamics*, 6th ed., ch. IX (surface waves, capillarity); Airy 1845;
+/// equation sheet §1 ("Parameters from dispersion"); Elfouhaily et al. 1997, JGR 102(C7), Eq. 24.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Dispersion {
     /// Water depth `h` (m), `+∞` for deep water.
@@ -138,7 +138,7 @@ impl Dispersion {
     /// `ω` (rad s⁻¹); `0` for `k ≤ 0`.
     ///
     /// # References
-    /// Lamb 1932 §267; equation sheet §1.
+    /// Lamb 1932, ch. IX; equation sheet §1.
     pub fn omega(&self, k: f64) -> f64 {
         if !(k > 0.0) {
             return 0.0;
@@ -156,7 +156,7 @@ impl Dispersion {
     /// `dω/dk` (m s⁻¹); in deep water without capillarity `g/(2ω)`.
     ///
     /// # References
-    /// Derivative of [`Dispersion::omega`]; Lamb 1932 §236.
+    /// Derivative of [`Dispersion::omega`]; Lamb 1932, ch. IX (group velocity).
     pub fn group_velocity(&self, k: f64) -> f64 {
         if !(k > 0.0) {
             // Limit k → 0: √(g h) over finite depth, +∞ in deep water.
@@ -181,7 +181,7 @@ impl Dispersion {
     /// `c` (m s⁻¹).
     ///
     /// # References
-    /// Lamb 1932 §228, §267; Elfouhaily et al. 1997, Eq. 24.
+    /// Lamb 1932, ch. IX; Elfouhaily et al. 1997, Eq. 24.
     pub fn phase_speed(&self, k: f64) -> f64 {
         self.omega(k) / k
     }
@@ -199,7 +199,7 @@ impl Dispersion {
     /// `k` (rad m⁻¹); `0` for `ω ≤ 0`.
     ///
     /// # References
-    /// Inverse of the relation of Lamb 1932 §267; equation sheet §1.
+    /// Inverse of the relation of Lamb 1932, ch. IX; equation sheet §1.
     pub fn wavenumber(&self, omega: f64) -> f64 {
         if !(omega > 0.0) {
             return 0.0;

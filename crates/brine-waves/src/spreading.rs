@@ -170,7 +170,7 @@ impl Spreading for CosineTwoS {
 /// Donelan M.A., Hamilton J., Hui W.H. 1985, "Directional spectra of wind-generated waves",
 /// Phil. Trans. R. Soc. A315:509–562; Banner M.L. 1990, "Equilibrium spectra of wind waves", JPO
 /// 20:966–984; Horvath C.J. 2015, "Empirical directional wave spectra for computer graphics",
-/// `DigiPro`, §5.
+/// `DigiPro` 2015.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DonelanBanner {
     omega_p: f64,
@@ -196,7 +196,7 @@ impl DonelanBanner {
     ///
     /// # References
     /// Donelan, Hamilton & Hui 1985 (the sech² fit); Banner 1990 (above `1.6 ω_p`); as collected by
-    /// Horvath 2015, §5.
+    /// Horvath 2015.
     pub fn beta(&self, omega: f64) -> f64 {
         let r = omega / self.omega_p;
         if r < 0.56 {
