@@ -43,7 +43,7 @@
 //! | `θ` | [`Trochoid::direction`] | rad | propagation angle from +x toward +z |
 //! | `φ₀` | [`Trochoid::phase`] | rad | initial phase |
 //! | `h(x, z, t)` | [`WaveSurface::height`] | m | surface height above mean sea level |
-//! | `D`, `J` | [`WaveSurface::displacement`], [`WaveSurface::jacobian`] | m, 1 | horizontal displacement, its Jacobian |
+//! | `D`, `J` | [`WaveSurface::displacement`], [`WaveSurface::jacobian`] | m, 1 | displacement, Jacobian |
 //! | `L` | [`WaveSurface::max_slope`] | 1 | Lipschitz constant of `h` |
 //!
 //! ## Validity
