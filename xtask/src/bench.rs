@@ -16,6 +16,13 @@ const BENCHES: &[(&str, &str, &[&str])] = &[
         "brine-optics per-pixel and per-scene costs (criterion)",
         &["bench", "-p", "brine-optics", "--bench", "optics"],
     ),
+    ("sky", "brine-sky per-call and constructor costs", &["bench", "-p", "brine-sky", "--bench", "sky"]),
+    ("ephem", "SPA vs Schlyter sun and moon positions", &["bench", "-p", "brine-ephem", "--bench", "ephem"]),
+    (
+        "waves",
+        "brine-waves: height at one point × N waves, scalar loop vs SIMD lanes (trochoid, sine), Gerstner inversion",
+        &["bench", "-p", "brine-waves", "--bench", "surface_eval"],
+    ),
 ];
 
 /// Runs the named benchmarks (all when `names` is empty) or lists them.

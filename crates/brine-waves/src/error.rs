@@ -21,6 +21,17 @@ pub enum WaveError {
         /// Upper band edge (rad/s).
         omega_max: f64,
     },
+    /// The waves ask for more total steepness than the surface can bear without folding.
+    #[error(
+        "the waves' total steepness ΣQ = {total_steepness} exceeds {limit}: the surface would fold \
+         (lower the choppiness or the wave count, or scale the steepness down)"
+    )]
+    TooSteep {
+        /// `Σ Qᵢ` of the waves (dimensionless).
+        total_steepness: f64,
+        /// The largest accepted `Σ Qᵢ`.
+        limit: f64,
+    },
 }
 
 /// Returns `Ok(value)` if `ok`, else the [`WaveError::OutOfRange`] naming the parameter.

@@ -1,4 +1,5 @@
-//! Composite Simpson quadrature used for spectral moments.
+//! Composite Simpson quadrature used for spectral moments (through `libm`, so that fitted sets are
+//! bit-identical on every platform).
 
 /// `∫_a^b f(x) dx` by the composite Simpson rule on `2·pairs` intervals (error `O(h⁴)`).
 pub(crate) fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, pairs: usize) -> f64 {
@@ -18,11 +19,11 @@ pub(crate) fn simpson_log(f: impl Fn(f64) -> f64, a: f64, b: f64, pairs: usize) 
     debug_assert!(a > 0.0 && b > a);
     simpson(
         |u| {
-            let w = u.exp();
+            let w = libm::exp(u);
             f(w) * w
         },
-        a.ln(),
-        b.ln(),
+        libm::log(a),
+        libm::log(b),
         pairs,
     )
 }

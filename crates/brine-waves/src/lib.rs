@@ -2,19 +2,40 @@
 //!
 //! The wave model of Darles, Crespin & Ghazanfarpour (2007, §3), after Thon & Ghazanfarpour
 //! (2002): a sea is a sum of trochoid (Gerstner) waves whose amplitudes, wavelengths, directions
-//! and speeds are drawn from a measured ocean spectrum — here Pierson–Moskowitz (1964), with the
-//! cos-2s directional spreading of Hasselmann et al. (1980) and the deep-water dispersion relation.
-//! The surface Darles et al. trace is the sum of the waves' exact trochoid height profiles,
-//! [`TrochoidSum`], which implements [`brine_trace::LipschitzSum`] with per-wave Lipschitz
-//! constants `kA/√(1 − Q²)`.
+//! and speeds are drawn from an ocean spectrum. With it, the spectra and surfaces of Li Ying et al.
+//! (2018, §2.2: the Elfouhaily et al. 1997 unified spectrum) and Chen et al. (2007: sine waves with
+//! bump-mapped normals).
+//!
+//! - **Spectra** ([`Spectrum`]: `S(ω)` in m² s rad⁻¹, `S(k)` in m³ rad⁻¹, `m₀`, `H_s`, mean-square
+//!   slope): [`PiersonMoskowitz`], [`Jonswap`], [`Tma`], [`Phillips`], [`Elfouhaily`].
+//! - **Spreading** ([`Spreading`]: `D(θ; ω)` and sampling): [`CosineTwoS`] (Longuet-Higgins,
+//!   Mitsuyasu, Hasselmann), [`DonelanBanner`], [`ElfouhailySpreading`], [`CosineSquared`].
+//! - **Dispersion** ([`Dispersion`]): deep water `ω² = gk`, finite depth `ω² = gk tanh(kh)`,
+//!   capillary–gravity `ω² = (gk + σk³/ρ) tanh(kh)`.
+//! - **Fit** ([`fit_trochoids`], [`fit_sea_state`] for sea + swell): amplitudes from a frequency
+//!   partition, directions from the spreading, phases from a ChaCha8 seed, steepness capped so
+//!   the surface never folds — a [`TrochoidSet`].
+//! - **Surfaces** ([`WaveSurface`]: height, gradient, normal, displacement, Jacobian, velocity,
+//!   batch heights): [`TrochoidSum`] (the sum of exact trochoid height fields that Darles et al.
+//!   trace; the default for rendering), [`GerstnerSurface`] (the true Gerstner sum, by a Newton
+//!   inversion of the horizontal displacement), [`SineSet`] (Chen et al.'s sinusoids with
+//!   perturbed normals). Their time-frozen fields [`TrochoidField`], [`GerstnerField`] and
+//!   [`SineField`] implement [`brine_trace::LipschitzSum`] for the sphere tracer.
 //!
 //! ## Notation
 //!
 //! | symbol | Rust | unit | meaning |
 //! |---|---|---|---|
 //! | `S(ω)` | [`Spectrum::s_omega`] | m² s rad⁻¹ | frequency spectrum of elevation |
+//! | `S(k)` | [`Spectrum::s_k`] | m³ rad⁻¹ | wavenumber spectrum, `S(k) = S(ω) dω/dk` |
+//! | `Ψ(k, φ)` | [`Elfouhaily::directional`] | m⁴ | directional spectrum per `d²k` |
+//! | `B_l`, `B_h` | [`Elfouhaily::curvature_long`] | 1 | long- and short-wave curvature spectra |
 //! | `ω`, `ω_p` | `omega`, [`Spectrum::peak_omega`] | rad s⁻¹ | angular frequency, spectral peak |
+//! | `m₀`, `H_s` | [`Spectrum::m0`], [`Spectrum::significant_wave_height`] | m², m | variance, `4√m₀` |
 //! | `U₁₀`, `U₁₉.₅` | `u10`, `u19_5` | m s⁻¹ | wind speed 10 m / 19.5 m above the sea |
+//! | `F`, `x` | `fetch_m` | m | fetch |
+//! | `h` | `depth_m` | m | water depth |
+//! | `Ω` | [`Elfouhaily::inverse_wave_age`] | 1 | inverse wave age `U₁₀/c_p` |
 //! | `D(θ; ω)` | [`Spreading::density`] | rad⁻¹ | directional spreading, `∫D dθ = 1` |
 //! | `k` | [`Trochoid::wavenumber`] | rad m⁻¹ | wavenumber, `λ = 2π/k` |
 //! | `A` | [`Trochoid::amplitude`] | m | vertical radius of a wave |
@@ -22,24 +43,35 @@
 //! | `θ` | [`Trochoid::direction`] | rad | propagation angle from +x toward +z |
 //! | `φ₀` | [`Trochoid::phase`] | rad | initial phase |
 //! | `h(x, z, t)` | [`WaveSurface::height`] | m | surface height above mean sea level |
+//! | `D`, `J` | [`WaveSurface::displacement`], [`WaveSurface::jacobian`] | m, 1 | displacement, Jacobian |
+//! | `L` | [`WaveSurface::max_slope`] | 1 | Lipschitz constant of `h` |
 //!
 //! ## Validity
 //!
-//! Deep water (`kh ≫ 1`), wind speeds `0 < U₁₀ ≤ 60` m s⁻¹, steepness `Q ≤ 0.99`. Axes: y up,
-//! mean sea level `y = 0` (see `docs/conventions.md`).
+//! Wind speeds `0 < U₁₀ ≤ 60` m s⁻¹ (Elfouhaily's data cover about 2–25 m s⁻¹), steepness
+//! `Q ≤ 0.99`, `Σ Q < 1` for the Gerstner surface. Trochoid shapes are deep-water orbits even when
+//! a finite-depth spectrum (TMA) sets their wavenumbers. Axes: y up, x east, z south, mean sea
+//! level `y = 0`; angles from +x toward +z (see `docs/conventions.md`). Every random choice comes
+//! from a seed (ChaCha8) and every transcendental function of the fit from `libm`: the same seed
+//! gives the same set on every platform.
 //!
 //! ## Example
 //!
 //! ```
-//! use brine_waves::{CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, TrochoidSum, WaveSurface, fit_trochoids};
+//! use brine_waves::{
+//!     Directions, Elfouhaily, FitOptions, GerstnerSurface, Spectrum, TrochoidSum, WaveSurface, fit_trochoids,
+//! };
 //!
-//! let pm = PiersonMoskowitz::from_u10(10.0)?;
-//! let spreading = CosineTwoS::hasselmann(pm.peak_omega())?;
-//! let set = fit_trochoids(&pm, &spreading, 50, 1, &FitOptions::default())?;
+//! let spectrum = Elfouhaily::from_fetch(10.0, 50_000.0)?;
+//! let spreading = spectrum.spreading(Directions::Downwind);
+//! let set = fit_trochoids(&spectrum, &spreading, 50, 1, &FitOptions::default())?;
 //! let sea = TrochoidSum::new(&set);
 //! let (lo, hi) = sea.height_bounds();
 //! let h = sea.height(3.0, -2.0, 0.0);
 //! assert!(lo <= h && h <= hi);
+//! // The same waves as a true Gerstner sum (its horizontal displacements composed).
+//! let gerstner = GerstnerSurface::new(&set)?;
+//! assert!(gerstner.jacobian(3.0, -2.0, 0.0) > 0.0);
 //! # Ok::<(), brine_waves::WaveError>(())
 //! ```
 //!
@@ -49,25 +81,54 @@
 //!   information", Computers & Graphics 26(1):99–108.
 //! - Darles E., Crespin B., Ghazanfarpour D. 2007, "Accelerating and enhancing rendering of
 //!   realistic ocean scenes", WSCG, §3.
-//! - Pierson W., Moskowitz L. 1964, JGR 69(24):5181–5190.
-//! - Hasselmann D., Dunckel M., Ewing J. 1980, JPO 10 (directional spreading).
+//! - Chen H. et al. 2007, "An efficient method for real-time ocean simulation", Edutainment,
+//!   LNCS 4469, §3.3; Finch M. 2004, "Effective water simulation from physical models", GPU Gems 1.
+//! - Li Ying, Tang Yong et al. 2018, "Real-time rendering of large-scale realistic ocean scenes
+//!   driven by time and space" (in Chinese), §2.2, Eq. 1.
+//! - Pierson W., Moskowitz L. 1964, JGR 69(24):5181–5190; Hasselmann K. et al. 1973 (JONSWAP),
+//!   Dtsch. Hydrogr. Z. A8(12); Bouws E. et al. 1985 (TMA), JGR 90(C1):975–986; Tessendorf J. 2001,
+//!   "Simulating Ocean Water" (Phillips); Elfouhaily T. et al. 1997, JGR 102(C7):15781–15796.
+//! - Longuet-Higgins M.S. et al. 1963; Mitsuyasu H. et al. 1975, JPO 5; Hasselmann D. et al. 1980,
+//!   JPO 10; Donelan M.A. et al. 1985, Phil. Trans. R. Soc. A315; Banner M.L. 1990, JPO 20
+//!   (directional spreading).
+//! - Cox C., Munk W. 1954, JOSA 44(11) (slope statistics); Dupuy J., Bruneton E. 2012 (Jacobian);
+//!   Bruneton E. et al. 2010, CGF 29(2) (Gerstner sums).
 
 mod dispersion;
+mod elfouhaily;
 mod error;
 mod fit;
+mod gerstner;
+mod gerstner_lipschitz;
 mod integrate;
+mod jonswap;
+mod lanes;
 mod lipschitz;
+mod phillips;
+mod pierson_moskowitz;
 mod set;
+mod sine;
+mod sine_lipschitz;
 mod spectrum;
 mod spreading;
 mod surface;
+mod tma;
 mod trochoid;
 
+pub use dispersion::{Dispersion, ELFOUHAILY_K_M, SEA_WATER_DENSITY, SEA_WATER_SURFACE_TENSION};
 pub use dispersion::{G, omega_deep_water, wavenumber_deep_water};
+pub use elfouhaily::{Elfouhaily, ElfouhailySpreading};
 pub use error::WaveError;
+pub use fit::{AmplitudeRule, FrequencyBin, SeaComponent, SteepnessLimit, fit_sea_state, frequency_bins};
 pub use fit::{FitOptions, FrequencyPartition, fit_trochoids};
+pub use gerstner::{GERSTNER_MAX_ITERATIONS, GERSTNER_TOLERANCE_M, GerstnerField, GerstnerSurface, Inversion};
+pub use jonswap::Jonswap;
+pub use phillips::Phillips;
 pub use set::TrochoidSet;
+pub use sine::{SineField, SineSet};
 pub use spectrum::{PiersonMoskowitz, Spectrum};
+pub use spreading::{CosineSquared, Directions, DonelanBanner};
 pub use spreading::{CosineTwoS, Spreading};
 pub use surface::{TrochoidField, TrochoidSum, WaveSurface};
+pub use tma::{Tma, kitaigorodskii_depth_factor};
 pub use trochoid::{MAX_STEEPNESS, Trochoid, solve_trochoid_phase};

@@ -54,6 +54,30 @@ impl TrochoidSet {
         self.waves.iter().map(|w| 0.5 * w.amplitude() * w.amplitude()).sum()
     }
 
+    /// Slope variances of the exact trochoid profiles along and across a direction `θ_w` (rad):
+    /// `(Σ cos²(θᵢ − θ_w) ⟨sᵢ²⟩, Σ sin²(θᵢ − θ_w) ⟨sᵢ²⟩)` with `⟨sᵢ²⟩` each wave's
+    /// [`Trochoid::mean_square_slope`] (dimensionless). For the renderer's BRDF: the slope variance
+    /// the drawn waves already resolve.
+    ///
+    /// # Arguments
+    /// - `direction`: reference direction `θ_w` (rad) from +x toward +z.
+    ///
+    /// # Returns
+    /// `(σ_along², σ_across²)` (dimensionless).
+    ///
+    /// # References
+    /// Equation sheet §11 (trochoid set: `σ_x² = Σ cos²θᵢ (1 − √(1 − kᵢ²Aᵢ²))`).
+    pub fn slope_variances(&self, direction: f64) -> (f64, f64) {
+        let (mut along, mut across) = (0.0, 0.0);
+        for w in &self.waves {
+            let c = (w.direction() - direction).cos();
+            let m = w.mean_square_slope();
+            along += m * c * c;
+            across += m * (1.0 - c * c);
+        }
+        (along, across)
+    }
+
     /// Gerstner displacement of the particle at rest position `u = (x, z)` at time `t`:
     /// `(−Σ (Qᵢ/kᵢ) d̂ᵢ sin φᵢ, Σ Aᵢ cos φᵢ)` returned as `(dx, y, dz)` (m).
     ///

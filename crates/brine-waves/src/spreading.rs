@@ -1,15 +1,21 @@
 //! Directional spreading functions `D(θ; ω)`, normalised so that `∫_{−π}^{π} D dθ = 1`.
 
-use std::f64::consts::PI;
+use std::f64::consts::{FRAC_PI_2, PI};
+
+use crate::error::{WaveError, check};
 
 /// A directional spreading function: the share of the energy at frequency `ω` travelling at
 /// angle `θ` from the mean wind direction.
+///
+/// Implemented by [`CosineTwoS`] (Longuet-Higgins / Mitsuyasu / Hasselmann), [`DonelanBanner`],
+/// [`CosineSquared`] and [`crate::ElfouhailySpreading`].
 pub trait Spreading {
     /// `D(θ; ω)` (rad⁻¹), `θ` in `(−π, π]` relative to the wind, `ω` in rad s⁻¹.
     fn density(&self, theta: f64, omega: f64) -> f64;
 
     /// Draws an angle from `D(·; ω)` by inverting its cumulative distribution, tabulated on 2048
     /// trapezoids, at the uniform variate `u ∈ [0, 1)`. Deterministic for a given `u`.
+    /// Implementations with a closed-form distribution override it.
     fn sample(&self, omega: f64, u: f64) -> f64 {
         const N: usize = 2048;
         let h = 2.0 * PI / N as f64;
@@ -31,41 +37,117 @@ pub trait Spreading {
     }
 }
 
-/// The cos-2s spreading `D(θ) = 2^{2s−1} Γ(s+1)² / (π Γ(2s+1)) |cos(θ/2)|^{2s}` with the
-/// frequency-dependent exponent of Hasselmann et al. (1980):
-/// `s = 6.97 (ω/ω_p)^5` below the peak, `9.77 (ω/ω_p)^{−2.5}` above.
+/// Which directions a spreading symmetric under `θ → θ + π` covers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Directions {
+    /// Up-wind and down-wind alike, over `(−π, π]` (the published form of Tessendorf's and
+    /// Elfouhaily's spreadings: a height spectrum cannot tell `k` from `−k`).
+    BothWays,
+    /// Folded onto the down-wind half `|θ| ≤ π/2` with twice the density: every wave travels
+    /// with the wind (what a wind sea does, and what the fit wants).
+    #[default]
+    Downwind,
+}
+
+/// Solves `cdf(θ) = u` on `[lo, hi]` for a continuous increasing `cdf` with derivative `pdf`, by
+/// Newton's method safeguarded with bisection, to `|Δθ| ≤ 10⁻¹³` (at most 100 iterations).
+pub(crate) fn invert_cdf(cdf: impl Fn(f64) -> f64, pdf: impl Fn(f64) -> f64, lo: f64, hi: f64, u: f64) -> f64 {
+    let u = u.clamp(0.0, 1.0);
+    let (mut a, mut b) = (lo, hi);
+    let mut t = lo + u * (hi - lo);
+    for _ in 0..100 {
+        let f = cdf(t) - u;
+        if f > 0.0 {
+            b = t;
+        } else {
+            a = t;
+        }
+        let p = pdf(t);
+        let next = if p > 0.0 { t - f / p } else { f64::NAN };
+        let next = if next > a && next < b { next } else { 0.5 * (a + b) };
+        let done = (next - t).abs() <= 1e-13;
+        t = next;
+        if done || b - a <= 1e-13 {
+            break;
+        }
+    }
+    t
+}
+
+/// The cos-2s spreading `D(θ) = 2^{2s−1} Γ(s+1)² / (π Γ(2s+1)) |cos(θ/2)|^{2s}` with an exponent
+/// `s(ω) = s_a (ω/ω_p)^{p_a}` below the peak and `s_b (ω/ω_p)^{p_b}` above it.
+///
+/// Three parameterisations: Hasselmann et al. 1980 as simplified in the equation sheet
+/// (`s = 6.97 (ω/ω_p)^5` below, `9.77 (ω/ω_p)^{−2.5}` above), Mitsuyasu et al. 1975
+/// (`s = s_max (ω/ω_p)^5` below, `s_max (ω/ω_p)^{−2.5}` above, `s_max = 11.5 (ω_p U₁₀/g)^{−2.5}`)
+/// and a constant `s` (Longuet-Higgins et al. 1963).
 ///
 /// # References
-/// Longuet-Higgins, Cartwright & Smith 1963 (the cos-2s form); Hasselmann D., Dunckel M.,
-/// Ewing J. 1980, "Directional wave spectra observed during JONSWAP 1973", JPO 10; equation
-/// sheet §1.
+/// Longuet-Higgins M.S., Cartwright D.E., Smith N.D. 1963 (the cos-2s form); Mitsuyasu H. et al.
+/// 1975, JPO 5; Hasselmann D., Dunckel M., Ewing J. 1980, "Directional wave spectra observed
+/// during JONSWAP 1973", JPO 10; equation sheet §1.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CosineTwoS {
     omega_p: f64,
+    s_below: f64,
+    s_above: f64,
+    p_below: f64,
+    p_above: f64,
 }
 
 impl CosineTwoS {
     /// The Hasselmann et al. 1980 spreading around a spectral peak `ω_p` (rad s⁻¹, `> 0`).
     ///
     /// # Errors
-    /// [`crate::WaveError::OutOfRange`] if `ω_p` is not positive and finite.
-    pub fn hasselmann(omega_p: f64) -> Result<Self, crate::WaveError> {
-        let omega_p = crate::error::check("omega_p_rad_s", omega_p, omega_p > 0.0, "(0, ∞) rad/s")?;
-        Ok(Self { omega_p })
+    /// [`WaveError::OutOfRange`] if `ω_p` is not positive and finite.
+    pub fn hasselmann(omega_p: f64) -> Result<Self, WaveError> {
+        let omega_p = check("omega_p_rad_s", omega_p, omega_p > 0.0, "(0, ∞) rad/s")?;
+        Ok(Self { omega_p, s_below: 6.97, s_above: 9.77, p_below: 5.0, p_above: -2.5 })
     }
 
-    /// The spreading exponent `s(ω)` (dimensionless).
+    /// The Mitsuyasu et al. 1975 spreading around `ω_p` (rad s⁻¹, `> 0`) for a wind `U₁₀`
+    /// (m s⁻¹, `(0, 60]`): `s_max = 11.5 (ω_p U₁₀/g)^{−2.5}`.
+    ///
+    /// # Errors
+    /// [`WaveError::OutOfRange`] naming the first parameter outside its range.
+    pub fn mitsuyasu(omega_p: f64, u10: f64) -> Result<Self, WaveError> {
+        let omega_p = check("omega_p_rad_s", omega_p, omega_p > 0.0, "(0, ∞) rad/s")?;
+        let u10 = check("u10_m_s", u10, u10 > 0.0 && u10 <= 60.0, "(0, 60] m/s")?;
+        let s_max = 11.5 * libm::pow(omega_p * u10 / crate::G, -2.5);
+        Ok(Self { omega_p, s_below: s_max, s_above: s_max, p_below: 5.0, p_above: -2.5 })
+    }
+
+    /// A frequency-independent exponent `s` (dimensionless, `[0, 1000]`).
+    ///
+    /// # Errors
+    /// [`WaveError::OutOfRange`] for `s` outside `[0, 1000]`.
+    pub fn constant(s: f64) -> Result<Self, WaveError> {
+        let s = check("s", s, (0.0..=1000.0).contains(&s), "[0, 1000]")?;
+        Ok(Self { omega_p: 1.0, s_below: s, s_above: s, p_below: 0.0, p_above: 0.0 })
+    }
+
+    /// The spreading exponent, `s(ω) = s_a (ω/ω_p)^{p_a}` below the peak, `s_b (ω/ω_p)^{p_b}` above.
+    ///
+    /// # Arguments
+    /// - `omega`: angular frequency (rad s⁻¹), `> 0`.
+    ///
+    /// # Returns
+    /// `s` (dimensionless).
+    ///
+    /// # References
+    /// Mitsuyasu et al. 1975; Hasselmann et al. 1980; equation sheet §1.
     pub fn exponent(&self, omega: f64) -> f64 {
         let r = omega / self.omega_p;
-        if r < 1.0 { 6.97 * r.powi(5) } else { 9.77 * r.powf(-2.5) }
+        if r < 1.0 { self.s_below * libm::pow(r, self.p_below) } else { self.s_above * libm::pow(r, self.p_above) }
     }
 }
 
 /// Normalisation `2^{2s−1} Γ(s+1)² / (π Γ(2s+1))` of the cos-2s law, through `ln Γ` so that it
 /// stays finite for large `s`.
 fn cos2s_normalisation(s: f64) -> f64 {
-    let ln =
-        (2.0 * s - 1.0) * std::f64::consts::LN_2 + 2.0 * libm::lgamma(s + 1.0) - libm::lgamma(2.0 * s + 1.0) - PI.ln();
+    let ln = (2.0 * s - 1.0) * std::f64::consts::LN_2 + 2.0 * libm::lgamma(s + 1.0)
+        - libm::lgamma(2.0 * s + 1.0)
+        - libm::log(PI);
     libm::exp(ln)
 }
 
@@ -76,20 +158,157 @@ impl Spreading for CosineTwoS {
     }
 }
 
+/// The sech² spreading of Donelan, Hamilton & Hui (1985) with Banner's (1990) extension above
+/// `1.6 ω_p`: `D(θ) = β sech²(βθ) / (2 tanh(βπ))`,
+/// `β = 2.61 r^{1.3}` (`0.56 < r < 0.95`), `2.28 r^{−1.3}` (`0.95 ≤ r < 1.6`),
+/// `10^{−0.4 + 0.8393 exp(−0.567 ln r²)}` (`r ≥ 1.6`), `r = ω/ω_p`, and `β = 1.24` below
+/// `r = 0.56` (the value at 0.56).
+///
+/// The factor `1/tanh(βπ)` (at most 1.0008 here) renormalises the law to the circle `(−π, π]`.
+///
+/// # References
+/// Donelan M.A., Hamilton J., Hui W.H. 1985, "Directional spectra of wind-generated waves",
+/// Phil. Trans. R. Soc. A315:509–562; Banner M.L. 1990, "Equilibrium spectra of wind waves", JPO
+/// 20:966–984; Horvath C.J. 2015, "Empirical directional wave spectra for computer graphics",
+/// `DigiPro` 2015.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DonelanBanner {
+    omega_p: f64,
+}
+
+impl DonelanBanner {
+    /// The spreading around a spectral peak `ω_p` (rad s⁻¹, `> 0`).
+    ///
+    /// # Errors
+    /// [`WaveError::OutOfRange`] if `ω_p` is not positive and finite.
+    pub fn new(omega_p: f64) -> Result<Self, WaveError> {
+        let omega_p = check("omega_p_rad_s", omega_p, omega_p > 0.0, "(0, ∞) rad/s")?;
+        Ok(Self { omega_p })
+    }
+
+    /// The width parameter `β(ω)` of the sech² law (branches in the type's documentation).
+    ///
+    /// # Arguments
+    /// - `omega`: angular frequency (rad s⁻¹), `> 0`.
+    ///
+    /// # Returns
+    /// `β` (dimensionless).
+    ///
+    /// # References
+    /// Donelan, Hamilton & Hui 1985 (the sech² fit); Banner 1990 (above `1.6 ω_p`); as collected by
+    /// Horvath 2015.
+    pub fn beta(&self, omega: f64) -> f64 {
+        let r = omega / self.omega_p;
+        if r < 0.56 {
+            2.61 * libm::pow(0.56, 1.3)
+        } else if r < 0.95 {
+            2.61 * libm::pow(r, 1.3)
+        } else if r < 1.6 {
+            2.28 * libm::pow(r, -1.3)
+        } else {
+            libm::pow(10.0, -0.4 + 0.8393 * libm::exp(-0.567 * libm::log(r * r)))
+        }
+    }
+}
+
+impl Spreading for DonelanBanner {
+    fn density(&self, theta: f64, omega: f64) -> f64 {
+        let b = self.beta(omega);
+        let sech = 1.0 / libm::cosh(b * theta);
+        b * sech * sech / (2.0 * libm::tanh(b * PI))
+    }
+
+    /// Closed-form inverse: `θ = atanh((2u − 1) tanh(βπ))/β`.
+    fn sample(&self, omega: f64, u: f64) -> f64 {
+        let b = self.beta(omega);
+        let u = u.clamp(0.0, 1.0);
+        libm::atanh((2.0 * u - 1.0) * libm::tanh(b * PI)) / b
+    }
+}
+
+/// The `cos²θ` spreading: `D = (2/π) cos²θ` on the down-wind half (the equation sheet's
+/// "simplest" law), or `D = (1/π) cos²θ` over the whole circle, the `|k̂·ŵ|²` of Tessendorf's
+/// Phillips spectrum.
+///
+/// # References
+/// Tessendorf 2001, §3.3; equation sheet §1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct CosineSquared {
+    directions: Directions,
+}
+
+impl CosineSquared {
+    /// `(2/π) cos²θ` for `|θ| ≤ π/2`.
+    pub fn downwind() -> Self {
+        Self { directions: Directions::Downwind }
+    }
+
+    /// `(1/π) cos²θ` over `(−π, π]` (Tessendorf's `|k̂·ŵ|²`).
+    pub fn both_ways() -> Self {
+        Self { directions: Directions::BothWays }
+    }
+}
+
+impl Spreading for CosineSquared {
+    fn density(&self, theta: f64, _omega: f64) -> f64 {
+        let c = libm::cos(theta);
+        match self.directions {
+            Directions::BothWays => c * c / PI,
+            Directions::Downwind if theta.abs() <= FRAC_PI_2 => 2.0 * c * c / PI,
+            Directions::Downwind => 0.0,
+        }
+    }
+
+    /// Inverts `C(θ) = (θ + θ₀ + ½ sin 2θ)/(2θ₀)` (`θ₀ = π` or `π/2`).
+    fn sample(&self, _omega: f64, u: f64) -> f64 {
+        let half = match self.directions {
+            Directions::BothWays => PI,
+            Directions::Downwind => FRAC_PI_2,
+        };
+        let cdf = |t: f64| (t + half + 0.5 * libm::sin(2.0 * t)) / (2.0 * half);
+        let pdf = |t: f64| (1.0 + libm::cos(2.0 * t)) / (2.0 * half);
+        invert_cdf(cdf, pdf, -half, half, u)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `∫_{−π}^{π} D dθ` by the midpoint rule on `n` cells.
+    fn integral(d: &dyn Spreading, omega: f64, n: usize) -> f64 {
+        let h = 2.0 * PI / n as f64;
+        (0..n).map(|j| d.density(-PI + (j as f64 + 0.5) * h, omega) * h).sum()
+    }
 
     #[test]
     fn cos2s_integrates_to_one_for_several_exponents() {
         for omega in [0.3, 0.8, 1.0, 2.0, 5.0] {
             let d = CosineTwoS::hasselmann(1.0).unwrap();
-            let n = 20_000;
-            let h = 2.0 * PI / n as f64;
-            let total: f64 = (0..n).map(|j| d.density(-PI + (j as f64 + 0.5) * h, omega) * h).sum();
+            let total = integral(&d, omega, 20_000);
             // For s < ½ the integrand |cos(θ/2)|^{2s} has an infinite slope at ±π, where the
             // midpoint rule converges only as h^{1+2s}: 2·10⁻⁶ at 20 000 cells for s = 0.017.
             assert!((total - 1.0).abs() < 2e-6, "ω = {omega}: ∫D = {total}");
+        }
+    }
+
+    #[test]
+    fn every_spreading_integrates_to_one() {
+        let list: Vec<Box<dyn Spreading>> = vec![
+            Box::new(CosineTwoS::mitsuyasu(0.8, 10.0).unwrap()),
+            Box::new(CosineTwoS::constant(3.0).unwrap()),
+            Box::new(DonelanBanner::new(0.8).unwrap()),
+            Box::new(CosineSquared::downwind()),
+            Box::new(CosineSquared::both_ways()),
+        ];
+        for d in &list {
+            for omega in [0.3, 0.7, 0.8, 1.1, 2.0, 6.0] {
+                let total = integral(d.as_ref(), omega, 20_000);
+                // Smooth periodic integrands (or a kink at ±π/2 for the down-wind fold) converge
+                // fast; cos-2s with s < ½ (Mitsuyasu well below the peak) has an infinite slope at
+                // ±π and converges as h^{1+2s}: 2·10⁻⁶ at 20 000 cells, as above.
+                assert!((total - 1.0).abs() < 2e-6, "ω = {omega}: ∫D = {total}");
+            }
         }
     }
 
@@ -99,5 +318,46 @@ mod tests {
         assert!((d.density(0.4, 1.0) - d.density(-0.4, 1.0)).abs() < 1e-15);
         assert!(d.sample(1.0, 0.5).abs() < 2e-3);
         assert!(d.sample(1.0, 0.1) < 0.0 && d.sample(1.0, 0.9) > 0.0);
+    }
+
+    #[test]
+    fn closed_form_samplers_invert_the_density() {
+        let list: Vec<Box<dyn Spreading>> = vec![
+            Box::new(DonelanBanner::new(1.0).unwrap()),
+            Box::new(CosineSquared::downwind()),
+            Box::new(CosineSquared::both_ways()),
+        ];
+        for d in &list {
+            for u in [0.02, 0.3, 0.5, 0.81, 0.97] {
+                let theta = d.sample(1.3, u);
+                let n = 40_000;
+                let h = (theta + PI) / n as f64;
+                let c: f64 = (0..n).map(|j| d.density(-PI + (j as f64 + 0.5) * h, 1.3) * h).sum();
+                // Midpoint rule on 40 000 cells (kinks only at ±π/2): error below 10⁻⁸.
+                assert!((c - u).abs() < 1e-7, "u = {u}: C(θ) = {c}");
+            }
+        }
+    }
+
+    #[test]
+    fn donelan_banner_beta_is_continuous_at_the_branch_points() {
+        let d = DonelanBanner::new(1.0).unwrap();
+        assert!((d.beta(0.56 - 1e-12) - d.beta(0.56 + 1e-12)).abs() < 1e-9);
+        // Donelan's two branches meet within 2 % at r = 0.95 (2.61·0.95^1.3 = 2.446, 2.28·0.95^−1.3 = 2.437).
+        assert!((d.beta(0.95 - 1e-9) / d.beta(0.95) - 1.0).abs() < 0.02);
+        // Banner's extension meets Donelan's branch at r = 1.6: 10^(−0.4 + 0.8393·2.56^−0.567) = 1.238,
+        // 2.28·1.6^−1.3 = 1.238.
+        assert!((d.beta(1.6) / d.beta(1.6 - 1e-9) - 1.0).abs() < 1e-3);
+    }
+
+    #[test]
+    fn mitsuyasu_s_max_oracle() {
+        // s_max = 11.5 (ω_p U/g)^−2.5; with ω_p U/g = 0.855 (fully developed), s_max = 17.01.
+        let u = 10.0;
+        let wp = 0.855 * crate::G / u;
+        let d = CosineTwoS::mitsuyasu(wp, u).unwrap();
+        let expected = 11.5 * 0.855f64.powf(-2.5);
+        assert!((d.exponent(wp) - expected).abs() < 1e-10);
+        assert!((expected - 17.01).abs() < 0.005);
     }
 }

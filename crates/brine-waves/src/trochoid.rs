@@ -135,6 +135,51 @@ impl Trochoid {
     }
 }
 
+impl Trochoid {
+    /// Mean height of the profile over horizontal position, `⟨h⟩ = −Q A/2` (m): the trochoid spends
+    /// longer in its troughs than on its crests (`dx ∝ (1 − Q cos θ) dθ`). With `Q = kA` it is the
+    /// equation sheet's `−kA²/2`.
+    ///
+    /// # Returns
+    /// The mean height (m) relative to the orbit centres `y₀ = 0`.
+    ///
+    /// # References
+    /// Equation sheet §1, "Exact single-trochoid statistics" (derived).
+    pub fn mean_height(&self) -> f64 {
+        -0.5 * self.steepness * self.amplitude
+    }
+
+    /// Variance of the height over horizontal position, `A² (2 − Q²)/4`; with `Q = kA` the
+    /// equation sheet's `A² (2 − k²A²)/4`.
+    ///
+    /// # Returns
+    /// The variance (m²).
+    ///
+    /// # References
+    /// Equation sheet §1 (derived).
+    pub fn height_variance(&self) -> f64 {
+        0.25 * self.amplitude * self.amplitude * (2.0 - self.steepness * self.steepness)
+    }
+
+    /// Height at which the slope is steepest, `Q·A` (where `cos θ = Q`).
+    ///
+    /// # Returns
+    /// The height (m) above the orbit centres.
+    ///
+    /// # References
+    /// Equation sheet §1 ("max |slope| … reached where cos φ = Q").
+    pub fn max_slope_height(&self) -> f64 {
+        self.steepness * self.amplitude
+    }
+
+    /// A point of the profile in the wave's own frame, at particle phase `θ` (rad):
+    /// `(s/k, A cos θ)` with `s = θ − Q sin θ`, i.e. horizontal position along `d̂` (m) and height
+    /// (m).
+    pub fn profile_point(&self, theta: f64) -> (f64, f64) {
+        ((theta - self.steepness * theta.sin()) / self.wavenumber, self.amplitude * theta.cos())
+    }
+}
+
 /// Solves Kepler's equation of the trochoid, `θ − Q sin θ = s`, for the particle phase `θ`.
 ///
 /// A particle of phase `θ` sits at horizontal phase coordinate `s = θ − Q sin θ` (the horizontal
@@ -216,6 +261,41 @@ mod tests {
         assert!((w.mean_square_slope() - 0.133975).abs() < 1e-6);
         let w = Trochoid::new(0.8, 1.0, 0.0, 0.0, 0.0, 0.8).unwrap();
         assert!((w.mean_square_slope() - 0.4).abs() < 1e-6);
+    }
+
+    #[test]
+    fn single_trochoid_statistics_oracle() {
+        // Equation sheet oracle: k = 1, A = 0.5 (Q = 0.5): max slope at y − y0 = 0.25 m, mean height
+        // −0.125 m, height variance 0.109375 m².
+        let w = Trochoid::new(0.5, 1.0, 0.0, 0.0, 0.0, 0.5).unwrap();
+        assert!((w.max_slope_height() - 0.25).abs() < 1e-12);
+        assert!((w.mean_height() + 0.125).abs() < 1e-12);
+        assert!((w.height_variance() - 0.109375).abs() < 1e-12);
+    }
+
+    #[test]
+    fn statistics_match_a_quadrature_over_x() {
+        // Sample the exact profile on a uniform x grid (not a θ grid) and average.
+        let w = Trochoid::new(0.3, 2.0, 0.0, 0.0, 0.0, 0.55).unwrap();
+        let n = 20_000;
+        let (mut m1, mut m2, mut slope2, mut smax) = (0.0, 0.0, 0.0, 0.0f64);
+        for j in 0..n {
+            let s = -PI + TAU * (j as f64 + 0.5) / n as f64;
+            let (_, c, sn) = solve_trochoid_phase(s, w.steepness());
+            let h = w.amplitude() * c;
+            let dh = -w.wavenumber() * w.amplitude() * sn / (1.0 - w.steepness() * c);
+            m1 += h;
+            m2 += h * h;
+            slope2 += dh * dh;
+            smax = smax.max(dh.abs());
+        }
+        let (m1, m2, slope2) = (m1 / n as f64, m2 / n as f64, slope2 / n as f64);
+        // Midpoint rule on a smooth periodic function converges spectrally: 10⁻¹⁰ is loose.
+        assert!((m1 - w.mean_height()).abs() < 1e-10);
+        assert!((m2 - m1 * m1 - w.height_variance()).abs() < 1e-10);
+        assert!((slope2 - w.mean_square_slope()).abs() < 1e-10);
+        // The grid misses the exact maximum by O(h²): relative 10⁻⁶.
+        assert!(smax <= w.max_slope() && smax > w.max_slope() * (1.0 - 1e-6));
     }
 
     #[test]

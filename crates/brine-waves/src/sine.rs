@@ -1,0 +1,283 @@
+//! The sine-wave sea of Chen et al. (2007), with bump-mapped detail normals.
+
+use glam::{DVec2, DVec3};
+
+use crate::{TrochoidSet, WaveSurface, lanes};
+
+/// Waves as structure-of-arrays: wave vector, frequency, phase, amplitude.
+#[derive(Debug, Clone, PartialEq, Default)]
+struct Waves {
+    kx: Vec<f64>,
+    kz: Vec<f64>,
+    omega: Vec<f64>,
+    phase: Vec<f64>,
+    amplitude: Vec<f64>,
+}
+
+impl Waves {
+    fn push(&mut self, w: &crate::Trochoid) {
+        let d = w.direction_vector();
+        self.kx.push(w.wavenumber() * d.x);
+        self.kz.push(w.wavenumber() * d.y);
+        self.omega.push(w.omega());
+        self.phase.push(w.phase());
+        self.amplitude.push(w.amplitude());
+    }
+
+    fn offsets(&self, t: f64) -> Vec<f64> {
+        self.omega.iter().zip(&self.phase).map(|(w, p)| p - w * t).collect()
+    }
+
+    /// `(h, ∇h)` of `Σ Aᵢ cos(kᵢ·x + offᵢ)`.
+    fn height_gradient(&self, off: &[f64], x: f64, z: f64) -> (f64, DVec2) {
+        let (mut h, mut g) = (0.0, DVec2::ZERO);
+        for (((&kx, &kz), &a), &o) in self.kx.iter().zip(&self.kz).zip(&self.amplitude).zip(off) {
+            let (sn, c) = (kx * x + kz * z + o).sin_cos();
+            h += a * c;
+            g -= a * sn * DVec2::new(kx, kz);
+        }
+        (h, g)
+    }
+}
+
+/// The sine-wave surface of Chen et al. (2007, §3.3), after Finch (2004): a sum of sinusoids
+/// displaces a coarse mesh, and finer sinusoids only perturb the shading normal (a bump map).
+///
+/// Geometry `h(x, z, t) = Σᵢ Aᵢ cos(kᵢ d̂ᵢ·(x, z) − ωᵢ t + φᵢ)` (Chen and Finch write `sin`, the
+/// same with `φᵢ` shifted by `π/2`); detail `h_d` likewise over the detail waves. Heights lie in
+/// `±Σ Aᵢ`, slopes are at most `Σ kᵢAᵢ`. Points do not move sideways: displacement 0, Jacobian 1;
+/// the particle velocity is the linear (Airy, deep-water) orbital velocity
+/// `Σ (Aᵢωᵢ d̂ᵢ cos φᵢ, Aᵢωᵢ sin φᵢ)`.
+///
+/// [`SineSet::shading_normal`] rotates the detail normal `(−∇h_d, 1)` from the tangent frame of the
+/// geometric surface (`B ∝ (1, ∂h/∂x, 0)`, `T ∝ (0, ∂h/∂z, 1)`, `N ∝ (−∂h/∂x, 1, −∂h/∂z)`), as
+/// Finch's vertex shader does. With `Qᵢ → 0` the trochoid sum tends to this surface.
+///
+/// Chen et al.'s artist height map (wave height varying across the sea) is not modelled.
+///
+/// # References
+/// Chen H., Li Q., Wang G., Zhou F., Tang X., Yang K. 2007, "An efficient method for real-time
+/// ocean simulation", Edutainment, LNCS 4469, §3.3; Finch M. 2004, "Effective water simulation
+/// from physical models", GPU Gems ch. 1, Eq. 1–6; Blinn J. 1978, "Simulation of wrinkled
+/// surfaces" (bump mapping).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SineSet {
+    geometry: Waves,
+    detail: Waves,
+    pub(crate) total_amplitude: f64,
+    total_slope: f64,
+}
+
+impl SineSet {
+    /// Every wave of `set` as geometry (amplitudes, wave vectors, frequencies and phases; the
+    /// steepnesses are ignored).
+    pub fn new(set: &TrochoidSet) -> Self {
+        Self::with_detail(set, &TrochoidSet::default())
+    }
+
+    /// `geometry` displaces the surface, `detail` only perturbs the shading normal.
+    pub fn with_detail(geometry: &TrochoidSet, detail: &TrochoidSet) -> Self {
+        let mut s = Self::default();
+        for w in geometry.waves() {
+            s.geometry.push(w);
+            s.total_amplitude += w.amplitude();
+            s.total_slope += w.wavenumber() * w.amplitude();
+        }
+        for w in detail.waves() {
+            s.detail.push(w);
+        }
+        s
+    }
+
+    /// Waves of at least `min_geometry_wavelength_m` (m) displace the surface; shorter ones only
+    /// perturb the normal (Chen's coarse mesh and bump map).
+    pub fn split_at_wavelength(set: &TrochoidSet, min_geometry_wavelength_m: f64) -> Self {
+        let (long, short): (Vec<_>, Vec<_>) =
+            set.waves().iter().partition(|w| w.wavelength() >= min_geometry_wavelength_m);
+        Self::with_detail(&TrochoidSet::new(long), &TrochoidSet::new(short))
+    }
+
+    /// Number of geometric waves.
+    pub fn len(&self) -> usize {
+        self.geometry.kx.len()
+    }
+
+    /// `true` without geometric waves.
+    pub fn is_empty(&self) -> bool {
+        self.geometry.kx.is_empty()
+    }
+
+    /// Number of detail (normal-only) waves.
+    pub fn detail_len(&self) -> usize {
+        self.detail.kx.len()
+    }
+
+    /// The surface frozen at time `t` (s).
+    pub fn at_time(&self, t: f64) -> SineField<'_> {
+        SineField { set: self, offset: self.geometry.offsets(t), detail_offset: self.detail.offsets(t) }
+    }
+
+    /// Shading normal with the detail waves' bump (unit, upward) at `(x, z, t)`.
+    pub fn shading_normal(&self, x: f64, z: f64, t: f64) -> DVec3 {
+        self.at_time(t).shading_normal(x, z)
+    }
+}
+
+/// A [`SineSet`] frozen at one instant.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SineField<'a> {
+    set: &'a SineSet,
+    offset: Vec<f64>,
+    detail_offset: Vec<f64>,
+}
+
+impl SineField<'_> {
+    /// The underlying set.
+    pub fn set(&self) -> &SineSet {
+        self.set
+    }
+
+    /// Number of geometric waves.
+    pub fn len(&self) -> usize {
+        self.set.len()
+    }
+
+    /// `true` without geometric waves.
+    pub fn is_empty(&self) -> bool {
+        self.set.is_empty()
+    }
+
+    /// Height of geometric wave `i` alone (m): `Aᵢ cos(kᵢ·x + offᵢ)`.
+    #[inline]
+    pub fn wave_height(&self, i: usize, x: f64, z: f64) -> f64 {
+        let g = &self.set.geometry;
+        g.amplitude[i] * (g.kx[i] * x + g.kz[i] * z + self.offset[i]).cos()
+    }
+
+    /// Amplitude `Aᵢ` (m), wavenumber vector `(kxᵢ, kzᵢ)` (rad m⁻¹) of geometric wave `i`.
+    pub(crate) fn wave(&self, i: usize) -> (f64, f64, f64) {
+        let g = &self.set.geometry;
+        (g.amplitude[i], g.kx[i], g.kz[i])
+    }
+
+    /// Height `h(x, z)` (m), one wave at a time.
+    pub fn height(&self, x: f64, z: f64) -> f64 {
+        (0..self.set.len()).map(|i| self.wave_height(i, x, z)).sum()
+    }
+
+    /// Height `h(x, z)` (m), four waves at a time in SIMD lanes.
+    pub fn height_lanes(&self, x: f64, z: f64) -> f64 {
+        let g = &self.set.geometry;
+        lanes::sine_height(&g.kx, &g.kz, &self.offset, &g.amplitude, x, z)
+    }
+
+    /// Heights at many points (m), each by [`SineField::height_lanes`].
+    ///
+    /// # Panics
+    /// If the three slices differ in length.
+    pub fn heights(&self, xs: &[f64], zs: &[f64], out: &mut [f64]) {
+        assert!(xs.len() == zs.len() && xs.len() == out.len(), "heights: slices differ in length");
+        for ((o, &x), &z) in out.iter_mut().zip(xs).zip(zs) {
+            *o = self.height_lanes(x, z);
+        }
+    }
+
+    /// Gradient of the geometry `∇h = −Σ Aᵢ kᵢ sin(kᵢ·x + offᵢ)` (dimensionless).
+    pub fn gradient(&self, x: f64, z: f64) -> DVec2 {
+        self.set.geometry.height_gradient(&self.offset, x, z).1
+    }
+
+    /// Gradient of the detail waves `∇h_d` (dimensionless).
+    pub fn detail_gradient(&self, x: f64, z: f64) -> DVec2 {
+        self.set.detail.height_gradient(&self.detail_offset, x, z).1
+    }
+
+    /// Shading normal: the detail normal `(−∇h_d, 1)` expressed in the tangent frame of the
+    /// geometry (Finch 2004, §1.2.4) — unit, upward.
+    pub fn shading_normal(&self, x: f64, z: f64) -> DVec3 {
+        let g = self.gradient(x, z);
+        let d = self.detail_gradient(x, z);
+        let b = DVec3::new(1.0, g.x, 0.0).normalize();
+        let t = DVec3::new(0.0, g.y, 1.0).normalize();
+        let n = DVec3::new(-g.x, 1.0, -g.y).normalize();
+        let local = DVec3::new(-d.x, -d.y, 1.0).normalize();
+        (local.x * b + local.y * t + local.z * n).normalize()
+    }
+
+    /// Airy orbital velocity `Σ (Aᵢωᵢ d̂ᵢ cos φᵢ, Aᵢωᵢ sin φᵢ)` (m s⁻¹) of the geometric waves.
+    pub fn velocity(&self, x: f64, z: f64) -> DVec3 {
+        let g = &self.set.geometry;
+        let mut v = DVec3::ZERO;
+        for i in 0..g.kx.len() {
+            let (sn, c) = (g.kx[i] * x + g.kz[i] * z + self.offset[i]).sin_cos();
+            let k = (g.kx[i] * g.kx[i] + g.kz[i] * g.kz[i]).sqrt();
+            let aw = g.amplitude[i] * g.omega[i];
+            v += DVec3::new(aw * c * g.kx[i] / k, aw * sn, aw * c * g.kz[i] / k);
+        }
+        v
+    }
+}
+
+impl WaveSurface for SineSet {
+    fn height(&self, x: f64, z: f64, t: f64) -> f64 {
+        self.at_time(t).height(x, z)
+    }
+
+    fn gradient(&self, x: f64, z: f64, t: f64) -> DVec2 {
+        self.at_time(t).gradient(x, z)
+    }
+
+    fn height_bounds(&self) -> (f64, f64) {
+        (-self.total_amplitude, self.total_amplitude)
+    }
+
+    fn max_slope(&self) -> f64 {
+        self.total_slope
+    }
+
+    fn displacement(&self, _x: f64, _z: f64, _t: f64) -> DVec2 {
+        DVec2::ZERO
+    }
+
+    fn jacobian(&self, _x: f64, _z: f64, _t: f64) -> f64 {
+        1.0
+    }
+
+    fn velocity(&self, x: f64, z: f64, t: f64) -> DVec3 {
+        self.at_time(t).velocity(x, z)
+    }
+
+    fn heights(&self, xs: &[f64], zs: &[f64], t: f64, out: &mut [f64]) {
+        self.at_time(t).heights(xs, zs, out);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Trochoid;
+
+    #[test]
+    fn flat_geometry_gives_the_exact_detail_normal() {
+        let detail = TrochoidSet::new(vec![Trochoid::new(0.01, 20.0, 0.3, 14.0, 1.0, 0.0).unwrap()]);
+        let s = SineSet::with_detail(&TrochoidSet::default(), &detail);
+        let f = s.at_time(0.5);
+        for j in 0..20 {
+            let (x, z) = (0.13 * j as f64, -0.07 * j as f64);
+            let d = f.detail_gradient(x, z);
+            let exact = DVec3::new(-d.x, 1.0, -d.y).normalize();
+            assert!((f.shading_normal(x, z) - exact).length() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn split_at_wavelength_sends_short_waves_to_the_bump_map() {
+        let set = TrochoidSet::new(vec![
+            Trochoid::new(1.0, 0.1, 0.0, 1.0, 0.0, 0.0).unwrap(),
+            Trochoid::new(0.01, 10.0, 0.0, 10.0, 0.0, 0.0).unwrap(),
+        ]);
+        let s = SineSet::split_at_wavelength(&set, 1.0);
+        assert_eq!((s.len(), s.detail_len()), (1, 1));
+        assert!((s.height_bounds().1 - 1.0).abs() < 1e-15);
+    }
+}

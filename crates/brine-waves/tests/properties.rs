@@ -1,0 +1,324 @@
+//! Property tests: bounds never exceeded on random points, Lipschitz constants hold on random
+//! pairs and directions, derivatives match finite differences, the Gerstner inversion returns the
+//! point the forward map came from, nothing is NaN over the documented domain.
+
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
+
+use brine_trace::LipschitzSum;
+use brine_waves::{
+    CosineSquared, CosineTwoS, Dispersion, DonelanBanner, Elfouhaily, FitOptions, G, GerstnerSurface, Jonswap,
+    Phillips, PiersonMoskowitz, SineSet, Spectrum, Spreading, Tma, Trochoid, TrochoidSet, TrochoidSum, WaveSurface,
+    fit_trochoids,
+};
+use glam::{DVec2, DVec3};
+use proptest::prelude::*;
+
+/// Cases per property: keeps the whole file under ~20 s in the dev profile.
+const CASES: u32 = 64;
+
+/// Rounding slack of a Lipschitz comparison: `|Δn| ≤ L|Δp| (1 + REL) + ABS`. Heights are sums of
+/// at most 12 terms below 2 m (rounding ~10⁻¹⁵); the Gerstner inversion stops at a residual of
+/// 10⁻¹² m, which moves a height by at most `L·10⁻¹²`.
+const SLACK_REL: f64 = 1e-9;
+const SLACK_ABS: f64 = 1e-9;
+
+/// A random wave set: 1–12 waves, amplitudes 0.01–1.5 m, wavelengths 2–125 m, any direction and
+/// phase, deep-water frequencies, steepnesses sharing a random total `Σ Q ∈ [0, 0.95]` (so `Qᵢ`
+/// and `kᵢAᵢ` are unrelated, as with choppiness ≠ 1).
+fn wave_set() -> impl Strategy<Value = TrochoidSet> {
+    (prop::collection::vec((0.01f64..1.5, 0.05f64..3.0, -PI..PI, 0.0..TAU, 0.01f64..1.0), 1..12), 0.0f64..0.95)
+        .prop_map(|(raw, total)| {
+            let q_sum: f64 = raw.iter().map(|w| w.4).sum();
+            TrochoidSet::new(
+                raw.iter()
+                    .map(|&(a, k, dir, ph, q)| Trochoid::new(a, k, dir, (G * k).sqrt(), ph, total * q / q_sum).unwrap())
+                    .collect(),
+            )
+        })
+}
+
+fn surfaces(set: &TrochoidSet) -> Vec<(&'static str, Box<dyn WaveSurface>)> {
+    vec![
+        ("trochoid sum", Box::new(TrochoidSum::new(set))),
+        ("Gerstner", Box::new(GerstnerSurface::new(set).unwrap())),
+        ("sine set", Box::new(SineSet::new(set))),
+    ]
+}
+
+fn point() -> impl Strategy<Value = (f64, f64, f64)> {
+    (-300.0f64..300.0, -300.0f64..300.0, 0.0f64..100.0)
+}
+
+/// A displacement of random direction and a length spread over five decades (1 mm – 100 m).
+fn offset() -> impl Strategy<Value = DVec2> {
+    (-PI..PI, -3.0f64..2.0).prop_map(|(a, e)| 10f64.powf(e) * DVec2::new(a.cos(), a.sin()))
+}
+
+fn unit3() -> impl Strategy<Value = DVec3> {
+    (-PI..PI, -1.0f64..1.0).prop_map(|(a, y)| {
+        let r = (1.0 - y * y).sqrt();
+        DVec3::new(r * a.cos(), y, r * a.sin())
+    })
+}
+
+/// Checks every bound `LipschitzSum` promises on random points `p`, `q`, a direction `d`.
+fn check_lipschitz_sum(f: &dyn LipschitzSum, p: DVec3, q: DVec3, d: DVec3, t: f64) -> Result<(), TestCaseError> {
+    let bounds = f.zero_set_bounds();
+    let mut sum = 0.0;
+    for i in 0..f.component_count() {
+        let (np, nq) = (f.component(i, p), f.component(i, q));
+        sum += np;
+        let l = f.component_lipschitz(i);
+        prop_assert!(np.is_finite() && l.is_finite());
+        prop_assert!((np - nq).abs() <= l * (p - q).length() * (1.0 + SLACK_REL) + SLACK_ABS, "component {i}: L");
+        let ld = f.component_directional_lipschitz(i, d);
+        prop_assert!(ld <= l * (1.0 + 1e-12) + 1e-15, "component {i}: L(d) = {ld} > L = {l}");
+        let nt = f.component(i, p + t * d);
+        prop_assert!((nt - np).abs() <= ld * t.abs() * (1.0 + SLACK_REL) + SLACK_ABS, "component {i}: L(d)");
+        let m = f.component_min(i, p, q);
+        for s in [0.0, 0.25, 0.5, 0.75, 1.0] {
+            let on = f.component(i, p + s * (q - p));
+            prop_assert!(on >= m - SLACK_ABS, "component {i}: {on} below its minimum {m}");
+        }
+    }
+    let v = f.value(p);
+    prop_assert!((v - sum).abs() <= 1e-12 * (1.0 + v.abs()) + SLACK_ABS, "value {v} ≠ Σ components {sum}");
+    // Above the box F > 0, below it F < 0: no zero outside.
+    let (top, bottom) = (DVec3::new(p.x, bounds.max.y + 1e-6, p.z), DVec3::new(p.x, bounds.min.y - 1e-6, p.z));
+    prop_assert!(f.value(top) > 0.0 && f.value(bottom) < 0.0);
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(CASES))]
+
+    #[test]
+    fn heights_stay_within_bounds_and_are_finite(set in wave_set(), (x, z, t) in point()) {
+        for (name, s) in surfaces(&set) {
+            let (lo, hi) = s.height_bounds();
+            let h = s.height(x, z, t);
+            prop_assert!(h.is_finite() && lo - 1e-12 <= h && h <= hi + 1e-12, "{name}: {h} ∉ [{lo}, {hi}]");
+            prop_assert!(s.gradient(x, z, t).is_finite() && s.velocity(x, z, t).is_finite());
+            prop_assert!(s.displacement(x, z, t).is_finite() && s.jacobian(x, z, t).is_finite());
+            let n = s.normal(x, z, t);
+            prop_assert!((n.length() - 1.0).abs() < 1e-12 && n.y > 0.0);
+        }
+    }
+
+    #[test]
+    fn heights_are_lipschitz_with_the_stated_constant(set in wave_set(), (x, z, t) in point(), d in offset()) {
+        for (name, s) in surfaces(&set) {
+            let l = s.max_slope();
+            let (hp, hq) = (s.height(x, z, t), s.height(x + d.x, z + d.y, t));
+            let (dh, bound) = ((hp - hq).abs(), l * d.length());
+            prop_assert!(dh <= bound * (1.0 + SLACK_REL) + SLACK_ABS, "{name}: |Δh| = {dh} > L|Δp| = {bound}");
+            prop_assert!(s.gradient(x, z, t).length() <= l * (1.0 + SLACK_REL) + SLACK_ABS, "{name}: |∇h| > L");
+        }
+    }
+
+    #[test]
+    fn gradients_match_central_differences(set in wave_set(), (x, z, t) in point()) {
+        // Step 10⁻⁶ m: truncation ~ h²|h'''|/6 stays below 10⁻⁶ of the slope scale even at
+        // Q = 0.95 (|h'''|/|h'| ≲ k²/(1 − Q)⁴ ≈ 10⁷ m⁻²); rounding ~ 10⁻¹⁶ ΣA/h ≈ 10⁻⁹.
+        let h = 1e-6;
+        for (name, s) in surfaces(&set) {
+            let g = s.gradient(x, z, t);
+            let fd = DVec2::new(
+                (s.height(x + h, z, t) - s.height(x - h, z, t)) / (2.0 * h),
+                (s.height(x, z + h, t) - s.height(x, z - h, t)) / (2.0 * h),
+            );
+            let scale = 1.0 + s.max_slope();
+            prop_assert!((g - fd).length() <= 1e-5 * scale, "{name}: ∇h = {g}, FD {fd}");
+        }
+    }
+
+    #[test]
+    fn gerstner_jacobian_and_inversion_match_the_forward_map(set in wave_set(), (x, z, t) in point()) {
+        let g = GerstnerSurface::new(&set).unwrap();
+        let f = g.at_time(t);
+        // Inversion: the rest position maps forward onto the query point.
+        let inv = f.solve(x, z);
+        prop_assert!(inv.iterations < brine_waves::GERSTNER_MAX_ITERATIONS);
+        let p = f.forward(inv.rest);
+        let miss = DVec2::new(p.x - x, p.z - z).length();
+        prop_assert!(miss <= 1e-11, "forward(inverse) off by {miss}");
+        prop_assert!((p.y - f.height(x, z)).abs() < 1e-12);
+        // …and the forward map of a rest position inverts back to it (the map is one-to-one).
+        let u = DVec2::new(z * 0.7 + 3.0, x * 0.3 - 5.0);
+        let fu = f.forward(u);
+        let back = f.rest_position(fu.x, fu.z);
+        let off = (back - u).length();
+        prop_assert!(off <= 1e-10 / (1.0 - g.total_steepness()), "round trip off by {off}");
+        // Jacobian: det of the central-difference derivative of u ↦ x at the rest position.
+        let h = 1e-6;
+        let dx = (f.forward(inv.rest + DVec2::X * h) - f.forward(inv.rest - DVec2::X * h)) / (2.0 * h);
+        let dz = (f.forward(inv.rest + DVec2::Y * h) - f.forward(inv.rest - DVec2::Y * h)) / (2.0 * h);
+        let det = dx.x * dz.z - dx.z * dz.x;
+        prop_assert!((det - f.jacobian(x, z)).abs() < 1e-6, "J = {}, FD {det}", f.jacobian(x, z));
+        prop_assert!(f.jacobian(x, z) >= 1.0 - g.total_steepness() - 1e-12);
+    }
+
+    #[test]
+    fn one_trochoid_jacobian_is_the_particle_map_derivative(
+        (a, k, dir, ph, q) in (0.01f64..1.5, 0.05f64..3.0, -PI..PI, 0.0..TAU, 0.0f64..0.99),
+        u in -100.0f64..100.0,
+    ) {
+        // x(u) = u − (Q/k) sin φ(u) along d̂: dx/du = 1 − Q cos φ; the trochoid sum's Jacobian at
+        // x(u) must equal it (central difference, step 10⁻⁶).
+        let w = Trochoid::new(a, k, dir, (G * k).sqrt(), ph, q).unwrap();
+        let sum = TrochoidSum::new(&TrochoidSet::new(vec![w]));
+        let along = |s: f64| s - q / k * (k * s + ph).sin();
+        let h = 1e-6;
+        let fd = (along(u + h) - along(u - h)) / (2.0 * h);
+        let d = w.direction_vector();
+        let x = along(u) * d;
+        prop_assert!((sum.jacobian(x.x, x.y, 0.0) - fd).abs() < 1e-7);
+        let disp = sum.displacement(x.x, x.y, 0.0);
+        prop_assert!((disp - (along(u) - u) * d).length() < 1e-9);
+    }
+
+    #[test]
+    fn particle_velocity_satisfies_the_kinematic_condition(set in wave_set(), (x, z, t) in point()) {
+        // A surface particle stays on the surface: v_y = ∂h/∂t + ∇h·v_xz (exact for the Gerstner
+        // sum; for a sine set v_y = ∂h/∂t, its points moving only vertically).
+        let dt = 1e-6;
+        let g = GerstnerSurface::new(&set).unwrap();
+        let v = g.velocity(x, z, t);
+        let dhdt = (g.height(x, z, t + dt) - g.height(x, z, t - dt)) / (2.0 * dt);
+        let rhs = dhdt + g.gradient(x, z, t).dot(DVec2::new(v.x, v.z));
+        let scale: f64 = set.waves().iter().map(|w| w.amplitude() * w.omega()).sum::<f64>() * (1.0 + g.slope_bound());
+        prop_assert!((v.y - rhs).abs() < 1e-5 * scale, "Gerstner: v_y = {}, ∂h/∂t + ∇h·v = {rhs}", v.y);
+        let s = SineSet::new(&set);
+        let dhdt = (s.height(x, z, t + dt) - s.height(x, z, t - dt)) / (2.0 * dt);
+        prop_assert!((s.velocity(x, z, t).y - dhdt).abs() < 1e-5 * scale);
+    }
+
+    #[test]
+    fn lipschitz_sums_keep_their_bounds(
+        set in wave_set(),
+        (x, z, t) in point(),
+        y in -4.0f64..4.0,
+        d in unit3(),
+        (e, q_dir) in (-3.0f64..1.5, unit3()),
+        (step_e, step_sign) in (-3.0f64..1.7, any::<bool>()),
+    ) {
+        // Separations and steps over four decades (1 mm – 30/50 m): short ones test the slope
+        // bound, long ones the value bounds.
+        let p = DVec3::new(x, y, z);
+        let q = p + 10f64.powf(e) * q_dir;
+        let step = if step_sign { 10f64.powf(step_e) } else { -(10f64.powf(step_e)) };
+        let sum = TrochoidSum::new(&set);
+        check_lipschitz_sum(&sum.at_time(t), p, q, d, step)?;
+        let sine = SineSet::new(&set);
+        check_lipschitz_sum(&sine.at_time(t), p, q, d, step)?;
+        let gerstner = GerstnerSurface::new(&set).unwrap();
+        check_lipschitz_sum(&gerstner.at_time(t), p, q, d, step)?;
+    }
+
+    #[test]
+    fn simd_lanes_match_the_scalar_sums(set in wave_set(), (x, z, t) in point()) {
+        let scale = set.total_amplitude();
+        let sum = TrochoidSum::new(&set);
+        let f = sum.at_time(t);
+        prop_assert!((f.height_lanes(x, z) - f.height(x, z)).abs() <= 1e-13 * (1.0 + scale));
+        let sine = SineSet::new(&set);
+        let g = sine.at_time(t);
+        prop_assert!((g.height_lanes(x, z) - g.height(x, z)).abs() <= 1e-13 * (1.0 + scale));
+        let (xs, zs) = ([x, x + 1.0, x - 7.5], [z, z * 0.5, -z]);
+        let mut out = [0.0; 3];
+        sum.heights(&xs, &zs, t, &mut out);
+        for j in 0..3 {
+            prop_assert!((out[j] - sum.height(xs[j], zs[j], t)).abs() <= 1e-13 * (1.0 + scale));
+        }
+    }
+
+    #[test]
+    fn spectra_are_finite_and_non_negative(
+        u10 in 0.5f64..60.0,
+        fetch in 100.0f64..1e7,
+        depth in 0.5f64..1e4,
+        omega in 0.01f64..200.0,
+    ) {
+        let list: Vec<Box<dyn Spectrum>> = vec![
+            Box::new(PiersonMoskowitz::from_u10(u10).unwrap()),
+            Box::new(Jonswap::from_fetch(u10, fetch).unwrap()),
+            Box::new(Tma::from_fetch(u10, fetch, depth).unwrap()),
+            Box::new(Phillips::from_wind(u10).unwrap()),
+            Box::new(Elfouhaily::from_fetch(u10, fetch).unwrap()),
+        ];
+        for s in &list {
+            let v = s.s_omega(omega);
+            prop_assert!(v.is_finite() && v >= 0.0, "S({omega}) = {v}");
+            let k = s.dispersion().wavenumber(omega);
+            prop_assert!(k.is_finite() && k > 0.0 && s.s_k(k).is_finite() && s.s_k(k) >= 0.0);
+            prop_assert!(s.peak_omega().is_finite() && s.peak_omega() > 0.0);
+        }
+    }
+
+    #[test]
+    fn spreadings_sample_inside_their_support(omega in 0.05f64..30.0, u in 0.0f64..1.0, u10 in 1.0f64..40.0) {
+        let e = Elfouhaily::fully_developed(u10).unwrap();
+        let list: Vec<(Box<dyn Spreading>, f64)> = vec![
+            (Box::new(CosineTwoS::hasselmann(0.8).unwrap()), PI),
+            (Box::new(CosineTwoS::mitsuyasu(0.8, u10).unwrap()), PI),
+            (Box::new(DonelanBanner::new(0.8).unwrap()), PI),
+            (Box::new(CosineSquared::downwind()), FRAC_PI_2),
+            (Box::new(e.spreading(brine_waves::Directions::Downwind)), FRAC_PI_2),
+            (Box::new(e.spreading(brine_waves::Directions::BothWays)), PI),
+        ];
+        for (d, half) in &list {
+            let th = d.sample(omega, u);
+            prop_assert!(th.is_finite() && th.abs() <= half + 1e-12, "θ = {th}");
+            let dens = d.density(th, omega);
+            prop_assert!(dens.is_finite() && dens >= 0.0);
+        }
+    }
+
+    #[test]
+    fn dispersion_inverts_for_any_depth(depth in 0.1f64..1e4, k in 1e-4f64..1e4, capillary in any::<bool>()) {
+        let d = if capillary {
+            Dispersion::capillary_gravity(depth, 0.074, 1025.0).unwrap()
+        } else {
+            Dispersion::finite_depth(depth).unwrap()
+        };
+        let w = d.omega(k);
+        prop_assert!(w.is_finite() && w > 0.0);
+        prop_assert!((d.wavenumber(w) / k - 1.0).abs() < 1e-11);
+        prop_assert!(d.group_velocity(k) > 0.0);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    #[test]
+    fn fits_respect_the_cap_and_the_variance(
+        kind in 0usize..5,
+        u10 in 2.0f64..40.0,
+        n in 30usize..120,
+        seed in any::<u64>(),
+        choppiness in 0.0f64..20.0,
+        wind_direction in -PI..PI,
+    ) {
+        let s: Box<dyn Spectrum> = match kind {
+            0 => Box::new(PiersonMoskowitz::from_u10(u10).unwrap()),
+            1 => Box::new(Jonswap::from_fetch(u10, 5e4).unwrap()),
+            2 => Box::new(Tma::from_fetch(u10, 5e4, 15.0).unwrap()),
+            3 => Box::new(Phillips::from_wind(u10).unwrap()),
+            _ => Box::new(Elfouhaily::from_fetch(u10, 5e4).unwrap()),
+        };
+        let d = DonelanBanner::new(s.peak_omega()).unwrap();
+        let o = FitOptions { choppiness, wind_direction, ..FitOptions::default() };
+        let set = fit_trochoids(s.as_ref(), &d, n, seed, &o).unwrap();
+        prop_assert_eq!(set.len(), n);
+        prop_assert!(set.total_steepness() <= o.max_total_steepness + 1e-12);
+        for w in set.waves() {
+            prop_assert!(w.amplitude().is_finite() && w.wavenumber() > 0.0 && w.phase() >= 0.0 && w.phase() < TAU);
+            prop_assert!((w.direction() - wind_direction).abs() <= PI + 1e-12);
+        }
+        let wp = s.peak_omega();
+        let band = s.variance_between(0.5 * wp, 12.0 * wp);
+        prop_assert!((set.variance() / band - 1.0).abs() < 0.01);
+        prop_assert!(GerstnerSurface::new(&set).is_ok());
+    }
+}
