@@ -14,7 +14,7 @@ fn one_and_two_threads_write_identical_files() {
         let frame = render(&scene, &RenderOptions { threads: Some(threads) }, &|| {}).unwrap();
         for ext in ["png", "exr"] {
             let path = dir.path().join(format!("t{threads}.{ext}"));
-            write_image(&path, frame.width, frame.height, &frame.pixels, scene.output.exposure_ev).unwrap();
+            write_image(&path, frame.width, frame.height, &frame.pixels, frame.exposure_ev).unwrap();
             bytes.push(std::fs::read(path).unwrap());
         }
     }

@@ -25,7 +25,7 @@ fn golden_dir() -> PathBuf {
 /// Renders `scene` and returns its 8-bit sRGB bytes.
 fn render_rgb8(scene: &Scene) -> Vec<u8> {
     let frame = render(scene, &RenderOptions::default(), &|| {}).expect("scene renders");
-    let scale = tonemap::exposure_scale(scene.output.exposure_ev);
+    let scale = tonemap::exposure_scale(frame.exposure_ev);
     frame.pixels.iter().flat_map(|p| tonemap::to_srgb8(*p, scale)).collect()
 }
 

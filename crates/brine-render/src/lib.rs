@@ -14,7 +14,7 @@
 //! scene.camera.width = 160;
 //! scene.camera.height = 90;
 //! let frame = render(&scene, &RenderOptions::default(), &|| {})?;
-//! write_image("small.png".as_ref(), frame.width, frame.height, &frame.pixels, scene.output.exposure_ev)?;
+//! write_image("small.png".as_ref(), frame.width, frame.height, &frame.pixels, frame.exposure_ev)?;
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 

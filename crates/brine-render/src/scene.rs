@@ -205,9 +205,50 @@ impl Default for CameraConfig {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
 #[serde(rename_all = "kebab-case")]
 pub enum SpectrumKind {
-    /// Pierson–Moskowitz 1964, fully developed sea.
+    /// Pierson–Moskowitz 1964, fully developed sea (Darles et al. 2007).
     #[default]
     PiersonMoskowitz,
+    /// JONSWAP (Hasselmann et al. 1973), fetch-limited; uses `fetch_km` and `gamma`.
+    Jonswap,
+    /// Phillips (Tessendorf 2001).
+    Phillips,
+    /// TMA (Bouws et al. 1985): JONSWAP in water of depth `depth_m`.
+    Tma,
+    /// Elfouhaily et al. 1997 unified spectrum (Li Ying et al. 2018); uses `fetch_km`.
+    Elfouhaily,
+}
+
+/// Directional spreading of the fit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum SpreadingKind {
+    /// The spectrum's natural choice: Elfouhaily's own `Δ(k)` for `elfouhaily`, the cos-2s law of
+    /// Hasselmann et al. 1980 otherwise.
+    #[default]
+    Auto,
+    /// cos-2s, Hasselmann et al. 1980.
+    Cos2s,
+    /// cos-2s, Mitsuyasu et al. 1975 (wind-dependent).
+    Mitsuyasu,
+    /// Donelan, Hamilton & Hui 1985 sech² with Banner's extension.
+    DonelanBanner,
+    /// `(2/π) cos²θ`.
+    CosSquared,
+    /// Elfouhaily et al. 1997 `Δ(k)`.
+    Elfouhaily,
+}
+
+/// Which surface is traced.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum SurfaceKind {
+    /// Sum of per-wave trochoid height fields (Darles et al. 2007; the default).
+    #[default]
+    Trochoids,
+    /// The true Gerstner sum (horizontal displacements composed).
+    Gerstner,
+    /// Chen et al. 2007 sine waves with normal-perturbing detail waves.
+    Sine,
 }
 
 /// `[sea]`: the wind sea.
@@ -216,11 +257,22 @@ pub enum SpectrumKind {
 pub struct SeaConfig {
     /// Ocean spectrum.
     pub spectrum: SpectrumKind,
+    /// Directional spreading.
+    pub spreading: SpreadingKind,
+    /// Surface model traced.
+    pub surface: SurfaceKind,
     /// Wind speed 10 m above the sea, `U₁₀` (m s⁻¹, `[0, 60]`; 0 is a flat calm).
     pub wind_speed_m_s: f64,
     /// Direction the wind blows toward (°, from +x (east) toward +z (south)).
     pub wind_direction_deg: f64,
-    /// Number of trochoid waves (`[0, 10000]`).
+    /// Fetch (km, `[0.1, 10⁵]`) of `jonswap`, `tma`, `elfouhaily`; fully developed when absent
+    /// (JONSWAP and TMA then use 100 km).
+    pub fetch_km: Option<f64>,
+    /// Peak enhancement `γ` of `jonswap`/`tma` (`[1, 10]`, default 3.3).
+    pub gamma: Option<f64>,
+    /// Water depth of `tma` (m, `[0.5, 10⁴]`).
+    pub depth_m: Option<f64>,
+    /// Number of trochoid waves of the wind sea (`[0, 10000]`).
     pub waves: u32,
     /// Choppiness of the fit (`[0, 100]`): each wave's steepness is `c·kA` before the cap.
     pub choppiness: f64,
@@ -231,19 +283,58 @@ pub struct SeaConfig {
     /// Distance up to which waves are traced as geometry (m, `[10, 10⁶]`); beyond it the sea is
     /// its mean plane shaded with the slope statistics of all waves.
     pub trace_distance_m: f64,
+    /// A swell from a distant storm, added to the wind sea.
+    pub swell: Option<SwellConfig>,
 }
 
 impl Default for SeaConfig {
     fn default() -> Self {
         Self {
             spectrum: SpectrumKind::PiersonMoskowitz,
+            spreading: SpreadingKind::Auto,
+            surface: SurfaceKind::Trochoids,
             wind_speed_m_s: 10.0,
             wind_direction_deg: 20.0,
+            fetch_km: None,
+            gamma: None,
+            depth_m: None,
             waves: 50,
             choppiness: 2.5,
             seed: 1,
             time_s: 0.0,
             trace_distance_m: 3000.0,
+            swell: None,
+        }
+    }
+}
+
+/// `[sea.swell]`: a narrow JONSWAP swell of given height and period.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct SwellConfig {
+    /// Significant wave height `H_s = 4√m₀` (m, `(0, 20]`).
+    pub significant_height_m: f64,
+    /// Peak period (s, `[4, 30]`).
+    pub peak_period_s: f64,
+    /// Direction the swell travels toward (°, from +x toward +z).
+    pub direction_deg: f64,
+    /// Number of waves (`[1, 1000]`).
+    pub waves: u32,
+    /// Exponent `s` of its cos-2s spreading (`[1, 200]`; larger is narrower).
+    pub spreading_s: f64,
+    /// Peak enhancement `γ` (`[1, 10]`).
+    pub gamma: f64,
+}
+
+impl Default for SwellConfig {
+    fn default() -> Self {
+        Self {
+            significant_height_m: 1.0,
+            peak_period_s: 12.0,
+            direction_deg: 0.0,
+            waves: 12,
+            spreading_s: 40.0,
+            gamma: 3.3,
         }
     }
 }

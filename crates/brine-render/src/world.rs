@@ -8,14 +8,15 @@ use brine_optics::{
 use brine_sky::{CloudParams, MoonParams, Sky, SkyParams};
 use brine_trace::{LipschitzSum, Method, TraceOptions};
 use brine_waves::{
-    CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, Trochoid, TrochoidSet, TrochoidSum, fit_trochoids,
+    CosineSquared, CosineTwoS, Directions, DonelanBanner, Elfouhaily, FitOptions, Jonswap, Phillips, PiersonMoskowitz,
+    SeaComponent, Spectrum, Spreading, SteepnessLimit, Tma, Trochoid, TrochoidSet, TrochoidSum, fit_sea_state,
 };
 use glam::{DVec2, DVec3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 use crate::camera::{Camera, direction_from_bearing};
-use crate::scene::{FloorConfig, Scene, SkyConfig, SpectrumKind, SunModelKind};
+use crate::scene::{FloorConfig, Scene, SeaConfig, SkyConfig, SpectrumKind, SpreadingKind, SunModelKind, SwellConfig};
 
 /// Why a scene could not be turned into models.
 #[derive(Debug, thiserror::Error)]
@@ -169,6 +170,93 @@ fn sun_and_moon(scene: &Scene) -> Result<(DVec3, f64, Option<MoonParams>), World
     Ok((DVec3::from_array(sun.horizontal().direction()), sun.distance_au, Some(moon)))
 }
 
+/// The spectrum of `[sea]` (`U₁₀ > 0`).
+fn sea_spectrum(s: &SeaConfig) -> Result<Box<dyn Spectrum>, brine_waves::WaveError> {
+    let u = s.wind_speed_m_s;
+    let fetch_m = s.fetch_km.map(|f| f * 1000.0);
+    let jonswap = || -> Result<Jonswap, brine_waves::WaveError> {
+        let j = Jonswap::from_fetch(u, fetch_m.unwrap_or(100_000.0))?;
+        match s.gamma {
+            Some(g) => j.with_peak_shape(g, 0.07, 0.09),
+            None => Ok(j),
+        }
+    };
+    Ok(match s.spectrum {
+        SpectrumKind::PiersonMoskowitz => Box::new(PiersonMoskowitz::from_u10(u)?),
+        SpectrumKind::Jonswap => Box::new(jonswap()?),
+        SpectrumKind::Phillips => Box::new(Phillips::from_wind(u)?),
+        SpectrumKind::Tma => Box::new(Tma::new(jonswap()?, s.depth_m.unwrap_or(f64::INFINITY))?),
+        SpectrumKind::Elfouhaily => Box::new(match fetch_m {
+            Some(f) => Elfouhaily::from_fetch(u, f)?,
+            None => Elfouhaily::new(u, 0.84)?,
+        }),
+    })
+}
+
+/// The wind sea (and swell) of `[sea]` as one trochoid set, fitted under one steepness cap
+/// (Thon & Ghazanfarpour 2002 as in Darles et al. 2007 §3; brine-waves `fit_sea_state`).
+fn fit_sea(s: &SeaConfig) -> Result<TrochoidSet, WorldError> {
+    let err = |e: brine_waves::WaveError| WorldError::Model(e.to_string());
+    let wind_angle = s.wind_direction_deg.to_radians();
+    let sea_options = FitOptions { wind_direction: wind_angle, choppiness: s.choppiness, ..FitOptions::default() };
+    let mut spectra: Vec<Box<dyn Spectrum>> = Vec::new();
+    let mut spreadings: Vec<Box<dyn Spreading>> = Vec::new();
+    let mut counts = Vec::new();
+    let mut options = Vec::new();
+    if s.wind_speed_m_s > 0.0 && s.waves > 0 {
+        let spectrum = sea_spectrum(s).map_err(err)?;
+        let wp = spectrum.peak_omega();
+        let spreading: Box<dyn Spreading> = match (s.spreading, s.spectrum) {
+            (SpreadingKind::Auto, SpectrumKind::Elfouhaily) | (SpreadingKind::Elfouhaily, _) => {
+                let e = match s.fetch_km {
+                    Some(f) => Elfouhaily::from_fetch(s.wind_speed_m_s, f * 1000.0),
+                    None => Elfouhaily::new(s.wind_speed_m_s, 0.84),
+                }
+                .map_err(err)?;
+                Box::new(e.spreading(Directions::Downwind))
+            }
+            (SpreadingKind::Auto | SpreadingKind::Cos2s, _) => Box::new(CosineTwoS::hasselmann(wp).map_err(err)?),
+            (SpreadingKind::Mitsuyasu, _) => Box::new(CosineTwoS::mitsuyasu(wp, s.wind_speed_m_s).map_err(err)?),
+            (SpreadingKind::DonelanBanner, _) => Box::new(DonelanBanner::new(wp).map_err(err)?),
+            (SpreadingKind::CosSquared, _) => Box::new(CosineSquared::downwind()),
+        };
+        spectra.push(spectrum);
+        spreadings.push(spreading);
+        counts.push(s.waves as usize);
+        options.push(sea_options);
+    }
+    if let Some(w) = &s.swell {
+        let (spectrum, spreading) = swell_spectrum(w).map_err(err)?;
+        spectra.push(Box::new(spectrum));
+        spreadings.push(Box::new(spreading));
+        counts.push(w.waves as usize);
+        options.push(FitOptions { wind_direction: w.direction_deg.to_radians(), ..sea_options });
+    }
+    if spectra.is_empty() {
+        return Ok(TrochoidSet::default());
+    }
+    let components: Vec<SeaComponent<'_>> = (0..spectra.len())
+        .map(|i| SeaComponent {
+            spectrum: spectra[i].as_ref(),
+            spreading: spreadings[i].as_ref(),
+            n_waves: counts[i],
+            options: options[i],
+        })
+        .collect();
+    fit_sea_state(&components, s.seed, sea_options.max_total_steepness, SteepnessLimit::ScaleAll).map_err(err)
+}
+
+/// A swell: JONSWAP of peak `ω_p = 2π/T_p` and enhancement `γ`, with the Phillips constant
+/// chosen so that `4√m₀ = H_s`, and a constant-`s` cos-2s spreading.
+fn swell_spectrum(w: &SwellConfig) -> Result<(Jonswap, CosineTwoS), brine_waves::WaveError> {
+    let omega_p = std::f64::consts::TAU / w.peak_period_s;
+    let unit = Jonswap::new(1e-3, omega_p)?.with_peak_shape(w.gamma, 0.07, 0.09)?;
+    let target_m0 = (w.significant_height_m / 4.0).powi(2);
+    let alpha = (1e-3 * target_m0 / unit.m0()).clamp(1e-9, 0.99);
+    let spectrum = Jonswap::new(alpha, omega_p)?.with_peak_shape(w.gamma, 0.07, 0.09)?;
+    Ok((spectrum, CosineTwoS::constant(w.spreading_s)?))
+}
+
 /// Wind speed 12.5 m above the sea from `U₁₀` by the neutral logarithmic profile with roughness
 /// length `z₀ = 2×10⁻⁴ m`: `U₁₂.₅ = U₁₀ ln(12.5/z₀)/ln(10/z₀)` (factor 1.0206).
 fn u12_5_from_u10(u10: f64) -> f64 {
@@ -186,18 +274,7 @@ impl World {
         let s = &scene.sea;
         let wind_angle = s.wind_direction_deg.to_radians();
         let wind = DVec3::new(wind_angle.cos(), 0.0, wind_angle.sin());
-        let set = if s.wind_speed_m_s <= 0.0 || s.waves == 0 {
-            TrochoidSet::default()
-        } else {
-            let spectrum = match s.spectrum {
-                SpectrumKind::PiersonMoskowitz => {
-                    PiersonMoskowitz::from_u10(s.wind_speed_m_s).map_err(|e| model(&e))?
-                }
-            };
-            let spreading = CosineTwoS::hasselmann(spectrum.peak_omega()).map_err(|e| model(&e))?;
-            let options = FitOptions { wind_direction: wind_angle, choppiness: s.choppiness, ..FitOptions::default() };
-            fit_trochoids(&spectrum, &spreading, s.waves as usize, s.seed, &options).map_err(|e| model(&e))?
-        };
+        let set = fit_sea(s)?;
         let sea = TrochoidSum::new(&set);
 
         let k = &scene.sky;
@@ -224,13 +301,7 @@ impl World {
 
         let variance_total =
             SlopeVariance::cox_munk_clean(u12_5_from_u10(s.wind_speed_m_s).min(60.0)).map_err(|e| model(&e))?;
-        let (mut rx, mut ry) = (0.0, 0.0);
-        for w in set.waves() {
-            let c = (w.direction() - wind_angle).cos();
-            let msq = w.mean_square_slope();
-            rx += msq * c * c;
-            ry += msq * (1.0 - c * c);
-        }
+        let (rx, ry) = set.slope_variances(wind_angle);
         let variance_unresolved = variance_total.minus(rx, ry);
 
         // Downwelling irradiance just below a flat surface: the sun's and the moon's share
