@@ -4,7 +4,13 @@
 //! heuristic with no equation. Brine uses the physically based alternative of Spencer, Shirley,
 //! Zimmerman & Greenberg (1995): the photopic point-spread function `P(θ)` of the eye, convolved
 //! with the linear image. The convolution is energy-preserving: each pixel keeps the share of its
-//! energy that lands inside it and spreads the rest over the image.
+//! energy that lands inside it and spreads the rest over the image. The renderer spreads radiance
+//! only up to [`GLARE_CLIP_WHITES`] times the exposure's white: a sun disc 10⁵ times brighter
+//! than the sky would otherwise veil the whole frame (as it does the eye looking at it); the
+//! clip keeps the veil to what a camera lens shows. A stated rendering choice.
+
+/// Radiance spread by the glare filter, in multiples of the exposure's white.
+pub const GLARE_CLIP_WHITES: f64 = 64.0;
 
 use std::sync::Arc;
 
@@ -126,10 +132,16 @@ impl Glare {
         }
     }
 
-    /// Convolves `pixels` (row-major, `width × height`, linear radiance) with the PSF. Two
-    /// channels share one complex transform (the kernel is real), so three channels cost two.
-    pub fn apply(&self, pixels: &mut [DVec3]) {
+    /// Convolves `pixels` (row-major, `width × height`, linear radiance) with the PSF, spreading
+    /// each pixel's radiance only up to `clip` (per channel; `f64::INFINITY` spreads everything):
+    /// the part above stays in its pixel. Two channels share one complex transform (the kernel
+    /// is real), so three channels cost two.
+    pub fn apply(&self, pixels: &mut [DVec3], clip: f64) {
         assert_eq!(pixels.len(), self.width * self.height, "glare: image size mismatch");
+        let excess: Vec<DVec3> = pixels.iter().map(|p| (*p - DVec3::splat(clip)).max(DVec3::ZERO)).collect();
+        for (p, e) in pixels.iter_mut().zip(&excess) {
+            *p -= *e;
+        }
         let n = (self.pw * self.ph) as f64;
         let mut rg = vec![Complex::new(0.0, 0.0); self.pw * self.ph];
         let mut b = vec![Complex::new(0.0, 0.0); self.pw * self.ph];
@@ -150,7 +162,8 @@ impl Glare {
         for y in 0..self.height {
             for x in 0..self.width {
                 let (c, d) = (rg[y * self.pw + x] / n, b[y * self.pw + x] / n);
-                pixels[y * self.width + x] = DVec3::new(c.re.max(0.0), c.im.max(0.0), d.re.max(0.0));
+                let i = y * self.width + x;
+                pixels[i] = DVec3::new(c.re.max(0.0), c.im.max(0.0), d.re.max(0.0)) + excess[i];
             }
         }
     }
@@ -179,7 +192,7 @@ mod tests {
         let mut img = vec![DVec3::ZERO; w * h];
         img[15 * w + 20] = DVec3::new(1000.0, 500.0, 250.0);
         let g = Glare::new(w, h, 0.05f64.to_radians());
-        g.apply(&mut img);
+        g.apply(&mut img, f64::INFINITY);
         let total: DVec3 = img.iter().copied().sum();
         // The kernel sums to 1 (its transform at frequency 0); energy spread beyond the 2° × 1.5°
         // image is lost, a few per cent of the f₂ tail.

@@ -139,10 +139,16 @@ pub fn render_world(
             .map_err(|e| RenderError::Threads { threads: n, message: e.to_string() })?
             .install(|| work(&mut pixels, &mut aovs)),
     };
+    let exposure_ev = world.exposure_ev.unwrap_or_else(|| {
+        let l = crate::world::log_average_luminance_cd_m2(&pixels);
+        (crate::world::auto_exposure_ev(l, world.illuminance_lx) - world.exposure_compensation_ev).clamp(-10.0, 30.0)
+    });
     if scene.phenomena.glare {
-        crate::glare::Glare::new(w as usize, h as usize, world.camera.pixel_angle()).apply(&mut pixels);
+        let white = 1.0 / crate::tonemap::exposure_scale(exposure_ev);
+        crate::glare::Glare::new(w as usize, h as usize, world.camera.pixel_angle())
+            .apply(&mut pixels, crate::glare::GLARE_CLIP_WHITES * white);
     }
-    Ok(Frame { width: w, height: h, pixels, aovs, stats, exposure_ev: world.exposure_ev })
+    Ok(Frame { width: w, height: h, pixels, aovs, stats, exposure_ev })
 }
 
 /// What one camera sample returns.
@@ -293,7 +299,39 @@ fn shade_surface(
         Some(t) => water_column_radiance(world, p, t, stats),
         None => DVec3::ZERO,
     };
-    f * sky + sun + (1.0 - f) * below / (WATER_IOR * WATER_IOR)
+    f * sky + sun + (1.0 - f) * below / (WATER_IOR * WATER_IOR) + crest_radiance(world, p, v, n, stats)
+}
+
+/// Longest path through a crest followed for the dipole (m): beyond it the light is gone.
+const MAX_CREST_THICKNESS_M: f64 = 8.0;
+
+/// Sun light through a thin crest (Jensen et al. 2001 dipole, brine-optics `crest_radiance`):
+/// the crest's thickness is the distance from `p` back along the sun's ray refracted by a level
+/// surface to where it entered the water, found by tracing inside the water with the same tracer.
+fn crest_radiance(world: &World, p: DVec3, v: DVec3, n: DVec3, stats: &mut TraceStats) -> DVec3 {
+    let Some(materials) = &world.crest else { return DVec3::ZERO };
+    let sun = world.sky.sun();
+    let l = sun.direction;
+    if sun.irradiance_rgb == DVec3::ZERO || l.dot(n) > 0.2 {
+        return DVec3::ZERO;
+    }
+    let Some(t_sun) = refract(-l, DVec3::Y, 1.0, WATER_IOR) else { return DVec3::ZERO };
+    let field = world.sea.at_time(world.time);
+    let Ok(ray) = Ray::new(p - 1e-3 * n, -t_sun) else { return DVec3::ZERO };
+    let options = TraceOptions { t_max: MAX_CREST_THICKNESS_M, ..world.trace };
+    let Some(exit) = trace(&field, &ray, &options, stats) else { return DVec3::ZERO };
+    let n_entry = field.normal(exit.point.x, exit.point.z);
+    let cos_i = l.dot(n_entry);
+    if cos_i <= 0.0 {
+        return DVec3::ZERO;
+    }
+    let cos_o = v.dot(n).clamp(0.0, 1.0);
+    let e = sun.irradiance_rgb;
+    DVec3::new(
+        materials[0].crest_radiance(e.x, cos_i, cos_o, exit.t),
+        materials[1].crest_radiance(e.y, cos_i, cos_o, exit.t),
+        materials[2].crest_radiance(e.z, cos_i, cos_o, exit.t),
+    )
 }
 
 /// Diffuse radiance of the water body at depth `z` (m), `L_df(0) e^{−K_d z}`, toward a camera

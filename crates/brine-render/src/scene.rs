@@ -142,11 +142,13 @@ pub struct PhenomenaConfig {
     pub aerial_perspective: bool,
     /// The cloud layers of `[sky.clouds]`.
     pub clouds: bool,
+    /// Sun light through thin wave crests (Jensen et al. 2001 dipole, Li Ying et al. 2018 §3.3).
+    pub subsurface: bool,
 }
 
 impl Default for PhenomenaConfig {
     fn default() -> Self {
-        Self { glare: true, aerial_perspective: true, clouds: true }
+        Self { glare: true, aerial_perspective: true, clouds: true, subsurface: true }
     }
 }
 
@@ -397,9 +399,9 @@ pub struct OutputConfig {
     /// Manual exposure as EV₁₀₀ (`[−10, 30]`): the luminance mapped to white before the tone
     /// curve is `1.2 · 2^EV` cd m⁻² (saturation-based exposure, ISO 12232). Automatic when absent.
     pub exposure_ev: Option<f64>,
-    /// Exposure compensation of the automatic exposure (EV, `[−10, 10]`; positive is brighter):
-    /// `EV = log₂(E/2.5 lx) − compensation` with `E` the horizontal illuminance of sun, moon and
-    /// sky (incident-light meter calibration `C = 250`).
+    /// Exposure compensation of the automatic exposure (EV, `[−10, 10]`; positive is brighter).
+    /// The automatic exposure meters the frame's log-average luminance (ISO 2720 reflected-light
+    /// calibration) and darkens twilight and night (see `auto_exposure_ev`).
     pub exposure_compensation_ev: f64,
     /// Write the output variables (depth, normal, foam, whitecap, evaluations) as extra EXR
     /// channels (`.exr` only).
@@ -408,7 +410,7 @@ pub struct OutputConfig {
 
 impl Default for OutputConfig {
     fn default() -> Self {
-        Self { path: PathBuf::from("ocean.png"), exposure_ev: None, exposure_compensation_ev: -0.5, aovs: false }
+        Self { path: PathBuf::from("ocean.png"), exposure_ev: None, exposure_compensation_ev: 0.0, aovs: false }
     }
 }
 

@@ -2,8 +2,8 @@
 
 use brine_ephem::{Atmosphere, Observer, Options as EphemOptions, SunModel, moon_position, parse_utc, sun_position};
 use brine_optics::{
-    DarlesWater, JerlovType, RgbBands, SlopeVariance, WATER_IOR, WaterBody, WaterRgb, fresnel_dielectric,
-    hemispherical_fresnel_reflectance,
+    DarlesWater, DipoleMaterial, JerlovType, RgbBands, SlopeVariance, WATER_IOR, WaterBody, WaterRgb,
+    fresnel_dielectric, hemispherical_fresnel_reflectance,
 };
 use brine_sky::{CloudParams, MoonParams, Sky, SkyParams};
 use brine_trace::{LipschitzSum, Method, TraceOptions};
@@ -52,33 +52,67 @@ pub struct World {
     pub floor: Option<Floor>,
     /// `true` when the camera is below the sea surface.
     pub underwater: bool,
+    /// Dipole materials of the water per channel (R, G, B) for light through thin crests, when
+    /// sub-surface scattering is on.
+    pub crest: Option<[DipoleMaterial; 3]>,
     /// Options of the tracer.
     pub trace: TraceOptions,
     /// The camera.
     pub camera: Camera,
-    /// Exposure of the frame (EV₁₀₀), from the scene or automatic.
-    pub exposure_ev: f64,
+    /// Manual exposure (EV₁₀₀), or `None` for automatic.
+    pub exposure_ev: Option<f64>,
+    /// Compensation of the automatic exposure (EV, positive is brighter).
+    pub exposure_compensation_ev: f64,
+    /// Horizontal illuminance of sun, moon and sky at sea level (lx).
+    pub illuminance_lx: f64,
 }
 
 /// Illuminance below which the automatic exposure stops following the light fully (lx), about
 /// the end of civil twilight's brightest part.
 pub const NIGHT_ADAPTATION_LX: f64 = 1000.0;
 
-/// Automatic exposure from the horizontal illuminance `E` (lx).
+/// Reflected-light meter calibration constant `K` (cd s m⁻²) of ISO 2720.
+pub const METER_K: f64 = 12.5;
+
+/// Automatic exposure of a frame from the log-average luminance `L̄` of its pixels (cd m⁻²) and
+/// the horizontal illuminance `E` of sun, moon and sky (lx).
 ///
-/// Above [`NIGHT_ADAPTATION_LX`], `EV₁₀₀ = log₂(E/2.5)`: the exposure an incident-light meter with
-/// calibration constant `C = 250 lx·s` sets at ISO 100, so a sunny and an overcast sea look alike.
-/// Below it the exposure follows the light with a third of the slope,
-/// `EV₁₀₀ = log₂(E/2.5) + ⅓ log₂(E₀/E)`, so that twilight and night stay dark as the eye sees them
-/// (a full-moon sea is about 4 EV darker than a fully compensated exposure) — a stated rendering
-/// choice, not a model of the eye's adaptation.
+/// `EV₁₀₀ = log₂(L̄ · 100/K) + ⅓ log₂(E₀/E)⁺`: a reflected-light meter (ISO 2720, `K = 12.5`)
+/// reading the frame, so that the scene's mean maps to middle grey whether the view faces the sun
+/// or not; below [`NIGHT_ADAPTATION_LX`] (`E₀`) the exposure follows the light with a third of the
+/// slope, so that twilight and night stay dark as the eye sees them (a full-moon sea is about
+/// 4 EV darker than a fully compensated exposure) — a stated rendering choice, not a model of the
+/// eye's adaptation.
 ///
 /// # References
-/// ISO 2720:1974 (incident-light meter calibration).
-pub fn auto_exposure_ev(illuminance_lx: f64) -> f64 {
-    let e = illuminance_lx.max(1e-6);
-    (e / 2.5).log2() + (NIGHT_ADAPTATION_LX / e).log2().max(0.0) / 3.0
+/// ISO 2720:1974 (exposure-meter calibration); Reinhard et al. 2002 (log-average luminance as the
+/// scene key).
+pub fn auto_exposure_ev(log_average_luminance_cd_m2: f64, illuminance_lx: f64) -> f64 {
+    let l = log_average_luminance_cd_m2.max(1e-9);
+    let e = illuminance_lx.max(1e-9);
+    (l * 100.0 / METER_K).log2() + (NIGHT_ADAPTATION_LX / e).log2().max(0.0) / 3.0
 }
+
+/// Log-average luminance `exp(mean ln(Y + 10⁻⁶))` of linear sRGB pixels in kcd m⁻², returned in
+/// cd m⁻²; summed in pixel order (deterministic).
+pub fn log_average_luminance_cd_m2(pixels: &[DVec3]) -> f64 {
+    if pixels.is_empty() {
+        return 0.0;
+    }
+    let sum: f64 = pixels
+        .iter()
+        .map(|p| {
+            // Rec. 709 luminance of linear sRGB.
+            let y = 0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z;
+            (y.max(0.0) * 1000.0 + 1e-6).ln()
+        })
+        .sum();
+    (sum / pixels.len() as f64).exp()
+}
+
+/// Mean cosine `g` of the scattering phase function of sea water used by the crest dipole: the
+/// particle phase function's 0.92 (Petzold; equation sheet §12 "physically based defaults").
+pub const CREST_PHASE_G: f64 = 0.92;
 
 /// A Lambertian sea floor `y = −depth + h(x, z)` shaped by a static trochoid set.
 pub struct Floor {
@@ -321,11 +355,16 @@ impl World {
             .map_err(WorldError::Model)?;
         let water = WaterRgb::new(&body, RgbBands::SrgbAverage);
         let floor = scene.water.floor.as_ref().map(Floor::new).transpose()?;
+        let crest = if scene.phenomena.subsurface {
+            let m =
+                |i: usize| DipoleMaterial::new(water.a[i], water.b[i], CREST_PHASE_G, WATER_IOR).map_err(|e| model(&e));
+            Some([m(0)?, m(1)?, m(2)?])
+        } else {
+            None
+        };
 
         let camera = Camera::from_config(&scene.camera);
-        let exposure_ev = scene.output.exposure_ev.unwrap_or_else(|| {
-            (auto_exposure_ev(e_horizontal * 1000.0) - scene.output.exposure_compensation_ev).clamp(-10.0, 30.0)
-        });
+        let exposure_ev = scene.output.exposure_ev;
         let trace = TraceOptions {
             method: Method::Directional,
             t_max: s.trace_distance_m,
@@ -349,9 +388,12 @@ impl World {
             e_below,
             floor,
             underwater: false,
+            crest,
             trace,
             camera,
             exposure_ev,
+            exposure_compensation_ev: scene.output.exposure_compensation_ev,
+            illuminance_lx: e_horizontal * 1000.0,
         };
         let mut world = world;
         world.underwater = world.sea.at_time(world.time).value(camera.position) < 0.0;
