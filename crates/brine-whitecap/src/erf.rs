@@ -85,10 +85,11 @@ pub fn erf_abramowitz_stegun(x: f64) -> f64 {
 pub enum ErfMethod {
     /// The slides' approximation (Winitzki, `a = 0.147`), error ≤ 1.25×10⁻⁴.
     Fast,
-    /// Abramowitz & Stegun 7.1.26, error ≤ 1.5×10⁻⁷.
-    AbramowitzStegun,
-    /// `libm::erf`, full double precision (the default: see `docs/benchmarks.md`).
+    /// Abramowitz & Stegun 7.1.26, error ≤ 1.5×10⁻⁷ (measured 1.39×10⁻⁷); the default: as fast
+    /// as [`Self::Fast`] and three times faster than [`Self::Libm`] (`docs/benchmarks.md`).
     #[default]
+    AbramowitzStegun,
+    /// `libm::erf`, full double precision.
     Libm,
 }
 
