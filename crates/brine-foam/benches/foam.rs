@@ -11,7 +11,8 @@ use brine_foam::{
 use criterion::{Criterion, criterion_group, criterion_main};
 
 fn foam(c: &mut Criterion) {
-    let surface = SurfaceStatistics { y_min: -2.0, y_max: 2.0, height_std: 0.55, slope_variance_x: 0.03, slope_variance_z: 0.02 };
+    let surface =
+        SurfaceStatistics { y_min: -2.0, y_max: 2.0, height_std: 0.55, slope_variance_x: 0.03, slope_variance_z: 0.02 };
     let ext = FoamExtension::new(&FoamExtensionParams::default(), &surface).unwrap();
     let history = FoamHistory::new(&FoamHistoryParams::default(), &KoepkeFoam::default()).unwrap();
     let medium = SprayMedium::new(&SprayParams::default()).unwrap();
@@ -25,9 +26,12 @@ fn foam(c: &mut Criterion) {
     g.bench_function("history accumulate (17 instants, trivial source)", |b| {
         b.iter(|| history.accumulate(black_box(123.4), |s| 0.01 * (1.0 + (0.3 * s.time_s).sin())))
     });
-    g.bench_function("SprayMedium::new (512-panel integral)", |b| b.iter(|| SprayMedium::new(black_box(&SprayParams::default()))));
+    g.bench_function("SprayMedium::new (512-panel integral)", |b| {
+        b.iter(|| SprayMedium::new(black_box(&SprayParams::default())))
+    });
     g.bench_function("spray ray, 32 segments", |b| {
-        let light = SprayLighting { sun_irradiance: 80.0, sin_sun_elevation: 0.4, cos_view_sun: 0.3, sky_radiance: 5.0 };
+        let light =
+            SprayLighting { sun_irradiance: 80.0, sin_sun_elevation: 0.4, cos_view_sun: 0.3, sky_radiance: 5.0 };
         b.iter(|| {
             let mut ray = SprayRay::new(&medium, &SprayScattering::default(), &light);
             for i in 0..32 {

@@ -93,7 +93,9 @@ impl FoamExtension {
         check("y_min_m", surface.y_min, true, "finite m")?;
         check("y_max_m", surface.y_max, surface.y_max > surface.y_min, "(y_min, ∞) m")?;
         check("height_std_m", surface.height_std, surface.height_std > 0.0, "(0, ∞) m")?;
-        for (name, v) in [("slope_variance_x", surface.slope_variance_x), ("slope_variance_z", surface.slope_variance_z)] {
+        for (name, v) in
+            [("slope_variance_x", surface.slope_variance_x), ("slope_variance_z", surface.slope_variance_z)]
+        {
             check(name, v, (0.0..=10.0).contains(&v), "[0, 10]")?;
         }
         let noise =
@@ -174,7 +176,13 @@ fn mean_height_factor(s: &SurfaceStatistics, n: f64) -> f64 {
     let (mut num, mut den) = (0.0, 0.0);
     for i in 0..=panels {
         let y = s.y_min + i as f64 * h;
-        let c = if i == 0 || i == panels { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
+        let c = if i == 0 || i == panels {
+            1.0
+        } else if i % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        };
         let density = c * libm::exp(-0.5 * (y / s.height_std).powi(2));
         num += density * libm::pow((y - s.y_min) / (s.y_max - s.y_min), n);
         den += density;

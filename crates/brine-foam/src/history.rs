@@ -103,7 +103,12 @@ impl FoamHistory {
     /// [`FoamError::OutOfRange`] naming the parameter, including a history needing more than
     /// [`MAX_HISTORY_SAMPLES`] instants.
     pub fn new(params: &FoamHistoryParams, koepke: &KoepkeFoam) -> Result<Self, FoamError> {
-        let tau = check("decay_time_s", params.decay_time_s, params.decay_time_s > 0.0 && params.decay_time_s <= 60.0, "(0, 60] s")?;
+        let tau = check(
+            "decay_time_s",
+            params.decay_time_s,
+            params.decay_time_s > 0.0 && params.decay_time_s <= 60.0,
+            "(0, 60] s",
+        )?;
         let step = check("step_s", params.step_s, params.step_s > 0.0 && params.step_s <= tau, "(0, decay_time_s] s")?;
         let ratio = check(
             "length_in_decay_times",
@@ -197,7 +202,11 @@ impl FoamHistory {
         if cover <= 0.0 || wsum <= 0.0 {
             return FoamState { cover: 0.0, brightness: 1.0, mean_age_s: 0.0 };
         }
-        FoamState { cover: (cover / wsum).clamp(0.0, 1.0), brightness: (bright / cover).clamp(0.0, 1.0), mean_age_s: age / cover }
+        FoamState {
+            cover: (cover / wsum).clamp(0.0, 1.0),
+            brightness: (bright / cover).clamp(0.0, 1.0),
+            mean_age_s: age / cover,
+        }
     }
 
     /// Mean brightness over a steady foam source, averaged over the position of `t` within a

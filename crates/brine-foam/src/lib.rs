@@ -83,6 +83,5 @@ pub use noise::FoamNoise;
 pub use radiance::{FRESH_FOAM_REFLECTANCE, KOEPKE_EFFICIENCY, KoepkeFoam, foam_radiance, surface_radiance};
 pub use scattering::{SprayLighting, SprayRay, SprayScattering, henyey_greenstein};
 pub use spray::{
-    AIR_VISCOSITY, G, MSD86_RADIUS_RANGE_UM, SEA_WATER_DENSITY, msd86_flux, spray_foam_factor,
-    stokes_settling_velocity,
+    AIR_VISCOSITY, G, MSD86_RADIUS_RANGE_UM, SEA_WATER_DENSITY, msd86_flux, spray_foam_factor, stokes_settling_velocity,
 };

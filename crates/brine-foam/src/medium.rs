@@ -128,12 +128,7 @@ impl SprayMedium {
         )?;
         check("scale_height_m", p.scale_height_m, p.scale_height_m > 0.0 && p.scale_height_m <= 1e4, "(0, 10000] m")?;
         check("max_height_m", p.max_height_m, p.max_height_m > 0.0 && p.max_height_m <= 1e4, "(0, 10000] m")?;
-        check(
-            "residence_time_s",
-            p.residence_time_s,
-            (3600.0..=1e7).contains(&p.residence_time_s),
-            "[3600, 1e7] s",
-        )?;
+        check("residence_time_s", p.residence_time_s, (3600.0..=1e7).contains(&p.residence_time_s), "[3600, 1e7] s")?;
         match p.efficiency {
             ExtinctionEfficiency::Constant(q) => {
                 check("q_e", q, q > 0.0 && q <= 5.0, "(0, 5]")?;
@@ -299,8 +294,11 @@ mod tests {
 
     #[test]
     fn segment_depth_matches_brute_force() {
-        let m = SprayMedium::new(&SprayParams { max_height_m: 50.0, scale_height_m: 20.0, ..SprayParams::default() }).unwrap();
-        for &(z0, z1, len, f) in &[(1.0, 30.0, 500.0, 1.0), (60.0, -2.0, 100.0, 2.5), (5.0, 5.0, 80.0, 1.0), (55.0, 70.0, 30.0, 1.0)] {
+        let m = SprayMedium::new(&SprayParams { max_height_m: 50.0, scale_height_m: 20.0, ..SprayParams::default() })
+            .unwrap();
+        for &(z0, z1, len, f) in
+            &[(1.0, 30.0, 500.0, 1.0), (60.0, -2.0, 100.0, 2.5), (5.0, 5.0, 80.0, 1.0), (55.0, 70.0, 30.0, 1.0)]
+        {
             let n = 200_000;
             let mut brute = 0.0;
             for i in 0..n {

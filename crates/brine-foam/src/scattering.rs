@@ -18,7 +18,8 @@ use crate::medium::SprayMedium;
 /// `p` (sr⁻¹).
 ///
 /// # References
-/// Henyey L., Greenstein J. 1941, ApJ 93:70–83; equation sheet §8 (Hoffman–Preetham Mie phase).
+/// Henyey L., Greenstein J. 1941, Astrophys. J. 93:70–83; equation sheet §8 (Hoffman–Preetham
+/// Mie phase).
 pub fn henyey_greenstein(cos_theta: f64, g: f64) -> f64 {
     debug_assert!(g > -1.0 && g < 1.0);
     let d = 1.0 + g * g - 2.0 * g * cos_theta.clamp(-1.0, 1.0);

@@ -2,8 +2,8 @@
 
 use brine_foam::{
     CoverageParams, DARLES_ONSET_WIND_M_S, ExtinctionEfficiency, FoamExtension, FoamExtensionParams, FoamHistory,
-    FoamHistoryParams, FoamNoise, KoepkeFoam, MSD86_RADIUS_RANGE_UM, SprayLighting, SprayMedium, SprayParams,
-    SprayRay, SprayScattering, SurfaceStatistics, WhitecapLaw, msd86_flux, whitecap_coverage,
+    FoamHistoryParams, FoamNoise, KoepkeFoam, MSD86_RADIUS_RANGE_UM, SprayLighting, SprayMedium, SprayParams, SprayRay,
+    SprayScattering, SurfaceStatistics, WhitecapLaw, msd86_flux, whitecap_coverage,
 };
 use proptest::prelude::*;
 

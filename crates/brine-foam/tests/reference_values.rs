@@ -8,17 +8,14 @@ use brine_foam::{CoverageParams, KoepkeFoam, WhitecapLaw, msd86_flux, whitecap_c
 const FOUR_DIGITS: f64 = 6e-4;
 
 fn csv(text: &str) -> Vec<Vec<String>> {
-    text.lines()
-        .filter(|l| !l.starts_with('#'))
-        .skip(1)
-        .map(|l| l.split(',').map(str::to_owned).collect())
-        .collect()
+    text.lines().filter(|l| !l.starts_with('#')).skip(1).map(|l| l.split(',').map(str::to_owned).collect()).collect()
 }
 
 #[test]
 fn monahan_coverage_laws() {
     for row in csv(include_str!("data/whitecap_coverage.csv")) {
-        let (u, dt, expected): (f64, f64, f64) = (row[1].parse().unwrap(), row[2].parse().unwrap(), row[3].parse().unwrap());
+        let (u, dt, expected): (f64, f64, f64) =
+            (row[1].parse().unwrap(), row[2].parse().unwrap(), row[3].parse().unwrap());
         let law = match row[0].as_str() {
             "monahan-1980" => WhitecapLaw::Monahan1980,
             "monahan-1986-stability" => WhitecapLaw::Monahan1986Stability { delta_t_c: dt },

@@ -21,7 +21,9 @@ fn erf(c: &mut Criterion) {
     let xs = xs();
     let mut g = c.benchmark_group("erf");
     g.throughput(Throughput::Elements(xs.len() as u64));
-    g.bench_function("winitzki-0.147 (slides)", |b| b.iter(|| black_box(&xs).iter().map(|&x| erf_fast(x)).sum::<f64>()));
+    g.bench_function("winitzki-0.147 (slides)", |b| {
+        b.iter(|| black_box(&xs).iter().map(|&x| erf_fast(x)).sum::<f64>())
+    });
     g.bench_function("abramowitz-stegun-7.1.26", |b| {
         b.iter(|| black_box(&xs).iter().map(|&x| erf_abramowitz_stegun(x)).sum::<f64>())
     });
@@ -34,11 +36,14 @@ fn whitecap(c: &mut Criterion) {
     for n in [50usize, 100] {
         let pm = PiersonMoskowitz::from_u10(10.0).unwrap();
         let spreading = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
-        let set = fit_trochoids(&pm, &spreading, n, 1, &FitOptions { choppiness: 2.5, ..FitOptions::default() }).unwrap();
+        let set =
+            fit_trochoids(&pm, &spreading, n, 1, &FitOptions { choppiness: 2.5, ..FitOptions::default() }).unwrap();
         let st = JacobianStatistics::new(&set).unwrap();
         for s in [0.0, 1.0, 20.0] {
             g.bench_function(format!("moments_at {n} waves, footprint {s} m"), |b| {
-                b.iter(|| st.moments_at(black_box(DVec2::new(12.3, -4.5)), 0.0, black_box(s), FootprintFilter::Gaussian))
+                b.iter(|| {
+                    st.moments_at(black_box(DVec2::new(12.3, -4.5)), 0.0, black_box(s), FootprintFilter::Gaussian)
+                })
             });
         }
         g.bench_function(format!("moments_at {n} waves, footprint 1 m, sharp filter"), |b| {

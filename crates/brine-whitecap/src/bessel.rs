@@ -86,7 +86,10 @@ mod tests {
         // arithmetic: ln I₀(15) = 12.73566910947691, I₁/I₀(15) = 0.9660695639865081. The
         // asymptotic expansion's smallest term there is ~e^{−30} ≈ 10⁻¹³.
         for (l, r) in [series(SWITCH), asymptotic(SWITCH)] {
-            assert!((l - 12.735_669_109_476_91).abs() < 1e-12 && (r - 0.966_069_563_986_508_1).abs() < 1e-12, "{l} {r}");
+            assert!(
+                (l - 12.735_669_109_476_91).abs() < 1e-12 && (r - 0.966_069_563_986_508_1).abs() < 1e-12,
+                "{l} {r}"
+            );
         }
         let (l, r) = ln_i0_and_ratio(-5.0);
         assert!((l - ln_i0_and_ratio(5.0).0).abs() < 1e-15 && r < 0.0);

@@ -59,9 +59,8 @@ fn law_of(args: &FoamArgs) -> Result<WhitecapLaw, CliError> {
         },
         _ => None,
     };
-    let need_dt = |name: &str| {
-        delta_t.ok_or_else(|| CliError::Input(format!("--law {name} needs --t-water-c and --t-air-c")))
-    };
+    let need_dt =
+        |name: &str| delta_t.ok_or_else(|| CliError::Input(format!("--law {name} needs --t-water-c and --t-air-c")));
     Ok(match (args.law, delta_t) {
         (Some(LawArg::Monahan1980), _) | (None, None) => WhitecapLaw::Monahan1980,
         (Some(LawArg::Monahan1986Wind), _) => WhitecapLaw::Monahan1986Wind,
@@ -129,10 +128,10 @@ pub struct SprayArgs {
     /// Scale height of the exponential profile (m, (0, 10000]).
     #[arg(long, default_value_t = 1000.0)]
     pub scale_height_m: f64,
-    /// Height above which there is no spray, Darles' H_max (m, (0, 10000]).
+    /// Height above which there is no spray, Darles' maximal height (m, (0, 10000]).
     #[arg(long, default_value_t = 2000.0)]
     pub max_height_m: f64,
-    /// Wavelength of light (nm, [300, 2500]): use the anomalous-diffraction Q_e instead of 2.
+    /// Wavelength of light (nm, [300, 2500]): anomalous-diffraction extinction efficiency instead of 2.
     #[arg(long)]
     pub wavelength_nm: Option<f64>,
     /// Print JSON.
@@ -142,7 +141,9 @@ pub struct SprayArgs {
 
 /// Parses `A` or `START:STOP:COUNT` into log-spaced radii (µm).
 fn radii(spec: &str) -> Result<Vec<f64>, CliError> {
-    let bad = |why: &str| CliError::Input(format!("--radius-um {spec}: {why} (expected R or START:STOP:COUNT, radii in (0, 1000] µm)"));
+    let bad = |why: &str| {
+        CliError::Input(format!("--radius-um {spec}: {why} (expected R or START:STOP:COUNT, radii in (0, 1000] µm)"))
+    };
     let num = |s: &str| s.trim().parse::<f64>().map_err(|_| bad("not a number"));
     let parts: Vec<&str> = spec.split(':').collect();
     let list = match parts.as_slice() {
@@ -156,11 +157,7 @@ fn radii(spec: &str) -> Result<Vec<f64>, CliError> {
             if !(a > 0.0 && b >= a) {
                 return Err(bad("need 0 < START ≤ STOP"));
             }
-            if n == 1 {
-                vec![a]
-            } else {
-                (0..n).map(|i| a * (b / a).powf(i as f64 / (n - 1) as f64)).collect()
-            }
+            if n == 1 { vec![a] } else { (0..n).map(|i| a * (b / a).powf(i as f64 / (n - 1) as f64)).collect() }
         }
         _ => return Err(bad("wrong form")),
     };
@@ -284,7 +281,9 @@ mod tests {
 
     #[test]
     fn foam_bad_input() {
-        for line in ["--u10 80", "--u10 -1", "--u10 10 --t-water-c 50 --t-air-c 20", "--u10 10 --law darles-2007-as-printed"] {
+        for line in
+            ["--u10 80", "--u10 -1", "--u10 10 --t-water-c 50 --t-air-c 20", "--u10 10 --law darles-2007-as-printed"]
+        {
             match foam(line) {
                 Err(CliError::Input(m)) => assert!(!m.is_empty()),
                 other => panic!("{line}: {other:?}"),
@@ -306,7 +305,14 @@ mod tests {
 
     #[test]
     fn spray_bad_input() {
-        for line in ["--u10 70", "--u10 10 --radius-um 0:5:3", "--u10 10 --radius-um 5:1:3", "--u10 10 --radius-um a", "--u10 10 --radius-um 1:2:0", "--u10 10 --wavelength-nm 100"] {
+        for line in [
+            "--u10 70",
+            "--u10 10 --radius-um 0:5:3",
+            "--u10 10 --radius-um 5:1:3",
+            "--u10 10 --radius-um a",
+            "--u10 10 --radius-um 1:2:0",
+            "--u10 10 --wavelength-nm 100",
+        ] {
             match spray(line) {
                 Err(CliError::Input(m)) => assert!(!m.is_empty()),
                 other => panic!("{line}: {other:?}"),

@@ -123,7 +123,10 @@ pub fn whitecap_json(args: &WhitecapArgs) -> Result<Value, CliError> {
             return Err(CliError::Input("--mu/--sigma and --u10 are two different modes: give one".into()));
         }
         if !(1000..=100_000_000).contains(&args.mc_samples) {
-            return Err(CliError::Input(format!("--mc-samples {} is out of range: expected [1000, 1e8]", args.mc_samples)));
+            return Err(CliError::Input(format!(
+                "--mc-samples {} is out of range: expected [1000, 1e8]",
+                args.mc_samples
+            )));
         }
         let set = fitted_sea(args, u10)?;
         let stats = JacobianStatistics::new(&set).map_err(input)?;
@@ -151,20 +154,15 @@ pub fn whitecap_json(args: &WhitecapArgs) -> Result<Value, CliError> {
             v["footprint_table"] = cal.table().map(|(s, a)| json!({ "footprint_m": s, "alpha": a })).collect();
             cal.alpha()
         } else {
-            let alpha = args
-                .alpha
-                .ok_or_else(|| CliError::Input("with --u10, give --calibrate or --alpha".into()))?;
+            let alpha = args.alpha.ok_or_else(|| CliError::Input("with --u10, give --calibrate or --alpha".into()))?;
             if !alpha.is_finite() {
                 return Err(CliError::Input(format!("--alpha {alpha} is not finite")));
             }
             let est = surface_coverage(&stats, alpha, &options).map_err(input)?;
             v["alpha"] = json!(alpha);
             v["coverage_importance_sampled"] = json!(est.coverage);
-            v["coverage_gaussian"] = json!(whitecap_coverage(
-                Moments { mu: stats.mean(), sigma2: stats.variance() },
-                alpha,
-                erf
-            ));
+            v["coverage_gaussian"] =
+                json!(whitecap_coverage(Moments { mu: stats.mean(), sigma2: stats.variance() }, alpha, erf));
             alpha
         };
         let (p, se) = monte_carlo(&stats, alpha, args.mc_samples);
@@ -183,9 +181,7 @@ pub fn whitecap_json(args: &WhitecapArgs) -> Result<Value, CliError> {
             let w = whitecap_coverage(Moments { mu, sigma2: sigma * sigma }, alpha, erf);
             Ok(json!({ "mu": mu, "sigma": sigma, "alpha": alpha, "erf": format!("{erf:?}"), "coverage": w }))
         }
-        _ => Err(CliError::Input(
-            "give --mu M --sigma S --alpha A, or --u10 U with --calibrate or --alpha A".into(),
-        )),
+        _ => Err(CliError::Input("give --mu M --sigma S --alpha A, or --u10 U with --calibrate or --alpha A".into())),
     }
 }
 
@@ -200,8 +196,12 @@ pub fn run_whitecap(args: &WhitecapArgs) -> Result<(), CliError> {
     } else if v.get("u10_m_s").is_some() {
         println!(
             "U10 = {} m/s, {} waves: α = {:.5}, surface coverage {:.5} ± {:.5}, Monahan {:.5}",
-            v["u10_m_s"], v["waves"], v["alpha"].as_f64().unwrap_or(f64::NAN), v["coverage"].as_f64().unwrap_or(f64::NAN),
-            v["coverage_std_error"].as_f64().unwrap_or(f64::NAN), v["monahan_coverage"].as_f64().unwrap_or(f64::NAN)
+            v["u10_m_s"],
+            v["waves"],
+            v["alpha"].as_f64().unwrap_or(f64::NAN),
+            v["coverage"].as_f64().unwrap_or(f64::NAN),
+            v["coverage_std_error"].as_f64().unwrap_or(f64::NAN),
+            v["monahan_coverage"].as_f64().unwrap_or(f64::NAN)
         );
     } else {
         println!("W = {:.8}", v["coverage"].as_f64().unwrap_or(f64::NAN));
@@ -222,7 +222,9 @@ mod tests {
     }
 
     fn run(line: &str) -> Result<Value, CliError> {
-        whitecap_json(&Whitecap::try_parse_from(std::iter::once("whitecap").chain(line.split_whitespace())).unwrap().args)
+        whitecap_json(
+            &Whitecap::try_parse_from(std::iter::once("whitecap").chain(line.split_whitespace())).unwrap().args,
+        )
     }
 
     #[test]
