@@ -129,6 +129,9 @@ impl FoamExtension {
     ///
     /// # Returns
     /// `w` (dimensionless), in `[0, N_max]`.
+    ///
+    /// # References
+    /// Darles et al. 2007 Eq. 4, corrected in the equation sheet §5.
     pub fn weight(&self, height: f64, slope_x: f64, slope_z: f64) -> f64 {
         debug_assert!(height.is_finite() && slope_x.is_finite() && slope_z.is_finite());
         let t = ((height - self.y_min) * self.inv_range).clamp(0.0, 1.0);
@@ -148,6 +151,9 @@ impl FoamExtension {
     ///
     /// # Returns
     /// `s′`, the fraction of the pixel covered by foam, in `[0, 1]`.
+    ///
+    /// # References
+    /// Darles et al. 2007 §4.1.1 Eq. 3–4; equation sheet §5.
     #[allow(clippy::too_many_arguments)]
     pub fn foam_amount(
         &self,

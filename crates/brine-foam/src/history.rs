@@ -186,6 +186,9 @@ impl FoamHistory {
     ///
     /// # Returns
     /// The [`FoamState`]; `cover` is in `[0, 1]`.
+    ///
+    /// # References
+    /// See [`FoamHistory`] (Darles et al. 2007 §4.1.2; Koepke 1984; Callaghan et al. 2012).
     pub fn accumulate(&self, t: f64, mut source: impl FnMut(&FoamSample) -> f64) -> FoamState {
         let (mut wsum, mut cover, mut bright, mut age) = (0.0, 0.0, 0.0, 0.0);
         for s in self.samples(t) {

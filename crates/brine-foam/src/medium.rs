@@ -219,8 +219,18 @@ impl SprayMedium {
         self.extinction_0 * h * (1.0 - libm::exp(-self.params.max_height_m / h))
     }
 
-    /// Optical depth above height `z` (m) up to `z_max`, `k_e(0) f H (e^{−z/H} − e^{−z_max/H})`
-    /// (dimensionless; the whole column for `z ≤ 0`).
+    /// Optical depth of the spray above a height, `∫_z^{z_max} k_e dz' = k_e(0) f H (e^{−z/H} − e^{−z_max/H})`.
+    ///
+    /// # Arguments
+    /// - `z`: height above the sea (m); clamped to `[0, z_max]`.
+    /// - `foam_factor`: `s′/W` below (`≥ 0`).
+    ///
+    /// # Returns
+    /// The vertical optical depth (dimensionless, `≥ 0`): the whole column for `z ≤ 0`, 0 above
+    /// `z_max`.
+    ///
+    /// # References
+    /// Darles et al. 2007 §4.2 (`τ_aod`); equation sheet §6.
     pub fn optical_depth_above(&self, z: f64, foam_factor: f64) -> f64 {
         let (h, zmax) = (self.params.scale_height_m, self.params.max_height_m);
         let z = z.clamp(0.0, zmax);

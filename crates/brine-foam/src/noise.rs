@@ -76,6 +76,9 @@ impl FoamNoise {
     ///
     /// # Returns
     /// `ν` (dimensionless), in `[1 − a, 1 + a]`.
+    ///
+    /// # References
+    /// Perlin 2002; Darles et al. 2007 §4.1.1 and §3.2 (footprint filtering).
     pub fn value(&self, x: f64, z: f64, footprint_m: f64) -> f64 {
         debug_assert!(x.is_finite() && z.is_finite() && footprint_m >= 0.0);
         if self.amplitude <= 0.0 {

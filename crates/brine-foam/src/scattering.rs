@@ -126,6 +126,9 @@ impl<'a> SprayRay<'a> {
     /// - `z0`, `z1`: heights above the sea of the segment's near and far ends (m).
     /// - `length_m`: its length (m), `≥ |z1 − z0|`.
     /// - `foam_factor`: `s′/W` at the orthogonal projection of the segment on the sea.
+    ///
+    /// # References
+    /// See [`SprayRay`] (Darles et al. 2007 §4.2, corrected).
     pub fn step(&mut self, z0: f64, z1: f64, length_m: f64, foam_factor: f64) {
         let dtau = self.medium.segment_optical_depth(z0, z1, length_m, foam_factor);
         if dtau <= 0.0 {

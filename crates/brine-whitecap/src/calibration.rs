@@ -331,16 +331,32 @@ fn cap_lambda(terms: &[WaveTerm], lambda: f64) -> f64 {
     if !beyond(lambda) {
         return lambda;
     }
-    let (mut lo, mut hi) = (0.0, lambda);
+    bisect(0.0, lambda, beyond).0
+}
+
+/// Bisection (60 halvings) between `lo`, where `past` is false, and `hi`, where it is true;
+/// returns the final bracket.
+fn bisect(mut lo: f64, mut hi: f64, past: impl Fn(f64) -> bool) -> (f64, f64) {
     for _ in 0..60 {
         let mid = 0.5 * (lo + hi);
-        if beyond(mid) {
+        if past(mid) {
             hi = mid;
         } else {
             lo = mid;
         }
     }
-    lo
+    (lo, hi)
+}
+
+/// The `λ` of sign `sign` where `past` turns true: doubles `|λ|` from 1 until it does (at most
+/// 10⁶), then bisects from 0.
+fn boundary(sign: f64, past: impl Fn(f64) -> bool) -> f64 {
+    let mut hi = sign;
+    while !past(hi) && hi.abs() < 1e6 {
+        hi *= 2.0;
+    }
+    let (lo, hi) = bisect(0.0, hi, past);
+    0.5 * (lo + hi)
 }
 
 /// Tilt for a target coverage: bisection on `λ` for Lugannani–Rice `P(Y ≥ y(λ)) = W*`.
@@ -351,20 +367,7 @@ fn lambda_for_coverage(terms: &[WaveTerm], target: f64) -> f64 {
     let sign = if target < 0.5 { 1.0 } else { -1.0 };
     // For λ < 0 the formula gives P(Y ≥ y) > ½; the lower tail of J is the upper tail of Y.
     let below = |l: f64| lugannani_rice(terms, l) < target;
-    let mut hi = sign;
-    while (sign > 0.0) != below(hi) && hi.abs() < 1e6 {
-        hi *= 2.0;
-    }
-    let mut lo = 0.0;
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if (sign > 0.0) == below(mid) {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
-    cap_lambda(terms, 0.5 * (lo + hi))
+    cap_lambda(terms, boundary(sign, |l| (sign > 0.0) == below(l)))
 }
 
 /// Tilt for a threshold: the saddle point `K′(λ) = 1 − α`.
@@ -372,20 +375,7 @@ fn lambda_for_threshold(terms: &[WaveTerm], alpha: f64) -> f64 {
     let y = 1.0 - alpha;
     let sign = if y > 0.0 { 1.0 } else { -1.0 };
     let past = |l: f64| (cgf_derivatives(terms, l).0 - y) * sign > 0.0;
-    let mut hi = sign;
-    while !past(hi) && hi.abs() < 1e6 {
-        hi *= 2.0;
-    }
-    let mut lo = 0.0;
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if past(mid) {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
-    cap_lambda(terms, 0.5 * (lo + hi))
+    cap_lambda(terms, boundary(sign, past))
 }
 
 /// `cos θ` of a von Mises draw of concentration `κ > 0` (Best & Fisher 1979), with

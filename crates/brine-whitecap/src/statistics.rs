@@ -263,8 +263,10 @@ impl JacobianStatistics {
         1.0
     }
 
-    /// Variance of `J` over the whole sea, `σ² = ½ Σ Qᵢ² + ¼ Σ_{i<j} Qᵢ²Qⱼ² sin⁴(θᵢ − θⱼ)`
-    /// (dimensionless).
+    /// Variance of `J` over the whole sea, `σ² = ½ Σ Qᵢ² + ¼ Σ_{i<j} Qᵢ²Qⱼ² sin⁴(θᵢ − θⱼ)`.
+    ///
+    /// # Returns
+    /// `σ²` (dimensionless), precomputed.
     ///
     /// # References
     /// Equation sheet §10 (derived; here with `aᵢ = Qᵢ`).
@@ -279,6 +281,12 @@ impl JacobianStatistics {
 
     /// Bounds of `J` over all positions and times: the eigenvalues of `M` lie in
     /// `[−ΣQ, ΣQ]`, so `J ∈ [min((1 − ΣQ)², 1 − (ΣQ)²), (1 + ΣQ)²]`.
+    ///
+    /// # Returns
+    /// `(J_min, J_max)` (dimensionless).
+    ///
+    /// # References
+    /// Derived (Weyl: the eigenvalues of a sum of `Qᵢ cos φᵢ d̂ᵢd̂ᵢᵀ` lie within `±Σ Qᵢ`).
     pub fn bounds(&self) -> (f64, f64) {
         let s = self.total_steepness;
         (((1.0 - s) * (1.0 - s)).min(1.0 - s * s), (1.0 + s) * (1.0 + s))
@@ -305,7 +313,18 @@ impl JacobianStatistics {
         acc.p * acc.r - acc.q * acc.q
     }
 
-    /// Exact `J` of the Gerstner map at rest position `u = (x, z)` (m) and time `t` (s).
+    /// Exact `J = det(I − Σ Qᵢ cos φᵢ d̂ᵢd̂ᵢᵀ)` of the Gerstner map at a rest position,
+    /// `φᵢ = kᵢ d̂ᵢ·u − ωᵢt + φ₀ᵢ`.
+    ///
+    /// # Arguments
+    /// - `u`: rest position `(x, z)` (m), finite.
+    /// - `t`: time (s), finite.
+    ///
+    /// # Returns
+    /// `J` (dimensionless), within [`Self::bounds`].
+    ///
+    /// # References
+    /// Dupuy & Bruneton 2012; equation sheet §10.
     pub fn jacobian_at(&self, u: DVec2, t: f64) -> f64 {
         let mut acc = Accumulator::new();
         for w in &self.waves {
@@ -357,6 +376,10 @@ impl JacobianStatistics {
     ///
     /// # Returns
     /// [`Moments`] `(μ, σ²)`: `μ = J`, `σ² = 0` at `s = 0`; `(1, variance())` as `s → ∞`.
+    ///
+    /// # References
+    /// Derived in the type's documentation; Dupuy & Bruneton 2012 (per-footprint `μ`, `σ²`);
+    /// equation sheet §10 (resolved waves in `μ`, unresolved in `σ²`).
     pub fn moments_from_cosines(&self, cos_phi: &[f64], footprint_m: f64, filter: FootprintFilter) -> Moments {
         debug_assert_eq!(cos_phi.len(), self.len());
         debug_assert!(footprint_m >= 0.0);
@@ -378,6 +401,9 @@ impl JacobianStatistics {
     ///
     /// # Returns
     /// [`Moments`] `(μ, σ²)`.
+    ///
+    /// # References
+    /// As [`Self::moments_from_cosines`].
     pub fn moments_at(&self, u: DVec2, t: f64, footprint_m: f64, filter: FootprintFilter) -> Moments {
         debug_assert!(footprint_m >= 0.0);
         let n = self.active_count(footprint_m, filter);
