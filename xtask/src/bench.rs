@@ -23,6 +23,21 @@ const BENCHES: &[(&str, &str, &[&str])] = &[
         "brine-waves: height at one point × N waves, scalar loop vs SIMD lanes (trochoid, sine), Gerstner inversion",
         &["bench", "-p", "brine-waves", "--bench", "surface_eval"],
     ),
+    (
+        "whitecap-erf",
+        "erf side by side: the slides' Winitzki (a = 0.147) vs Abramowitz–Stegun 7.1.26 vs libm::erf (criterion)",
+        &["bench", "-p", "brine-whitecap", "--bench", "whitecap", "--", "erf/"],
+    ),
+    (
+        "whitecap",
+        "per-pixel footprint moments of J and the calibration of α, 50 and 100 waves (criterion)",
+        &["bench", "-p", "brine-whitecap", "--bench", "whitecap", "--", "whitecap/"],
+    ),
+    (
+        "foam",
+        "per-pixel foam amount, foam history, spray ray segments, spray medium construction (criterion)",
+        &["bench", "-p", "brine-foam", "--bench", "foam"],
+    ),
 ];
 
 /// Runs the named benchmarks (all when `names` is empty) or lists them.

@@ -1,11 +1,87 @@
 //! # brine-foam — Monahan foam and sea spray
 //!
 //! Whitecap coverage after Monahan & Ó Muircheartaigh (1980, 1986), the foam extension of
-//! Darles et al. 2007 (§4.1, Eq. 3–4, corrected in `shared/reference/equations.md` §5), foam
-//! radiance after Koepke (1984), and the sea-spray size distribution of Monahan, Spiel & Davidson
-//! (1986) with its vertical profile, extinction and optical depth (Darles et al. 2007, §4.2).
+//! Darles, Crespin & Ghazanfarpour (2007, §4.1, Eq. 3–4, corrected in the equation sheet §5),
+//! foam radiance after Koepke (1984), foam that moves with the water and ages between frames,
+//! and the sea-spray source function of Monahan, Spiel & Davidson (1986) with its vertical
+//! profile, extinction, optical depth and in-scattering (Darles et al. 2007, §4.2, equation
+//! sheet §6).
 //!
-//! ## Status
+//! ## Notation
 //!
-//! **Skeleton.** Nothing in this crate is implemented yet; the models above arrive with
-//! issue #6. No function here pretends to compute them.
+//! | symbol | Rust | unit | meaning |
+//! |---|---|---|---|
+//! | `U₁₀` | `u10` | m s⁻¹ | wind speed 10 m above the sea |
+//! | `ΔT = T_w − T_a` | `delta_t_c`, `t_water_c`, `t_air_c` | °C | water minus air temperature |
+//! | `W` | [`whitecap_coverage`] | 1 | fraction of the sea covered by whitecaps |
+//! | `n` | [`FoamExtensionParams::exponent`] | 1 | height exponent of the foam extension |
+//! | `s′` | [`FoamExtension::foam_amount`] | 1 | local foam cover, `[0, 1]` |
+//! | `ν` | [`FoamNoise::value`] | 1 | footprint-filtered noise, mean 1 |
+//! | `ℓ` | `footprint_m` | m | pixel footprint on the sea |
+//! | `R_f`, `f_ef`, `R_ef` | [`KoepkeFoam`] | 1 | fresh-foam reflectance, efficiency, effective reflectance |
+//! | `τ`, `τ_R` | [`FoamHistory`] | s | foam-area and brightness decay times |
+//! | `r₈₀` | `r80_um` | µm | spray drop radius at 80 % humidity |
+//! | `dF/dr₈₀` | [`msd86_flux`] | m⁻² s⁻¹ µm⁻¹ | spray source function |
+//! | `v_s`, `v_d` | [`stokes_settling_velocity`], [`SprayMedium::deposition_velocity`] | m s⁻¹ | settling, deposition velocity |
+//! | `n(r, z)` | [`SprayMedium::concentration`] | m⁻³ µm⁻¹ | drop concentration |
+//! | `H`, `z_max` | `scale_height_m`, `max_height_m` | m | profile scale height, top of the spray |
+//! | `Q_e` | [`ExtinctionEfficiency`] | 1 | extinction efficiency |
+//! | `k_e` | [`SprayMedium::extinction`] | m⁻¹ | extinction coefficient |
+//! | `τ_aod` | [`SprayMedium::optical_depth`] | 1 | vertical optical depth of the spray |
+//! | `T` | [`SprayMedium::transmittance`] | 1 | Beer–Lambert transmittance |
+//!
+//! ## Validity
+//!
+//! The coverage laws were fitted on `U₁₀` ≈ 4–20 m s⁻¹ (accepted on `[0, 60]`, zero below the
+//! onset wind, clamped to 1); the spray source on `r₈₀` ∈ 0.8–15 µm (bubble-mediated drops only;
+//! spume drops torn from crests at high winds are not modelled). Radiances are linear in the
+//! irradiances given, in any consistent unit.
+//!
+//! ## Example
+//!
+//! ```
+//! use brine_foam::{CoverageParams, DARLES_ONSET_WIND_M_S, SprayMedium, SprayParams, WhitecapLaw, whitecap_coverage};
+//!
+//! // Darles' figure 6 conditions, with the wind in m/s: U10 = 10 m/s, T_w = 12 °C, T_a = 20 °C.
+//! let law = WhitecapLaw::monahan_1986_from_temperatures(12.0, 20.0)?;
+//! let w = whitecap_coverage(&CoverageParams::new(10.0, law, DARLES_ONSET_WIND_M_S)?);
+//! assert!((w - 3.475e-3).abs() < 1e-5);
+//!
+//! let spray = SprayMedium::new(&SprayParams { u10: 10.0, ..SprayParams::default() })?;
+//! let t = spray.transmittance(2.0, 2.0, 1000.0, 1.0); // 1 km just above the sea
+//! assert!(t > 0.0 && t < 1.0);
+//! # Ok::<(), brine_foam::FoamError>(())
+//! ```
+//!
+//! ## References
+//!
+//! - Monahan E., Ó Muircheartaigh I. 1980, JPO 10:2094–2099; 1986, Int. J. Remote Sens.
+//!   7(5):627–642.
+//! - Monahan E., Spiel D., Davidson K. 1986, in *Oceanic Whitecaps*, Reidel, 167–174.
+//! - Koepke P. 1984, "Effective reflectance of oceanic whitecaps", Appl. Opt. 23(11):1816–1824.
+//! - Darles E., Crespin B., Ghazanfarpour D. 2007, "Accelerating and enhancing rendering of
+//!   realistic ocean scenes", WSCG, §4.1–4.2.
+//! - Shettle E., Fenn R. 1979, AFGL-TR-79-0214 (aerosol profiles).
+//! - Callaghan A., Deane G., Stokes M. 2012, JGR 117, C09015 (foam decay times).
+
+mod coverage;
+mod error;
+mod extension;
+mod history;
+mod medium;
+mod noise;
+mod radiance;
+mod scattering;
+mod spray;
+
+pub use coverage::{CoverageParams, DARLES_ONSET_WIND_M_S, MAX_WIND_M_S, WhitecapLaw, whitecap_coverage};
+pub use error::FoamError;
+pub use extension::{FoamExtension, FoamExtensionParams, SurfaceStatistics};
+pub use history::{FoamHistory, FoamHistoryParams, FoamSample, FoamState, MAX_HISTORY_SAMPLES};
+pub use medium::{ExtinctionEfficiency, SprayMedium, SprayParams};
+pub use noise::FoamNoise;
+pub use radiance::{FRESH_FOAM_REFLECTANCE, KOEPKE_EFFICIENCY, KoepkeFoam, foam_radiance, surface_radiance};
+pub use scattering::{SprayLighting, SprayRay, SprayScattering, henyey_greenstein};
+pub use spray::{
+    AIR_VISCOSITY, G, MSD86_RADIUS_RANGE_UM, SEA_WATER_DENSITY, msd86_flux, spray_foam_factor, stokes_settling_velocity,
+};

@@ -1,11 +1,74 @@
 //! # brine-whitecap — whitecaps from the displacement Jacobian
 //!
-//! Whitecap coverage W = ½(1 + erf((α − μ)/√(2σ²))) from the mean μ and variance σ² of the
-//! Jacobian of the horizontal displacement of the sea surface over a pixel footprint
-//! (Dupuy & Bruneton 2012), with analytic statistics for trochoid sets and a calibration of α
-//! against the Monahan coverage of brine-foam.
+//! Whitecap coverage `W = ½(1 + erf((α − μ)/√(2σ²)))` from the mean `μ` and variance `σ²` of the
+//! Jacobian `J` of the horizontal displacement of the sea surface over a pixel footprint
+//! (Dupuy & Bruneton 2012), with the statistics derived analytically for trochoid sets
+//! (brine-waves), the slides' fast error function and a more accurate one, whitecap radiance
+//! `W · Lambert(0.4)`, and a calibration of the threshold `α` against a target coverage — the
+//! Monahan coverage of brine-foam at the same wind.
 //!
-//! ## Status
+//! ## Notation
 //!
-//! **Skeleton.** Nothing in this crate is implemented yet; the models above arrive with
-//! issue #6. No function here pretends to compute them.
+//! | symbol | Rust | unit | meaning |
+//! |---|---|---|---|
+//! | `J` | [`JacobianStatistics::jacobian_at`] | 1 | determinant of `∂x/∂u` of the Gerstner map; `< 1` compressed, `< 0` folded |
+//! | `aᵢ = Qᵢ` | `Trochoid::steepness` | 1 | wave steepness (horizontal radius × `k`) |
+//! | `θᵢ`, `d̂ᵢ` | `Trochoid::direction` | rad | wave direction, from +x toward +z |
+//! | `φᵢ` | — | rad | wave phase `kᵢd̂ᵢ·u − ωᵢt + φ₀ᵢ` |
+//! | `s` | `footprint_m` | m | pixel footprint size (std of a Gaussian footprint) |
+//! | `μ`, `σ²` | [`Moments`] | 1 | mean and variance of `J` over the footprint |
+//! | `α` | `alpha` | 1 | breaking threshold: whitecaps where `J < α` |
+//! | `W` | [`whitecap_coverage`] | 1 | whitecap coverage of the footprint, `[0, 1]` |
+//! | `ρ_wc` | [`WHITECAP_REFLECTANCE`] | 1 | whitecap reflectance, 0.4 |
+//! | `I_wc` | [`whitecap_radiance`] | irradiance unit sr⁻¹ | whitecap radiance |
+//!
+//! ## Validity
+//!
+//! Any trochoid set (the Gerstner map folds where `J < 0`, possible when `Σ Qᵢ > 1`). The whole-sea
+//! moments assume independent, uniformly distributed phases: true for a set whose wave vectors are
+//! incommensurate, over an area much larger than the longest wave. The per-pixel Gaussian law of
+//! `J` is the model's assumption (Dupuy & Bruneton); the calibration does not rely on it.
+//!
+//! ## Example
+//!
+//! ```
+//! use brine_waves::{CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, fit_trochoids};
+//! use brine_whitecap::{Calibration, CalibrationOptions, ErfMethod, FootprintFilter, JacobianStatistics};
+//! use glam::DVec2;
+//!
+//! let pm = PiersonMoskowitz::from_u10(10.0)?;
+//! let set = fit_trochoids(&pm, &CosineTwoS::hasselmann(pm.peak_omega())?, 40, 1, &FitOptions::default())?;
+//! let stats = JacobianStatistics::new(&set)?;
+//! // Monahan 1980 at 10 m/s (brine_foam::whitecap_coverage gives the same).
+//! let calibration = Calibration::new(&stats, 9.87e-3, &CalibrationOptions::default())?;
+//! // Per pixel: footprint moments, then the coverage with the threshold for that footprint.
+//! let footprint = 0.5; // m
+//! let m = stats.moments_at(DVec2::new(12.0, -3.0), 0.0, footprint, FootprintFilter::Gaussian);
+//! let w = calibration.coverage(m, footprint, ErfMethod::Libm);
+//! assert!((0.0..=1.0).contains(&w));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! ## References
+//!
+//! - Dupuy J., Bruneton E. 2012, "Real-time animation and rendering of ocean whitecaps",
+//!   SIGGRAPH Asia Technical Briefs (and the talk's slides).
+//! - Winitzki S. 2008, "A handy approximation for the error function and its inverse".
+//! - Abramowitz M., Stegun I. 1964, *Handbook of Mathematical Functions*, 7.1.26, 9.6, 9.7.
+//! - Monahan E., Ó Muircheartaigh I. 1980, JPO 10:2094–2099 (calibration target).
+
+mod bessel;
+mod calibration;
+mod coverage;
+mod erf;
+mod error;
+mod statistics;
+
+pub use calibration::{Calibration, CalibrationOptions, CoverageEstimate, surface_coverage};
+pub use coverage::{WHITECAP_REFLECTANCE, compose_with_whitecaps, whitecap_coverage, whitecap_radiance};
+pub use erf::{
+    ERF_AS_MAX_ERROR, ERF_FAST_MAX_ERROR, ErfMethod, WINITZKI_A, WINITZKI_A_DEMO, erf_abramowitz_stegun, erf_fast,
+    erf_inv, erf_winitzki,
+};
+pub use error::WhitecapError;
+pub use statistics::{FootprintFilter, JacobianStatistics, Moments};

@@ -1,0 +1,108 @@
+//! Property tests: bounds and invariants of the foam and spray models on random inputs.
+
+use brine_foam::{
+    CoverageParams, DARLES_ONSET_WIND_M_S, ExtinctionEfficiency, FoamExtension, FoamExtensionParams, FoamHistory,
+    FoamHistoryParams, FoamNoise, KoepkeFoam, MSD86_RADIUS_RANGE_UM, SprayLighting, SprayMedium, SprayParams, SprayRay,
+    SprayScattering, SurfaceStatistics, WhitecapLaw, msd86_flux, whitecap_coverage,
+};
+use proptest::prelude::*;
+
+fn law() -> impl Strategy<Value = WhitecapLaw> {
+    prop_oneof![
+        Just(WhitecapLaw::Monahan1980),
+        Just(WhitecapLaw::Monahan1986Wind),
+        (-30.0f64..30.0).prop_map(|delta_t_c| WhitecapLaw::Monahan1986Stability { delta_t_c }),
+        (-30.0f64..30.0).prop_map(|delta_t_c| WhitecapLaw::Darles2007AsPrinted { delta_t_c }),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn coverage_is_a_fraction_non_decreasing_in_wind(law in law(), u in 0.0f64..60.0, du in 0.0f64..20.0) {
+        let w = |u: f64| whitecap_coverage(&CoverageParams::new(u.min(60.0), law, DARLES_ONSET_WIND_M_S).unwrap());
+        let (a, b) = (w(u), w(u + du));
+        prop_assert!((0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b));
+        prop_assert!(b >= a);
+        if u < DARLES_ONSET_WIND_M_S {
+            prop_assert!(a.abs() < f64::MIN_POSITIVE);
+        }
+    }
+
+    #[test]
+    fn spray_source_is_finite_and_non_negative(r in 0.8f64..15.0, u in 0.0f64..60.0, r_out in 1e-3f64..1e3) {
+        let f = msd86_flux(r, u);
+        prop_assert!(f.is_finite() && f >= 0.0);
+        // Outside the fitted range the formula stays finite and non-negative (extrapolation).
+        let g = msd86_flux(r_out, u);
+        prop_assert!(g.is_finite() && g >= 0.0);
+        prop_assert!(MSD86_RADIUS_RANGE_UM.0 <= r && r <= MSD86_RADIUS_RANGE_UM.1);
+    }
+
+    #[test]
+    fn anomalous_diffraction_efficiency_is_bounded(r in 1e-4f64..100.0, lambda in 300.0f64..2500.0, m in 1.01f64..2.0) {
+        let q = ExtinctionEfficiency::AnomalousDiffraction { wavelength_nm: lambda, refractive_index: m }.q_e(r);
+        // The maximum of 2 − (4/ρ) sin ρ + (4/ρ²)(1 − cos ρ) is 3.1738 at ρ ≈ 4.09.
+        prop_assert!((0.0..=3.174).contains(&q), "Q_e = {q}");
+    }
+
+    #[test]
+    fn foam_amount_and_noise_are_bounded(
+        w in 0.0f64..1.0, y in -5.0f64..5.0, sx in -5.0f64..5.0, sz in -5.0f64..5.0,
+        x in -1e4f64..1e4, z in -1e4f64..1e4, fp in 0.0f64..100.0, n in 1.0f64..20.0, a in 0.0f64..1.0, seed in 0u64..100,
+    ) {
+        let p = FoamExtensionParams { exponent: n, noise_amplitude: a, seed, ..FoamExtensionParams::default() };
+        let s = SurfaceStatistics { y_min: -2.0, y_max: 2.0, height_std: 0.6, slope_variance_x: 0.03, slope_variance_z: 0.02 };
+        let ext = FoamExtension::new(&p, &s).unwrap();
+        let amount = ext.foam_amount(w, y, sx, sz, x, z, fp);
+        prop_assert!((0.0..=1.0).contains(&amount));
+        let nu = FoamNoise::new(a, 10.0, 5, seed).unwrap().value(x, z, fp);
+        prop_assert!(nu >= 1.0 - a - 1e-12 && nu <= 1.0 + a + 1e-12);
+    }
+
+    #[test]
+    fn foam_history_is_bounded(t in 0.0f64..1e5, c in 0.0f64..1.0, f in 0.01f64..3.0, tau in 0.5f64..8.0) {
+        let p = FoamHistoryParams { decay_time_s: tau, step_s: tau / 4.0, ..FoamHistoryParams::default() };
+        let h = FoamHistory::new(&p, &KoepkeFoam::default()).unwrap();
+        let s = h.accumulate(t, |s| c * (0.5 + 0.5 * (f * s.time_s).sin()));
+        prop_assert!((0.0..=1.0).contains(&s.cover));
+        prop_assert!(s.brightness > 0.0 && s.brightness <= 1.0);
+        prop_assert!(s.mean_age_s >= 0.0 && s.mean_age_s <= 4.0 * tau + 1e-9);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    #[test]
+    fn extinction_and_depth_increase_with_wind(u in 0.5f64..55.0, du in 0.1f64..5.0) {
+        let a = SprayMedium::new(&SprayParams { u10: u, ..SprayParams::default() }).unwrap();
+        let b = SprayMedium::new(&SprayParams { u10: u + du, ..SprayParams::default() }).unwrap();
+        prop_assert!(b.extinction(0.0, 1.0) > a.extinction(0.0, 1.0));
+        prop_assert!(b.optical_depth() > a.optical_depth());
+    }
+
+    #[test]
+    fn transmittance_and_scattering_are_physical(
+        u in 0.0f64..60.0, z0 in -10.0f64..3000.0, z1 in -10.0f64..3000.0, extra in 0.0f64..5000.0, f in 0.0f64..50.0,
+        sun in 0.0f64..100.0, sky in 0.0f64..10.0, cos_vs in -1.0f64..1.0, sin_h in 0.0f64..1.0,
+    ) {
+        let m = SprayMedium::new(&SprayParams { u10: u, ..SprayParams::default() }).unwrap();
+        let len = (z1 - z0).abs() + extra;
+        let t = m.transmittance(z0, z1, len, f);
+        // T ∈ (0, 1]; exp(−τ) underflows to 0 only beyond τ ≈ 745 (a 2.6 km path in 50 m/s
+        // spray thirty times denser than the mean reaches it).
+        let tau = m.segment_optical_depth(z0, z1, len, f);
+        prop_assert!(t <= 1.0 && (t > 0.0 || tau > 700.0), "T = {t}, τ = {tau}");
+        let light = SprayLighting { sun_irradiance: sun, sin_sun_elevation: sin_h, cos_view_sun: cos_vs, sky_radiance: sky };
+        let mut ray = SprayRay::new(&m, &SprayScattering::default(), &light);
+        ray.step(z0, z1, len, f);
+        ray.step(z1, z1 + 1.0, 100.0, f);
+        prop_assert!(ray.transmittance() >= 0.0 && ray.transmittance() <= 1.0);
+        prop_assert!(ray.in_scattered() >= 0.0 && ray.in_scattered().is_finite());
+        // In-scattered light is bounded by the brightest source term: ϖ (E p_max + ½ L̄).
+        let p_max = brine_foam::henyey_greenstein(1.0, 0.75);
+        prop_assert!(ray.in_scattered() <= sun * p_max + 0.5 * sky + 1e-12);
+    }
+}
