@@ -1,9 +1,11 @@
 //! Per-pixel composition and the parallel frame loop.
 
+use brine_foam::{SprayLighting, SprayRay, SprayScattering};
 use brine_optics::{SlopeVariance, WATER_IOR, fresnel_dielectric, reflect, reflected_sun_radiance, refract};
 use brine_trace::{Aabb, LipschitzSum, Ray, TraceOptions, TraceStats, trace};
 use brine_waves::TrochoidField;
-use glam::DVec3;
+use brine_whitecap::WHITECAP_REFLECTANCE;
+use glam::{DVec2, DVec3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
@@ -166,20 +168,74 @@ fn radiance(world: &World, field: &TrochoidField<'_>, d: DVec3, stats: &mut Trac
     if world.underwater {
         return underwater_radiance(world, field, d, hit.map(|h| (h.t, h.point)), stats);
     }
-    if let Some(hit) = hit {
-        let n = field.normal(hit.point.x, hit.point.z);
-        let aov = Aov { depth: hit.t as f32, normal: n.as_vec3().to_array(), ..Aov::default() };
-        let l = shade_surface(world, hit.point, d, n, &world.variance_unresolved, stats);
-        return Sample { radiance: aerial(world, d, hit.t, l), aov };
-    }
-    if d.y < 0.0 {
+    let (t, p, n, variance) = match hit {
+        Some(hit) => (hit.t, hit.point, field.normal(hit.point.x, hit.point.z), &world.variance_unresolved),
         // Beyond the trace distance: the mean plane, with every wave's slopes in the BRDF.
-        let t = world.camera.position.y / -d.y;
-        let aov = Aov { depth: t as f32, normal: [0.0, 1.0, 0.0], ..Aov::default() };
-        let l = shade_surface(world, origin + t * d, d, DVec3::Y, &world.variance_total, stats);
-        return Sample { radiance: aerial(world, d, t, l), aov };
-    }
-    Sample { radiance: sky_radiance(world, d), aov: Aov { depth: f32::INFINITY, ..Aov::default() } }
+        None if d.y < 0.0 => {
+            let t = world.camera.position.y / -d.y;
+            (t, origin + t * d, DVec3::Y, &world.variance_total)
+        }
+        None => {
+            let l = spray(world, d, f64::INFINITY, sky_radiance(world, d));
+            return Sample { radiance: l, aov: Aov { depth: f32::INFINITY, ..Aov::default() } };
+        }
+    };
+    let shade = shade_surface(world, p, d, t, n, variance, stats);
+    let aov = Aov {
+        depth: t as f32,
+        normal: n.as_vec3().to_array(),
+        foam: shade.foam as f32,
+        whitecap: shade.whitecap as f32,
+        ..Aov::default()
+    };
+    Sample { radiance: spray(world, d, t, aerial(world, d, t, shade.radiance)), aov }
+}
+
+/// Sea spray between the eye and `t` metres along `d` (to the top of the spray for sky rays):
+/// Beer–Lambert transmittance and single scattering of sun and sky light by the drops
+/// (brine-foam `SprayRay`, Darles et al. 2007 §4.2 corrected). Drops are much larger than the
+/// wavelength, so the extinction is grey; the in-scattered light takes the sun's and sky's colour.
+fn spray(world: &World, d: DVec3, t: f64, l0: DVec3) -> DVec3 {
+    let Some(medium) = &world.spray else { return l0 };
+    let y0 = world.camera.position.y.max(0.0);
+    let top = medium.params().max_height_m;
+    let (len, y1) = if t.is_finite() {
+        (t, (y0 + d.y * t).max(0.0))
+    } else if d.y > 1e-3 {
+        (((top - y0) / d.y).max(0.0), top)
+    } else {
+        (SPRAY_HORIZON_M, (y0 + d.y * SPRAY_HORIZON_M).clamp(0.0, top))
+    };
+    let sun = world.sky.sun();
+    let scattering = SprayScattering::default();
+    let lit = |sun_irradiance: f64, sky_radiance: f64| {
+        let mut ray = SprayRay::new(
+            medium,
+            &scattering,
+            &SprayLighting {
+                sun_irradiance,
+                sin_sun_elevation: sun.direction.y.clamp(0.01, 1.0),
+                cos_view_sun: d.dot(sun.direction),
+                sky_radiance,
+            },
+        );
+        ray.step(y0, y1, len, 1.0);
+        (ray.radiance(1.0) - ray.radiance(0.0), ray.radiance(0.0))
+    };
+    let (transmittance, in_sun) = lit(if sun.direction.y > 0.0 { 1.0 } else { 0.0 }, 0.0);
+    let (_, in_sky) = lit(0.0, 1.0);
+    let sky_mean = world.sky.horizontal_irradiance_rgb() / std::f64::consts::PI;
+    l0 * transmittance + sun.irradiance_rgb * in_sun + sky_mean * in_sky
+}
+
+/// Length of a horizontal sky ray through the spray (m): beyond, the sea hides the rest.
+const SPRAY_HORIZON_M: f64 = 50_000.0;
+
+/// The shading of a surface point.
+struct SurfaceShade {
+    radiance: DVec3,
+    foam: f64,
+    whitecap: f64,
 }
 
 /// Aerial perspective of the segment from the eye along `d` over `t` metres:
@@ -262,10 +318,11 @@ fn shade_surface(
     world: &World,
     p: DVec3,
     d: DVec3,
+    t: f64,
     normal: DVec3,
     variance: &SlopeVariance,
     stats: &mut TraceStats,
-) -> DVec3 {
+) -> SurfaceShade {
     let v = -d;
     // Grazing views can see a facet from behind; tilt its normal toward the viewer just enough.
     let mut n = normal;
@@ -299,7 +356,40 @@ fn shade_surface(
         Some(t) => water_column_radiance(world, p, t, stats),
         None => DVec3::ZERO,
     };
-    f * sky + sun + (1.0 - f) * below / (WATER_IOR * WATER_IOR) + crest_radiance(world, p, v, n, stats)
+    let sea = f * sky + sun + (1.0 - f) * below / (WATER_IOR * WATER_IOR) + crest_radiance(world, p, v, n, stats);
+    white_water(world, p, d, t, normal, sea)
+}
+
+/// Foam (Darles et al. 2007 §4.1, Koepke 1984) and active whitecaps (Dupuy & Bruneton 2012) over
+/// the sea radiance at `p`, seen along `d` from `t` metres.
+fn white_water(world: &World, p: DVec3, d: DVec3, t: f64, n: DVec3, sea: DVec3) -> SurfaceShade {
+    let mut shade = SurfaceShade { radiance: sea, foam: 0.0, whitecap: 0.0 };
+    if world.foam.is_none() && world.whitecaps.is_none() {
+        return shade;
+    }
+    // Pixel footprint on the sea: the pixel's angle at distance t, stretched by the grazing view
+    // (geometric mean of the two axes); a Gaussian footprint of the same area has σ = ℓ/√12.
+    let footprint = t * world.camera.pixel_angle() / d.y.abs().max(0.05).sqrt();
+    let sun = world.sky.sun();
+    let cos_sun = n.dot(sun.direction);
+    let e_sky = world.sky.horizontal_irradiance_rgb();
+    let e_moon = world.sky.moon().map_or(DVec3::ZERO, |m| m.irradiance_rgb * n.dot(m.direction).max(0.0));
+    let lambert = |r: f64| -> DVec3 {
+        let f = |c: usize| brine_foam::foam_radiance(r, sun.irradiance_rgb[c], cos_sun, e_sky[c] + e_moon[c]);
+        DVec3::new(f(0), f(1), f(2))
+    };
+    if let Some(foam) = &world.foam {
+        let (gx, gz) = (-n.x / n.y.max(1e-3), -n.z / n.y.max(1e-3));
+        let s = foam.extension.foam_amount(foam.coverage, p.y, gx, gz, p.x, p.z, footprint);
+        shade.radiance = shade.radiance * (1.0 - s) + lambert(foam.reflectance) * s;
+        shade.foam = s;
+    }
+    if let Some(wc) = &world.whitecaps {
+        let w = wc.coverage(DVec2::new(p.x, p.z), world.time, footprint / 12f64.sqrt());
+        shade.radiance = shade.radiance * (1.0 - w) + lambert(WHITECAP_REFLECTANCE) * w;
+        shade.whitecap = w;
+    }
+    shade
 }
 
 /// Longest path through a crest followed for the dipole (m): beyond it the light is gone.

@@ -92,11 +92,22 @@ pub struct WaterConfig {
     pub chlorophyll_mg_m3: Option<f64>,
     /// The sea floor; deep water when absent.
     pub floor: Option<FloorConfig>,
+    /// Sea-surface temperature (°C, `[−2, 40]`); with `air_temperature_c`, whitecap coverage
+    /// follows Monahan & Ó Muircheartaigh's 1986 stability law, else their 1980 wind law.
+    pub temperature_c: Option<f64>,
+    /// Air temperature 10 m above the sea (°C, `[−40, 50]`).
+    pub air_temperature_c: Option<f64>,
 }
 
 impl Default for WaterConfig {
     fn default() -> Self {
-        Self { water_type: Some("IB".into()), chlorophyll_mg_m3: None, floor: None }
+        Self {
+            water_type: Some("IB".into()),
+            chlorophyll_mg_m3: None,
+            floor: None,
+            temperature_c: None,
+            air_temperature_c: None,
+        }
     }
 }
 
@@ -144,11 +155,30 @@ pub struct PhenomenaConfig {
     pub clouds: bool,
     /// Sun light through thin wave crests (Jensen et al. 2001 dipole, Li Ying et al. 2018 §3.3).
     pub subsurface: bool,
+    /// Decaying foam on crests (Darles et al. 2007 §4.1: Monahan coverage, height/slope/noise
+    /// extension, Koepke reflectance).
+    pub foam: bool,
+    /// Active whitecaps from the displacement Jacobian (Dupuy & Bruneton 2012).
+    pub whitecaps: bool,
+    /// Sea spray above the surface (Monahan et al. 1986, Darles et al. 2007 §4.2).
+    pub spray: bool,
+    /// Raw whitecap threshold `α` of Dupuy & Bruneton (`[−2, 2]`); when absent, `α` is calibrated
+    /// so that the sea's mean coverage is Monahan's.
+    pub whitecap_alpha: Option<f64>,
 }
 
 impl Default for PhenomenaConfig {
     fn default() -> Self {
-        Self { glare: true, aerial_perspective: true, clouds: true, subsurface: true }
+        Self {
+            glare: true,
+            aerial_perspective: true,
+            clouds: true,
+            subsurface: true,
+            foam: true,
+            whitecaps: true,
+            spray: true,
+            whitecap_alpha: None,
+        }
     }
 }
 
@@ -588,6 +618,15 @@ impl Scene {
         }
         if let Some(t) = &w.water_type {
             crate::world::water_body_of(Some(t), None).map_err(|m| ("water", "type", m))?;
+        }
+        if let Some(t) = w.temperature_c {
+            range("water", "temperature_c", t, (-2.0..=40.0).contains(&t), "[-2, 40] °C")?;
+        }
+        if let Some(t) = w.air_temperature_c {
+            range("water", "air_temperature_c", t, (-40.0..=50.0).contains(&t), "[-40, 50] °C")?;
+        }
+        if let Some(a) = self.phenomena.whitecap_alpha {
+            range("phenomena", "whitecap_alpha", a, (-2.0..=2.0).contains(&a), "[-2, 2]")?;
         }
         if let Some(c) = w.chlorophyll_mg_m3 {
             range("water", "chlorophyll_mg_m3", c, (0.0..=30.0).contains(&c), "[0, 30] mg/m³")?;

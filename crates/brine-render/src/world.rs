@@ -1,6 +1,10 @@
 //! A scene turned into models: the fitted sea, the sky and sun, the slope statistics.
 
 use brine_ephem::{Atmosphere, Observer, Options as EphemOptions, SunModel, moon_position, parse_utc, sun_position};
+use brine_foam::{
+    CoverageParams, DARLES_ONSET_WIND_M_S, FoamExtension, FoamExtensionParams, KoepkeFoam, SprayMedium, SprayParams,
+    SurfaceStatistics, WhitecapLaw,
+};
 use brine_optics::{
     DarlesWater, DipoleMaterial, JerlovType, RgbBands, SlopeVariance, WATER_IOR, WaterBody, WaterRgb,
     fresnel_dielectric, hemispherical_fresnel_reflectance,
@@ -10,6 +14,9 @@ use brine_trace::{LipschitzSum, Method, TraceOptions};
 use brine_waves::{
     CosineSquared, CosineTwoS, Directions, DonelanBanner, Elfouhaily, FitOptions, Jonswap, Phillips, PiersonMoskowitz,
     SeaComponent, Spectrum, Spreading, SteepnessLimit, Tma, Trochoid, TrochoidSet, TrochoidSum, fit_sea_state,
+};
+use brine_whitecap::{
+    Calibration, CalibrationOptions, ErfMethod, FootprintFilter, JacobianStatistics, whitecap_coverage,
 };
 use glam::{DVec2, DVec3};
 use rand::{Rng, SeedableRng};
@@ -52,6 +59,12 @@ pub struct World {
     pub floor: Option<Floor>,
     /// `true` when the camera is below the sea surface.
     pub underwater: bool,
+    /// Foam on crests, when on and the wind makes any.
+    pub foam: Option<Foam>,
+    /// Active whitecaps, when on and the wind makes any.
+    pub whitecaps: Option<Whitecaps>,
+    /// The spray medium, when on.
+    pub spray: Option<SprayMedium>,
     /// Dipole materials of the water per channel (R, G, B) for light through thin crests, when
     /// sub-surface scattering is on.
     pub crest: Option<[DipoleMaterial; 3]>,
@@ -108,6 +121,43 @@ pub fn log_average_luminance_cd_m2(pixels: &[DVec3]) -> f64 {
         })
         .sum();
     (sum / pixels.len() as f64).exp()
+}
+
+/// Share of Monahan's whitecap coverage drawn as active whitecaps (Dupuy & Bruneton) when foam
+/// (Darles' extension) draws the rest: Brine's split of stage A (active breaking) and stage B
+/// (decaying foam) whitecaps, so that the two models together cover Monahan's `W` once.
+pub const ACTIVE_WHITECAP_SHARE: f64 = 0.2;
+
+/// Foam on crests: Darles et al.'s extension of Monahan's coverage with Koepke's reflectance.
+pub struct Foam {
+    /// The extension (height, slope and noise weighting).
+    pub extension: FoamExtension,
+    /// Coverage distributed by the extension, `[0, 1]`.
+    pub coverage: f64,
+    /// Effective foam reflectance `R_ef = f_ef R_f` (Koepke 1984).
+    pub reflectance: f64,
+}
+
+/// Active whitecaps: the Jacobian statistics of the set and the calibrated (or raw) threshold.
+pub struct Whitecaps {
+    /// Statistics of the set's displacement Jacobian.
+    pub stats: JacobianStatistics,
+    /// Calibrated threshold, or `None` for the raw `α`.
+    pub calibration: Option<Calibration>,
+    /// Raw `α` when not calibrated.
+    pub alpha: f64,
+}
+
+impl Whitecaps {
+    /// Coverage `W` over a Gaussian footprint of standard deviation `sigma_m` centred at the rest
+    /// position `u` (the hit point's horizontal position).
+    pub fn coverage(&self, u: DVec2, t: f64, sigma_m: f64) -> f64 {
+        let m = self.stats.moments_at(u, t, sigma_m, FootprintFilter::Gaussian);
+        match &self.calibration {
+            Some(c) => c.coverage(m, sigma_m, ErfMethod::AbramowitzStegun),
+            None => whitecap_coverage(m, self.alpha, ErfMethod::AbramowitzStegun),
+        }
+    }
 }
 
 /// Mean cosine `g` of the scattering phase function of sea water used by the crest dipole: the
@@ -355,6 +405,61 @@ impl World {
             .map_err(WorldError::Model)?;
         let water = WaterRgb::new(&body, RgbBands::SrgbAverage);
         let floor = scene.water.floor.as_ref().map(Floor::new).transpose()?;
+        // Whitecap coverage of the wind (Monahan & Ó Muircheartaigh 1980, or 1986 with the
+        // water–air temperature difference), shared between foam and active whitecaps.
+        let ph = &scene.phenomena;
+        let law = match (scene.water.temperature_c, scene.water.air_temperature_c) {
+            (Some(tw), Some(ta)) => WhitecapLaw::Monahan1986Stability { delta_t_c: tw - ta },
+            _ => WhitecapLaw::Monahan1980,
+        };
+        let monahan = brine_foam::whitecap_coverage(
+            &CoverageParams::new(s.wind_speed_m_s, law, DARLES_ONSET_WIND_M_S).map_err(|e| model(&e))?,
+        );
+        let (foam_share, whitecap_share) = match (ph.foam, ph.whitecaps) {
+            (true, true) => (1.0 - ACTIVE_WHITECAP_SHARE, ACTIVE_WHITECAP_SHARE),
+            (f, w) => (f64::from(u8::from(f)), f64::from(u8::from(w))),
+        };
+        let foam = if ph.foam && monahan > 0.0 && !set.is_empty() {
+            let (sx, sz) = set.slope_variances(0.0);
+            let stats = SurfaceStatistics {
+                y_min: -set.total_amplitude(),
+                y_max: set.total_amplitude(),
+                height_std: set.variance().sqrt(),
+                slope_variance_x: sx.min(10.0),
+                slope_variance_z: sz.min(10.0),
+            };
+            let extension =
+                FoamExtension::new(&FoamExtensionParams { seed: s.seed, ..FoamExtensionParams::default() }, &stats)
+                    .map_err(|e| model(&e))?;
+            Some(Foam {
+                extension,
+                coverage: monahan * foam_share,
+                reflectance: KoepkeFoam::default().effective_reflectance(),
+            })
+        } else {
+            None
+        };
+        let whitecaps = if ph.whitecaps && !set.is_empty() && (ph.whitecap_alpha.is_some() || monahan > 0.0) {
+            let stats = JacobianStatistics::new(&set).map_err(|e| model(&e))?;
+            let calibration = match ph.whitecap_alpha {
+                Some(_) => None,
+                None => Some(
+                    Calibration::new(&stats, monahan * whitecap_share, &CalibrationOptions::default())
+                        .map_err(|e| model(&e))?,
+                ),
+            };
+            Some(Whitecaps { stats, calibration, alpha: ph.whitecap_alpha.unwrap_or(0.0) })
+        } else {
+            None
+        };
+        let spray = if ph.spray && s.wind_speed_m_s > 0.0 {
+            Some(
+                SprayMedium::new(&SprayParams { u10: s.wind_speed_m_s, ..SprayParams::default() })
+                    .map_err(|e| model(&e))?,
+            )
+        } else {
+            None
+        };
         let crest = if scene.phenomena.subsurface {
             let m =
                 |i: usize| DipoleMaterial::new(water.a[i], water.b[i], CREST_PHASE_G, WATER_IOR).map_err(|e| model(&e));
@@ -389,6 +494,9 @@ impl World {
             floor,
             underwater: false,
             crest,
+            foam,
+            whitecaps,
+            spray,
             trace,
             camera,
             exposure_ev,
