@@ -65,15 +65,33 @@
 //!   realistic ocean scenes", WSCG, §3 and Algorithm 1.
 
 mod bounds;
+mod darles;
+mod footprint;
+mod options;
 mod ray;
 mod refine;
 mod sphere;
 mod stats;
+mod step;
 mod sum;
+mod tiered;
+mod tiers;
+mod trace;
 
 pub use bounds::Aabb;
+pub use footprint::{FADE_CURVATURE, FADE_SLOPE, component_weights, footprint_weight, footprint_weight_slope};
+pub use options::{Hit, Method, Step, StepKind, TraceOptions, TraceOptionsError};
 pub use ray::{Ray, RayError};
-pub use refine::refine_crossing;
-pub use sphere::{Hit, Method, TraceOptions, TraceOptionsError, trace};
+pub use refine::{bisect_crossing, refine_crossing};
 pub use stats::TraceStats;
+pub use step::{StepBound, efficient_lipschitz_step, printed_darles_step};
 pub use sum::LipschitzSum;
+pub use tiered::{TierScratch, trace_tiers, trace_tiers_with};
+pub use tiers::{COMPONENTS_PER_TIER, ComponentTiers, RayTiers, TierBounds, TierSample};
+pub use trace::{trace, trace_logged};
+
+/// The SIMD vector types (the `wide` crate) used by lane-parallel [`RayTiers`] implementors, so that
+/// they share the tracer's SIMD dependency and compile-time SIMD level.
+pub mod simd {
+    pub use wide::{f32x8, f64x4};
+}

@@ -54,6 +54,7 @@
 
 mod dispersion;
 mod error;
+mod fast_profile;
 mod fit;
 mod integrate;
 mod lipschitz;
@@ -61,6 +62,7 @@ mod set;
 mod spectrum;
 mod spreading;
 mod surface;
+mod traced;
 mod trochoid;
 
 pub use dispersion::{G, omega_deep_water, wavenumber_deep_water};
@@ -70,4 +72,5 @@ pub use set::TrochoidSet;
 pub use spectrum::{PiersonMoskowitz, Spectrum};
 pub use spreading::{CosineTwoS, Spreading};
 pub use surface::{TrochoidField, TrochoidSum, WaveSurface};
+pub use traced::{LANES, TracedTrochoids};
 pub use trochoid::{MAX_STEEPNESS, Trochoid, solve_trochoid_phase};

@@ -1,0 +1,502 @@
+//! A trochoid sum frozen at one instant and laid out for fast tracing: waves sorted by length
+//! scale in tiers of 8 f32 lanes (SIMD), each tier with its bounds along a ray.
+
+use std::cell::RefCell;
+use std::f64::consts::TAU;
+
+use brine_trace::{
+    Aabb, FADE_CURVATURE, FADE_SLOPE, Hit, LipschitzSum, Ray, RayTiers, Step, TierBounds, TierSample, TierScratch,
+    TraceOptions, TraceStats, footprint_weight, trace_tiers_with,
+};
+use glam::{DVec2, DVec3};
+use brine_trace::simd::f32x8;
+
+use crate::fast_profile::{PROFILE_ERROR, ProfileMode, profile1, profile8, split_phase};
+use crate::{Trochoid, TrochoidSet};
+
+/// Waves per tier: one f32x8 vector.
+pub const LANES: usize = 8;
+
+/// Rounds to the nearest integer by the `1.5·2⁵²` trick (exact for `|x| < 2⁵¹`), branch-free and
+/// without a libm call, so the phase loop vectorises.
+#[inline]
+fn round_fast(x: f64) -> f64 {
+    const MAGIC: f64 = 6_755_399_441_055_744.0;
+    (x + MAGIC) - MAGIC
+}
+
+/// [`split_phase`] for a batch, vectorisable.
+#[inline]
+fn split_phases(s: &[f64; LANES], hi: &mut [f32; LANES], lo: &mut [f32; LANES]) {
+    for l in 0..LANES {
+        let r = s[l] - TAU * round_fast(s[l] * (1.0 / TAU));
+        hi[l] = r as f32;
+        lo[l] = (r - f64::from(hi[l])) as f32;
+    }
+}
+
+/// One tier of 8 lanes (padding lanes have `A = 0`, `k = 0`).
+#[derive(Debug, Clone)]
+struct Tier {
+    kx: [f64; LANES],
+    kz: [f64; LANES],
+    offset: [f64; LANES],
+    wavenumber: [f64; LANES],
+    amplitude: [f32; LANES],
+    steepness: [f32; LANES],
+    /// `Aᵢ/√(1 − Qᵢ²)` (the max slope per unit wavenumber along `d̂`).
+    slope_factor: [f64; LANES],
+    /// `Aᵢ/(1 − Qᵢ)²` (the curvature bound per unit wavenumber² along `d̂`).
+    curvature_factor: [f64; LANES],
+    /// `Aᵢ·PROFILE_ERROR/(1 − Qᵢ)²` (derivative error per unit `|σᵢ|`).
+    slope_error_factor: [f64; LANES],
+    mode: ProfileMode,
+    /// Real waves in this tier.
+    count: u32,
+    amplitude_sum: f64,
+    /// Bound of the evaluation error of the tier's sum (m).
+    error: f64,
+}
+
+/// The trochoid-sum surface of Darles et al. (`F = y − Σ Aᵢ τ_{Qᵢ}(kᵢ d̂ᵢ·(x, z) − ωᵢt + φᵢ)`,
+/// [`crate::TrochoidField`]) at one instant, prepared for [`brine_trace::Method::Tiered`]:
+///
+/// - waves sorted by decreasing `2Aᵢ/Lᵢ = 2√(1 − Qᵢ²)/kᵢ` (Darles' key at its largest, ∝ the
+///   wavelength), in tiers of [`LANES`]; component 0 is `y`, then the waves in their original order;
+/// - each tier evaluated in f32 SIMD lanes ([`wide::f32x8`]) after an f64 reduction of the phase,
+///   within `Aᵢ·5×10⁻⁷·(1 + 1/√(1 − Qᵢ²))` of the f64 surface (test `profile_error_is_within_bound`);
+/// - along a ray, each tier knows its value, derivative, range, Lipschitz and curvature bounds
+///   (`Σ Aᵢ σᵢ²/(1 − Qᵢ)²`, `σᵢ = kᵢ d̂ᵢ·d̂_xz`), and fades with the pixel footprint.
+///
+/// It implements [`LipschitzSum`] (every method can trace it; the components are evaluated by
+/// the same f32 kernel) and overrides [`LipschitzSum::trace_tiered`] with the fast path.
+///
+/// # References
+/// Darles et al. 2007 §3.2; equation sheet §1 (trochoid profile, per-wave bounds, antialiasing).
+#[derive(Debug, Clone)]
+pub struct TracedTrochoids {
+    tiers: Vec<Tier>,
+    /// `(tier, lane)` of wave `i` (original order).
+    lane_of_wave: Vec<(usize, usize)>,
+    /// Wave `i` (original order): `(Trochoid, offset φᵢ − ωᵢt)`.
+    waves: Vec<(Trochoid, f64)>,
+    total_amplitude: f64,
+    error: f64,
+}
+
+thread_local! {
+    static SCRATCH: RefCell<(TierScratch, RayState)> = RefCell::new((TierScratch::default(), RayState::default()));
+}
+
+impl TracedTrochoids {
+    /// The surface of `set` at time `time` (s).
+    pub fn new(set: &TrochoidSet, time: f64) -> Self {
+        let n = set.len();
+        let mut order: Vec<usize> = (0..n).collect();
+        let key = |w: &Trochoid| (1.0 - w.steepness() * w.steepness()).sqrt() / w.wavenumber();
+        order.sort_by(|&a, &b| key(&set.waves()[b]).total_cmp(&key(&set.waves()[a])));
+        let mut tiers = Vec::with_capacity(n.div_ceil(LANES));
+        let mut lane_of_wave = vec![(0, 0); n];
+        for chunk in order.chunks(LANES) {
+            let mut t = Tier {
+                kx: [0.0; LANES],
+                kz: [0.0; LANES],
+                offset: [0.0; LANES],
+                wavenumber: [0.0; LANES],
+                amplitude: [0.0; LANES],
+                steepness: [0.0; LANES],
+                slope_factor: [0.0; LANES],
+                curvature_factor: [0.0; LANES],
+                slope_error_factor: [0.0; LANES],
+                mode: ProfileMode::for_steepness(0.0),
+                count: chunk.len() as u32,
+                amplitude_sum: 0.0,
+                error: 0.0,
+            };
+            let mut q_max = 0.0f64;
+            for (l, &i) in chunk.iter().enumerate() {
+                let w = &set.waves()[i];
+                let d = w.direction_vector();
+                let (a, q) = (w.amplitude(), w.steepness());
+                t.kx[l] = w.wavenumber() * d.x;
+                t.kz[l] = w.wavenumber() * d.y;
+                t.offset[l] = w.phase() - w.omega() * time;
+                t.wavenumber[l] = w.wavenumber();
+                t.amplitude[l] = a as f32;
+                t.steepness[l] = q as f32;
+                t.slope_factor[l] = a / (1.0 - q * q).sqrt();
+                t.curvature_factor[l] = a / ((1.0 - q) * (1.0 - q));
+                t.slope_error_factor[l] = a * PROFILE_ERROR / ((1.0 - q) * (1.0 - q));
+                t.amplitude_sum += a;
+                // f32 amplitude rounding (6×10⁻⁸ relative) and the 8-lane f32 sum are inside the
+                // factor 2 of PROFILE_ERROR's margin; the bound adds them explicitly anyway.
+                t.error += a * PROFILE_ERROR * (1.0 + 1.0 / (1.0 - q * q).sqrt()) + a * 1e-6;
+                q_max = q_max.max(q);
+                lane_of_wave[i] = (tiers.len(), l);
+            }
+            t.mode = ProfileMode::for_steepness(q_max);
+            tiers.push(t);
+        }
+        let waves = set.waves().iter().map(|w| (*w, w.phase() - w.omega() * time)).collect();
+        let error = tiers.iter().map(|t| t.error).sum();
+        Self { tiers, lane_of_wave, waves, total_amplitude: set.total_amplitude(), error }
+    }
+
+    /// Number of waves.
+    pub fn len(&self) -> usize {
+        self.waves.len()
+    }
+
+    /// `true` for a flat sea.
+    pub fn is_empty(&self) -> bool {
+        self.waves.is_empty()
+    }
+
+    /// Bound of `|h̃ − h|` (m) between this f32 evaluation and the f64 height of
+    /// [`crate::TrochoidField`], everywhere.
+    pub fn error_bound(&self) -> f64 {
+        self.error
+    }
+
+    /// Height `h̃(x, z)` (m) by the f32 SIMD kernel.
+    pub fn height(&self, x: f64, z: f64) -> f64 {
+        let mut sum = 0.0;
+        for t in &self.tiers {
+            let mut s = [0.0; LANES];
+            for l in 0..LANES {
+                s[l] = t.kx[l] * x + t.kz[l] * z + t.offset[l];
+            }
+            let (mut hi, mut lo) = ([0.0f32; LANES], [0.0f32; LANES]);
+            split_phases(&s, &mut hi, &mut lo);
+            let (c, _, _) = profile8(f32x8::new(hi), f32x8::new(lo), f32x8::new(t.steepness), t.mode);
+            sum += f64::from((f32x8::new(t.amplitude) * c).reduce_add());
+        }
+        sum
+    }
+
+    /// Height of wave `i` alone by the scalar twin of the kernel.
+    fn wave_height_fast(&self, i: usize, x: f64, z: f64) -> f64 {
+        let (tier, lane) = self.lane_of_wave[i];
+        let t = &self.tiers[tier];
+        let (hi, lo) = split_phase(t.kx[lane] * x + t.kz[lane] * z + t.offset[lane]);
+        let (c, _, _) = profile1(hi, lo, t.steepness[lane], t.mode);
+        f64::from(t.amplitude[lane]) * f64::from(c)
+    }
+
+    /// The fade weight of wave `i` (original order) at distance `t` along a ray of direction `d̂`
+    /// traced with a pixel footprint of `footprint_angle` rad (1 when the angle is 0).
+    pub fn fade_weight(&self, i: usize, direction: DVec3, footprint_angle: f64, t: f64) -> f64 {
+        if footprint_angle > 0.0 {
+            footprint_weight(self.component_fade_distance(i + 1, direction, footprint_angle), t)
+        } else {
+            1.0
+        }
+    }
+
+    /// The gradient `(∂h/∂x, ∂h/∂z)` of the surface the tracer drew at a hit `t` along a ray of
+    /// direction `d̂`: every wave weighted by its fade weight (f64, exact profiles).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: the hit's horizontal position (m).
+    /// - `direction`: unit ray direction; `footprint_angle` (rad) and `t` (m) as traced.
+    ///
+    /// # Returns
+    /// The gradient (dimensionless).
+    pub fn faded_gradient(&self, x: f64, z: f64, direction: DVec3, footprint_angle: f64, t: f64) -> DVec2 {
+        let mut g = DVec2::ZERO;
+        for (i, (w, offset)) in self.waves.iter().enumerate() {
+            let weight = self.fade_weight(i, direction, footprint_angle, t);
+            if weight == 0.0 {
+                continue;
+            }
+            let k = w.wavenumber() * w.direction_vector();
+            let (_, c, s) = crate::solve_trochoid_phase(k.x * x + k.y * z + offset, w.steepness());
+            g += weight * (-w.amplitude() * s / (1.0 - w.steepness() * c)) * k;
+        }
+        g
+    }
+
+    /// The slope covariance `(⟨ζx²⟩, ⟨ζx ζz⟩, ⟨ζz²⟩)` of the waves the tracer faded at `t`:
+    /// `Σ (1 − wᵢ) ⟨sᵢ²⟩ (k̂x², k̂x k̂z, k̂z²)` in world axes, to be added to the BRDF's unresolved
+    /// slope variance (Bruneton et al. 2010 seamless transition).
+    ///
+    /// # Arguments
+    /// - `direction`, `footprint_angle`, `t`: as traced.
+    ///
+    /// # Returns
+    /// The covariance (dimensionless) as `DVec3(xx, xz, zz)`.
+    ///
+    /// # References
+    /// Equation sheet §11 (`σ²_BRDF = σ²_total − σ²_resolved`, weights `smoothstep(1, 1.5, λ/ℓ)`).
+    pub fn faded_slope_covariance(&self, direction: DVec3, footprint_angle: f64, t: f64) -> DVec3 {
+        let mut out = DVec3::ZERO;
+        for (i, (w, _)) in self.waves.iter().enumerate() {
+            let lost = 1.0 - self.fade_weight(i, direction, footprint_angle, t);
+            if lost > 0.0 {
+                let d = w.direction_vector();
+                out += lost * w.mean_square_slope() * DVec3::new(d.x * d.x, d.x * d.y, d.y * d.y);
+            }
+        }
+        out
+    }
+}
+
+/// Per-ray state of the fast tiers.
+#[derive(Debug, Default, Clone)]
+struct RayState {
+    /// Phase at the ray origin, per lane (f64).
+    s0: Vec<[f64; LANES]>,
+    /// Phase rate along the ray `σ = k·d̂_xz` (rad m⁻¹), per lane.
+    sigma: Vec<[f64; LANES]>,
+    /// Fade distance per lane (m; `+∞` without fading).
+    fade: Vec<[f32; LANES]>,
+    /// `Aᵢ |σᵢ|/√(1 − Qᵢ²)` and `Aᵢ σᵢ²/(1 − Qᵢ)²` per lane (derivative and curvature bounds).
+    lane_bounds: Vec<[(f64, f64); LANES]>,
+    /// Per tier: `(Σ A|σ|/√(1−Q²), Σ Aσ²/(1−Q)², slope error, min fade, max fade)`.
+    tier: Vec<(f64, f64, f64, f64, f64)>,
+}
+
+/// [`RayTiers`] of a [`TracedTrochoids`] along one ray: tier 0 is `y`, tier `j ≥ 1` the `j`-th
+/// group of 8 waves.
+struct SeaTiers<'a> {
+    sea: &'a TracedTrochoids,
+    state: &'a mut RayState,
+    origin: DVec3,
+    direction: DVec3,
+    t_exit: f64,
+    slope_error: f64,
+}
+
+impl<'a> SeaTiers<'a> {
+    fn new(sea: &'a TracedTrochoids, state: &'a mut RayState, ray: &Ray, t_exit: f64, footprint_angle: f64) -> Self {
+        let (o, d) = (ray.origin(), ray.direction());
+        let n = sea.tiers.len();
+        state.s0.resize(n, [0.0; LANES]);
+        state.sigma.resize(n, [0.0; LANES]);
+        state.fade.resize(n, [f32::INFINITY; LANES]);
+        state.lane_bounds.resize(n, [(0.0, 0.0); LANES]);
+        state.tier.resize(n, (0.0, 0.0, 0.0, 0.0, 0.0));
+        let mut slope_error = 0.0;
+        let inv_dy2 = 1.0 / (d.y * d.y).max(1e-300);
+        for (j, t) in sea.tiers.iter().enumerate() {
+            let (mut l_sum, mut k_sum, mut e_sum) = (0.0, 0.0, 0.0);
+            let (s0, sigma, lanes) = (&mut state.s0[j], &mut state.sigma[j], &mut state.lane_bounds[j]);
+            for l in 0..LANES {
+                s0[l] = t.kx[l] * o.x + t.kz[l] * o.z + t.offset[l];
+                let sg = t.kx[l] * d.x + t.kz[l] * d.z;
+                sigma[l] = sg;
+                lanes[l] = (t.slope_factor[l] * sg.abs(), t.curvature_factor[l] * sg * sg);
+                l_sum += lanes[l].0;
+                k_sum += lanes[l].1;
+                e_sum += t.slope_error_factor[l] * sg.abs();
+            }
+            let (mut f_min, mut f_max) = (f64::INFINITY, f64::INFINITY);
+            if footprint_angle > 0.0 {
+                // Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²)): the footprint stretched by 1/|d_y| along the view.
+                f_min = f64::INFINITY;
+                f_max = 0.0;
+                let fade = &mut state.fade[j];
+                for l in 0..LANES {
+                    let k2 = t.wavenumber[l] * t.wavenumber[l] + sigma[l] * sigma[l] * inv_dy2;
+                    let big_t = if l < t.count as usize { TAU / (footprint_angle * k2.sqrt()) } else { 0.0 };
+                    fade[l] = big_t as f32;
+                    if l < t.count as usize {
+                        f_min = f_min.min(big_t);
+                        f_max = f_max.max(big_t);
+                    }
+                }
+            } else {
+                state.fade[j] = [f32::INFINITY; LANES];
+            }
+            state.tier[j] = (l_sum, k_sum, e_sum, f_min, f_max);
+            slope_error += e_sum;
+        }
+        Self { sea, state, origin: o, direction: d, t_exit, slope_error }
+    }
+}
+
+impl RayTiers for SeaTiers<'_> {
+    fn tier_count(&self) -> usize {
+        self.sea.tiers.len() + 1
+    }
+
+    fn bounds(&mut self, tier: usize, t: f64) -> TierBounds {
+        if tier == 0 {
+            let (y0, y1) = (self.origin.y + self.direction.y * t, self.origin.y + self.direction.y * self.t_exit);
+            return TierBounds { min: y0.min(y1), max: y0.max(y1), lipschitz: self.direction.y.abs(), curvature: 0.0 };
+        }
+        let j = tier - 1;
+        let (l, k, _, f_min, f_max) = self.state.tier[j];
+        if t >= f_max {
+            return TierBounds::ZERO;
+        }
+        if f_min >= 1.5 * self.t_exit {
+            let a = self.sea.tiers[j].amplitude_sum;
+            return TierBounds { min: -a, max: a, lipschitz: l, curvature: k };
+        }
+        // Faded products wᵢ·nᵢ with wᵢ non-increasing in t (footprint.rs): |wᵢnᵢ| ≤ wᵢ(t)Aᵢ,
+        // |(wᵢnᵢ)'| ≤ wᵢ(t)Lᵢ + |wᵢ'|Aᵢ, |(wᵢnᵢ)''| ≤ wᵢ(t)Kᵢ + 2|wᵢ'|Lᵢ + |wᵢ''|Aᵢ, with
+        // |wᵢ'| ≤ 4.5/t and |wᵢ''| ≤ 63/t² while fading (t ∈ [Tᵢ/1.5, Tᵢ]), 0 after.
+        let tier = &self.sea.tiers[j];
+        let (mut amp, mut lip, mut curv) = (0.0, 0.0, 0.0);
+        for l in 0..tier.count as usize {
+            let big_t = f64::from(self.state.fade[j][l]);
+            if big_t <= t {
+                continue;
+            }
+            let (a_i, (l_i, k_i)) = (f64::from(tier.amplitude[l]), self.state.lane_bounds[j][l]);
+            let w = footprint_weight(big_t, t);
+            amp += w * a_i;
+            lip += w * l_i;
+            curv += w * k_i;
+            if big_t < 1.5 * self.t_exit {
+                let tt = t.max(big_t / 1.5);
+                lip += FADE_SLOPE * a_i / tt;
+                curv += 2.0 * FADE_SLOPE * l_i / tt + FADE_CURVATURE * a_i / (tt * tt);
+            }
+        }
+        TierBounds { min: -amp, max: amp, lipschitz: lip, curvature: curv }
+    }
+
+    fn sample(&mut self, tier: usize, t: f64) -> TierSample {
+        if tier == 0 {
+            return TierSample { value: self.origin.y + self.direction.y * t, slope: self.direction.y, terms: 0 };
+        }
+        let j = tier - 1;
+        let (_, _, _, f_min, f_max) = self.state.tier[j];
+        if t >= f_max {
+            return TierSample { value: 0.0, slope: 0.0, terms: 0 };
+        }
+        let w = &self.sea.tiers[j];
+        let (s0, sigma) = (&self.state.s0[j], &self.state.sigma[j]);
+        let mut s = [0.0; LANES];
+        let mut sg = [0.0f32; LANES];
+        for l in 0..LANES {
+            s[l] = s0[l] + sigma[l] * t;
+            sg[l] = sigma[l] as f32;
+        }
+        let (mut hi, mut lo) = ([0.0f32; LANES], [0.0f32; LANES]);
+        split_phases(&s, &mut hi, &mut lo);
+        let (c, sn, inv) = profile8(f32x8::new(hi), f32x8::new(lo), f32x8::new(w.steepness), w.mode);
+        let amp = f32x8::new(w.amplitude);
+        // n = −w·A cos θ;  dn/dt = −w'·A cos θ + w·A sin θ σ/(1 − Q cos θ).
+        let h = amp * c;
+        let dh = amp * sn * inv * f32x8::new(sg);
+        let (value, slope, terms) = if t * 1.5 <= f_min {
+            (-h.reduce_add(), dh.reduce_add(), w.count)
+        } else {
+            let tf = f32x8::splat(t as f32);
+            let x = f32x8::new(self.state.fade[j]) / tf;
+            let u = ((x - f32x8::splat(1.0)) * f32x8::splat(2.0)).max(f32x8::splat(0.0)).min(f32x8::splat(1.0));
+            let weight = u * u * (f32x8::splat(3.0) - f32x8::splat(2.0) * u);
+            let dweight = f32x8::splat(-12.0) * u * (f32x8::splat(1.0) - u) * x / tf;
+            let live = self.state.fade[j].iter().take(w.count as usize).filter(|&&f| f64::from(f) > t).count();
+            (-(weight * h).reduce_add(), (weight * dh - dweight * h).reduce_add(), live as u32)
+        };
+        TierSample { value: f64::from(value), slope: f64::from(slope), terms }
+    }
+
+    fn error_bound(&self) -> f64 {
+        self.sea.error
+    }
+
+    fn slope_error_bound(&self) -> f64 {
+        self.slope_error
+    }
+}
+
+impl LipschitzSum for TracedTrochoids {
+    fn component_count(&self) -> usize {
+        self.waves.len() + 1
+    }
+
+    fn component(&self, i: usize, p: DVec3) -> f64 {
+        if i == 0 { p.y } else { -self.wave_height_fast(i - 1, p.x, p.z) }
+    }
+
+    fn component_lipschitz(&self, i: usize) -> f64 {
+        if i == 0 { 1.0 } else { self.waves[i - 1].0.max_slope() }
+    }
+
+    fn component_min(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
+        if i == 0 { a.y.min(b.y) } else { -self.waves[i - 1].0.amplitude() }
+    }
+
+    fn component_max(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
+        if i == 0 { a.y.max(b.y) } else { self.waves[i - 1].0.amplitude() }
+    }
+
+    /// `Lᵢ |k̂ᵢ·d̂_xz|` for a wave, `|d_y|` for `y`.
+    fn component_directional_lipschitz(&self, i: usize, d: DVec3) -> f64 {
+        if i == 0 {
+            return d.y.abs();
+        }
+        let w = &self.waves[i - 1].0;
+        let k = w.direction_vector();
+        w.max_slope() * (k.x * d.x + k.y * d.z).abs()
+    }
+
+    /// `d(−A cos θ)/dt = A sin θ/(1 − Q cos θ) · σ`, `σ = k d̂ᵢ·d̂_xz` (f32 kernel).
+    fn component_directional_derivative(&self, i: usize, p: DVec3, d: DVec3) -> Option<f64> {
+        if i == 0 {
+            return Some(d.y);
+        }
+        let (tier, lane) = self.lane_of_wave[i - 1];
+        let t = &self.tiers[tier];
+        let (hi, lo) = split_phase(t.kx[lane] * p.x + t.kz[lane] * p.z + t.offset[lane]);
+        let (_, s, inv) = profile1(hi, lo, t.steepness[lane], t.mode);
+        let sigma = t.kx[lane] * d.x + t.kz[lane] * d.z;
+        Some(f64::from(t.amplitude[lane]) * f64::from(s * inv) * sigma)
+    }
+
+    /// `A σ²/(1 − Q)²`: `|τ''_Q| = |Q − cos θ|/(1 − Q cos θ)³ ≤ 1/(1 − Q)²` (at the crest).
+    fn component_directional_curvature(&self, i: usize, d: DVec3) -> f64 {
+        if i == 0 {
+            return 0.0;
+        }
+        let w = &self.waves[i - 1].0;
+        let sigma = w.wavenumber() * (w.direction_vector().x * d.x + w.direction_vector().y * d.z);
+        w.amplitude() * sigma * sigma / ((1.0 - w.steepness()).powi(2))
+    }
+
+    fn component_feature_size(&self, i: usize) -> f64 {
+        if i == 0 { f64::INFINITY } else { self.waves[i - 1].0.wavelength() }
+    }
+
+    /// `Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²))`: the pixel footprint on the sea is `αt` across the view and
+    /// `αt/|d_y|` along it; its extent along `k̂ᵢ` is `αt √(1 + (k̂ᵢ·d̂_xz)²/d_y²)`.
+    fn component_fade_distance(&self, i: usize, d: DVec3, footprint_angle: f64) -> f64 {
+        if i == 0 {
+            return f64::INFINITY;
+        }
+        let w = &self.waves[i - 1].0;
+        let k = w.wavenumber();
+        let sigma = k * (w.direction_vector().x * d.x + w.direction_vector().y * d.z);
+        TAU / (footprint_angle * (k * k + sigma * sigma / (d.y * d.y).max(1e-300)).sqrt())
+    }
+
+    fn value(&self, p: DVec3) -> f64 {
+        p.y - self.height(p.x, p.z)
+    }
+
+    fn zero_set_bounds(&self) -> Aabb {
+        Aabb::slab_y(-self.total_amplitude, self.total_amplitude)
+    }
+
+    fn trace_tiered(
+        &self,
+        ray: &Ray,
+        t_enter: f64,
+        t_exit: f64,
+        options: &TraceOptions,
+        stats: &mut TraceStats,
+        log: Option<&mut Vec<Step>>,
+    ) -> Option<Hit> {
+        SCRATCH.with(|cell| {
+            let mut guard = cell.borrow_mut();
+            let (scratch, state) = &mut *guard;
+            let mut tiers = SeaTiers::new(self, state, ray, t_exit, options.footprint_angle);
+            trace_tiers_with(scratch, &mut tiers, ray, t_enter, t_exit, options, stats, log)
+        })
+    }
+}
