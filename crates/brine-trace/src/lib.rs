@@ -65,6 +65,7 @@
 //!   realistic ocean scenes", WSCG, §3 and Algorithm 1.
 
 mod bounds;
+mod coherence;
 mod darles;
 mod footprint;
 mod options;
@@ -79,6 +80,7 @@ mod tiers;
 mod trace;
 
 pub use bounds::Aabb;
+pub use coherence::{MIN_CONE_RAYS, trace_temporal, trace_tile};
 pub use footprint::{FADE_CURVATURE, FADE_SLOPE, component_weights, footprint_weight, footprint_weight_slope};
 pub use options::{Hit, Method, Step, StepKind, TraceOptions, TraceOptionsError};
 pub use ray::{Ray, RayError};
@@ -86,7 +88,7 @@ pub use refine::{bisect_crossing, refine_crossing};
 pub use stats::TraceStats;
 pub use step::{StepBound, efficient_lipschitz_step, printed_darles_step};
 pub use sum::LipschitzSum;
-pub use tiered::{TierScratch, trace_tiers, trace_tiers_with};
+pub use tiered::{TierScratch, certify_cone_with, trace_tiers, trace_tiers_with};
 pub use tiers::{COMPONENTS_PER_TIER, ComponentTiers, RayTiers, TierBounds, TierSample};
 pub use trace::{trace, trace_logged};
 

@@ -2,7 +2,7 @@
 
 use glam::DVec3;
 
-use crate::{Aabb, Hit, Ray, Step, TraceOptions, TraceStats};
+use crate::{Aabb, Hit, Ray, Step, TierScratch, TraceOptions, TraceStats};
 
 /// An implicit function `F(p) = Σᵢ nᵢ(p)` of `N` bounded, Lipschitz-continuous components.
 ///
@@ -130,5 +130,27 @@ pub trait LipschitzSum {
     ) -> Option<Hit> {
         let mut tiers = crate::ComponentTiers::new(self, ray, t_enter, t_exit, options.footprint_angle);
         crate::trace_tiers(&mut tiers, ray, t_enter, t_exit, options, stats, log)
+    }
+
+    /// Image coherence: the largest `t_c` such that no ray from `ray`'s origin within
+    /// `half_angle` of its direction crosses the surface on `[t_enter, t_c]` (see
+    /// [`crate::certify_cone_with`]).
+    ///
+    /// The default uses [`crate::ComponentTiers`] and gives up (returns `t_enter`) with footprint
+    /// fading, whose weights differ from ray to ray; implementors may override it.
+    fn certify_cone(
+        &self,
+        ray: &Ray,
+        half_angle: f64,
+        t_enter: f64,
+        t_exit: f64,
+        options: &TraceOptions,
+        stats: &mut TraceStats,
+    ) -> f64 {
+        if options.footprint_angle > 0.0 {
+            return t_enter;
+        }
+        let mut tiers = crate::ComponentTiers::new(self, ray, t_enter, t_exit, 0.0);
+        crate::certify_cone_with(&mut TierScratch::default(), &mut tiers, ray, half_angle, t_enter, t_exit, options, stats)
     }
 }

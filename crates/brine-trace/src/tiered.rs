@@ -27,11 +27,23 @@ pub struct TierScratch {
     slope: Vec<f64>,
     /// Curvature bound used with `slope` (0 when the slope is the Lipschitz lower bound).
     curvature: Vec<f64>,
+    /// 3D Lipschitz constant of each tier (cone mode).
+    spread: Vec<f64>,
+    /// Unoriented derivative of the first samples (while the side is unknown).
+    raw_slope: Vec<f64>,
 }
 
 impl TierScratch {
     fn reset(&mut self, n: usize) {
-        for v in [&mut self.lo, &mut self.key, &mut self.value, &mut self.slope, &mut self.curvature] {
+        for v in [
+            &mut self.lo,
+            &mut self.key,
+            &mut self.value,
+            &mut self.slope,
+            &mut self.curvature,
+            &mut self.spread,
+            &mut self.raw_slope,
+        ] {
             v.clear();
             v.resize(n, 0.0);
         }
@@ -42,10 +54,13 @@ impl TierScratch {
     }
 
     /// Reads the bounds of every tier at `t` and orients them by `sign`.
-    fn refresh<R: RayTiers + ?Sized>(&mut self, tiers: &mut R, t: f64, sign: f64) {
+    fn refresh<R: RayTiers + ?Sized>(&mut self, tiers: &mut R, t: f64, sign: f64, cone: bool) {
         let n = self.bounds.len();
         for j in 0..n {
             let b = tiers.bounds(j, t);
+            if cone {
+                self.spread[j] = tiers.spread_lipschitz(j);
+            }
             self.bounds[j] = b;
             self.lo[j] = if sign > 0.0 { b.min } else { -b.max };
             let range = b.max - b.min;
@@ -83,8 +98,16 @@ impl TierScratch {
     /// reserve part (how far it can fall, at its Lipschitz rate), whichever costs less at the
     /// expected step; two passes refine the guess. Every assignment gives a valid bound, so the
     /// largest root is kept.
-    fn step(&self, k: usize, eps: f64, eta: f64, guess: f64) -> f64 {
-        let value: f64 = self.value[..k].iter().sum::<f64>() + self.lo_suffix[k] - eps;
+    fn step(&self, k: usize, eps: f64, eta: f64, guess: f64, spread: (f64, f64)) -> f64 {
+        // Cone mode: every ray within `θ` of the axis is within `θ(t + s)` of the axis point, so
+        // the evaluated tiers lose at most `θ(t + s) Σ Lⱼ³ᴰ`.
+        let (margin, margin_rate) = if spread.0 > 0.0 {
+            let l3: f64 = self.spread[..k].iter().sum();
+            (spread.0 * spread.1 * l3, spread.0 * l3)
+        } else {
+            (0.0, 0.0)
+        };
+        let value: f64 = self.value[..k].iter().sum::<f64>() + self.lo_suffix[k] - eps - margin;
         if !(value > 0.0) {
             return 0.0;
         }
@@ -98,9 +121,9 @@ impl TierScratch {
         for _ in 0..2 {
             let mut b = StepBound {
                 value,
-                slope: -eta,
+                slope: -eta - margin_rate,
                 curvature: 0.0,
-                lipschitz: 0.0,
+                lipschitz: eta + margin_rate,
                 reserve: 0.0,
                 reserve_lipschitz: 0.0,
             };
@@ -208,50 +231,123 @@ pub fn trace_tiers_with<R: RayTiers + ?Sized>(
     t_exit: f64,
     options: &TraceOptions,
     stats: &mut TraceStats,
-    mut log: Option<&mut Vec<Step>>,
+    log: Option<&mut Vec<Step>>,
 ) -> Option<Hit> {
+    match run(scratch, tiers, ray, t_enter, t_exit, options, stats, log, 0.0) {
+        Outcome::Hit(hit) => Some(hit),
+        Outcome::Miss | Outcome::Free(_) => None,
+    }
+}
+
+/// Image coherence: certifies a cone of rays sharing `ray`'s origin.
+///
+/// Steps along the axis `ray` as [`trace_tiers_with`] does, but every bound loses
+/// `θ(t + s) Σⱼ Lⱼ³ᴰ` over the evaluated tiers (`Lⱼ³ᴰ` = [`RayTiers::spread_lipschitz`]): a ray
+/// within angle `θ` of the axis is within `θ t` of the axis point at the same `t`, so the lower
+/// bound holds for every ray of the cone. The cone stops (without probing) once its step is
+/// shorter than its radius `θ t`, or when the axis starts below the surface.
+///
+/// # Arguments
+/// - `half_angle`: `θ` (rad), `> 0`; `tiers` must be built for the cone (its tiers bound every
+///   ray of the cone, e.g. footprint-faded components at their amplitude).
+/// - The others as [`trace_tiers_with`].
+///
+/// # Returns
+/// `t_c ∈ [t_enter, t_exit]`: no ray of the cone crosses the surface on `[t_enter, t_c]`.
+///
+/// # References
+/// Darles et al. 2007 §3.3 (image coherence: unbounding spheres reused by neighbouring rays, in
+/// a quadtree); Hart 1996 (Lipschitz bound).
+#[allow(clippy::too_many_arguments)]
+pub fn certify_cone_with<R: RayTiers + ?Sized>(
+    scratch: &mut TierScratch,
+    tiers: &mut R,
+    ray: &Ray,
+    half_angle: f64,
+    t_enter: f64,
+    t_exit: f64,
+    options: &TraceOptions,
+    stats: &mut TraceStats,
+) -> f64 {
+    match run(scratch, tiers, ray, t_enter, t_exit, options, stats, None, half_angle) {
+        Outcome::Free(t) => t,
+        Outcome::Miss => t_exit,
+        Outcome::Hit(_) => t_enter,
+    }
+}
+
+/// What [`run`] found.
+enum Outcome {
+    /// A crossing.
+    Hit(Hit),
+    /// No crossing up to `t_exit`.
+    Miss,
+    /// (Cone mode) certified free up to this `t`.
+    Free(f64),
+}
+
+#[allow(clippy::too_many_arguments)]
+fn run<R: RayTiers + ?Sized>(
+    scratch: &mut TierScratch,
+    tiers: &mut R,
+    ray: &Ray,
+    t_enter: f64,
+    t_exit: f64,
+    options: &TraceOptions,
+    stats: &mut TraceStats,
+    mut log: Option<&mut Vec<Step>>,
+    cone: f64,
+) -> Outcome {
     let n = tiers.tier_count();
     if n == 0 || !(t_enter < t_exit) {
-        return None;
+        return Outcome::Miss;
     }
     let eps = 2.0 * tiers.error_bound();
     let eta = tiers.slope_error_bound();
     scratch.reset(n);
     let mut t = t_enter;
-    scratch.refresh(tiers, t, 1.0);
+    scratch.refresh(tiers, t, 1.0, cone > 0.0);
     let mut t_refresh = t;
 
-    // Which side of the surface the ray starts on: add tiers until the bounds decide.
-    let mut raw = Vec::with_capacity(4);
-    let (mut sum, mut k) = (0.0, 0);
+    // Which side of the surface the ray starts on: add tiers until the bounds decide. The samples
+    // are stored as if the side were positive and flipped below if not.
+    let hi_total: f64 = scratch.bounds.iter().map(|b| b.max).sum();
+    let (mut sum, mut k, mut hi_rest) = (0.0, 0, hi_total);
     stats.evaluations += 1;
     let sign = loop {
         let s = tiers.sample(k, t);
         stats.component_evaluations += u64::from(s.terms);
-        raw.push((s.value, s.slope));
+        scratch.store(k, s.value, s.slope, 1.0);
+        scratch.raw_slope[k] = s.slope;
         sum += s.value;
+        hi_rest -= scratch.bounds[k].max;
         k += 1;
-        let lo_rest: f64 = scratch.bounds[k..].iter().map(|b| b.min).sum();
-        let hi_rest: f64 = scratch.bounds[k..].iter().map(|b| b.max).sum();
-        if sum + lo_rest > eps {
+        if sum + scratch.lo_suffix[k] > eps {
             break 1.0;
         }
         if sum + hi_rest < -eps {
             break -1.0;
         }
         if k == n {
+            if cone > 0.0 {
+                return Outcome::Free(t);
+            }
             if sum == 0.0 {
                 stats.hits += 1;
-                return Some(Hit { t, point: ray.at(t), entering: true, steps: 0 });
+                return Outcome::Hit(Hit { t, point: ray.at(t), entering: true, steps: 0 });
             }
             break sum.signum();
         }
     };
     if sign < 0.0 {
-        scratch.refresh(tiers, t, sign);
-    }
-    for (j, &(v, d)) in raw.iter().enumerate() {
-        scratch.store(j, v, d, sign);
+        if cone > 0.0 {
+            return Outcome::Free(t);
+        }
+        scratch.refresh(tiers, t, sign, false);
+        for j in 0..k {
+            let (v, d) = (scratch.value[j], scratch.raw_slope[j]);
+            scratch.store(j, v, d, sign);
+        }
     }
     let mut sampled = k;
     let mut guess = f64::NAN;
@@ -268,8 +364,11 @@ pub fn trace_tiers_with<R: RayTiers + ?Sized>(
 
     loop {
         if steps >= options.max_steps {
+            if cone > 0.0 {
+                return Outcome::Free(t);
+            }
             stats.exhausted += 1;
-            return None;
+            return Outcome::Miss;
         }
         steps += 1;
         if sampled < k {
@@ -278,7 +377,7 @@ pub fn trace_tiers_with<R: RayTiers + ?Sized>(
             }
             sample_range(scratch, tiers, stats, sampled, k, t);
         }
-        let mut s = scratch.step(k, eps, eta, guess);
+        let mut s = scratch.step(k, eps, eta, guess, (cone, t));
         while k < n && s < scratch.key[k] {
             let mut k2 = k + 1;
             while k2 < n && scratch.key[k2] > s {
@@ -286,20 +385,24 @@ pub fn trace_tiers_with<R: RayTiers + ?Sized>(
             }
             sample_range(scratch, tiers, stats, k, k2, t);
             k = k2;
-            s = scratch.step(k, eps, eta, guess);
+            s = scratch.step(k, eps, eta, guess, (cone, t));
         }
         let h = options.min_step_at(t);
         if s < h && k < n {
             sample_range(scratch, tiers, stats, k, n, t);
             k = n;
-            s = scratch.step(k, eps, eta, guess);
+            s = scratch.step(k, eps, eta, guess, (cone, t));
         }
         if !(s >= 0.0) {
             s = 0.0;
         }
         if t + s >= t_exit {
             log_step(&mut log, t, t_exit, StepKind::Certified);
-            return None;
+            return Outcome::Miss;
+        }
+        if cone > 0.0 && (s < cone * t || s < h) {
+            // The cone is as wide as its step: its children take over from here.
+            return Outcome::Free(t + s);
         }
         if s >= h {
             log_step(&mut log, t, t + s, StepKind::Certified);
@@ -308,7 +411,7 @@ pub fn trace_tiers_with<R: RayTiers + ?Sized>(
             k = scratch.next_depth(s);
             sampled = 0;
             if options.footprint_angle > 0.0 && t >= REFRESH_GROWTH * t_refresh {
-                scratch.refresh(tiers, t, sign);
+                scratch.refresh(tiers, t, sign, cone > 0.0);
                 t_refresh = t;
             }
             continue;
@@ -356,12 +459,12 @@ pub fn trace_tiers_with<R: RayTiers + ?Sized>(
                 t_hit
             };
             stats.hits += 1;
-            return Some(Hit { t: t_hit, point: ray.at(t_hit), entering: sign > 0.0, steps });
+            return Outcome::Hit(Hit { t: t_hit, point: ray.at(t_hit), entering: sign > 0.0, steps });
         }
         log_step(&mut log, t, tp, StepKind::Probe);
         t = tp;
         if t >= t_exit {
-            return None;
+            return Outcome::Miss;
         }
         guess = p;
         k = n;

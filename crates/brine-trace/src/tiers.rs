@@ -52,6 +52,13 @@ pub trait RayTiers {
     /// Tier `tier` evaluated at `t`.
     fn sample(&mut self, tier: usize, t: f64) -> TierSample;
 
+    /// A bound of `|Tⱼ(q) − Tⱼ(p)|/‖q − p‖` for any two points (the tier's 3D Lipschitz constant),
+    /// used by the cone of [`crate::certify_cone_with`]; `+∞` (the default) disables cones.
+    fn spread_lipschitz(&self, tier: usize) -> f64 {
+        let _ = tier;
+        f64::INFINITY
+    }
+
     /// Bound of `|Σⱼ sampleⱼ − F|` at any `t` (0 for an exact evaluator).
     fn error_bound(&self) -> f64 {
         0.0
@@ -85,6 +92,7 @@ pub struct ComponentTiers<'a, S: LipschitzSum + ?Sized> {
     surface: &'a S,
     ray: Ray,
     t_exit: f64,
+    fading: bool,
     components: Vec<ComponentOnRay>,
 }
 
@@ -112,7 +120,7 @@ impl<'a, S: LipschitzSum + ?Sized> ComponentTiers<'a, S> {
             if c.lipschitz > 0.0 { (c.max - c.min) / c.lipschitz } else { f64::INFINITY }
         };
         components.sort_by(|x, y| key(y).total_cmp(&key(x)));
-        Self { surface, ray: *ray, t_exit, components }
+        Self { surface, ray: *ray, t_exit, fading: footprint_angle > 0.0, components }
     }
 
     fn tier(&self, tier: usize) -> &[ComponentOnRay] {
@@ -148,6 +156,14 @@ impl<S: LipschitzSum + ?Sized> RayTiers for ComponentTiers<'_, S> {
             }
         }
         b
+    }
+
+    /// `Σ Lᵢ` over the tier (not available with footprint fading: the weights differ per ray).
+    fn spread_lipschitz(&self, tier: usize) -> f64 {
+        if self.fading {
+            return f64::INFINITY;
+        }
+        self.tier(tier).iter().map(|c| self.surface.component_lipschitz(c.index)).sum()
     }
 
     fn sample(&mut self, tier: usize, t: f64) -> TierSample {

@@ -19,9 +19,11 @@ use brine_trace::simd::f32x8;
 /// for steepnesses up to 0.99 with a margin of at least 2.
 pub const PROFILE_ERROR: f64 = 5.0e-7;
 
-/// How the profile of a group of waves is solved: Newton steps and polynomial degree.
+/// How the profile of a group of waves is evaluated.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct ProfileMode {
+    /// Harmonics of the Fourier–Bessel series (0: Newton's method instead).
+    pub harmonics: u8,
     /// Newton steps after the start.
     pub iterations: u8,
     /// 0: `|δ| ≤ 0.2` (sin to δ⁵, cos to δ⁶); 1: `|δ| ≤ 0.6` (δ⁹, δ¹⁰); 2: `|δ| ≤ 1` (δ¹³, δ¹⁴).
@@ -30,171 +32,349 @@ pub(crate) struct ProfileMode {
     pub cubic: bool,
 }
 
+/// Largest steepness evaluated by the series (its harmonics then number at most 9).
+pub(crate) const SERIES_MAX_STEEPNESS: f64 = 0.1;
+
+/// The series is cut where the neglected `Σ_{n>m} (1 + n)|aₙ|` falls below this.
+const SERIES_TAIL: f64 = 1e-7;
+
 impl ProfileMode {
     /// The mode for waves of steepness at most `q_max`.
     ///
-    /// Worst iteration error in `cos θ` over `s ∈ [−π, π]` (4001 points, f64), from the start
-    /// `δ₀ = Q sin s/(1 − Q cos s)`: `Q = 0.005`, 0 steps: 6.2×10⁻⁸; `Q = 0.15`, 1 step: 2.1×10⁻⁷;
-    /// `Q = 0.5`, 2 steps: 2.3×10⁻⁷; `Q = 0.8`, 3 steps: 1.5×10⁻⁷; from the cubic start, `Q = 0.99`,
-    /// 3 steps: 9×10⁻¹¹.
+    /// Up to [`SERIES_MAX_STEEPNESS`], the Fourier–Bessel series of [`series_coefficients`] with
+    /// as many harmonics as its tail needs. Beyond, Newton's method; worst iteration error in
+    /// `cos θ` over `s ∈ [−π, π]` (4001 points, f64), from the start
+    /// `δ₀ = Q sin s/(1 − Q cos s)`: `Q = 0.15`, 1 step: 2.1×10⁻⁷; `Q = 0.5`, 2 steps: 2.3×10⁻⁷;
+    /// `Q = 0.8`, 3 steps: 1.5×10⁻⁷; from the cubic start, `Q = 0.99`, 3 steps: 9×10⁻¹¹.
     pub fn for_steepness(q_max: f64) -> Self {
-        if q_max <= 0.005 {
-            Self { iterations: 0, poly: 0, cubic: false }
-        } else if q_max <= 0.15 {
-            Self { iterations: 1, poly: 0, cubic: false }
+        if q_max <= SERIES_MAX_STEEPNESS {
+            let a = series_coefficients(q_max, 24);
+            let mut m = a.len() - 1;
+            let mut tail = 0.0;
+            while m > 1 {
+                tail += (1.0 + m as f64) * a[m].abs();
+                if tail > SERIES_TAIL {
+                    break;
+                }
+                m -= 1;
+            }
+            Self { harmonics: m as u8, iterations: 0, poly: 0, cubic: false }
         } else if q_max <= 0.5 {
-            Self { iterations: 2, poly: 1, cubic: false }
+            Self { harmonics: 0, iterations: if q_max <= 0.15 { 1 } else { 2 }, poly: if q_max <= 0.15 { 0 } else { 1 }, cubic: false }
         } else if q_max <= 0.8 {
-            Self { iterations: 3, poly: 2, cubic: false }
+            Self { harmonics: 0, iterations: 3, poly: 2, cubic: false }
         } else {
-            Self { iterations: 3, poly: 2, cubic: true }
+            Self { harmonics: 0, iterations: 3, poly: 2, cubic: true }
         }
     }
 }
 
-/// `(cos δ, sin δ)` by Taylor polynomials (Horner in `δ²`).
-macro_rules! cos_sin_small {
-    ($d:expr, $poly:expr, $one:expr, $c:ident) => {{
-        let d = $d;
-        let d2 = d * d;
-        match $poly {
-            0 => {
-                let s = d * (d2 * (d2 * $c(1.0 / 120.0) + $c(-1.0 / 6.0)) + $one);
-                let c = d2 * (d2 * (d2 * $c(-1.0 / 720.0) + $c(1.0 / 24.0)) + $c(-0.5)) + $one;
-                (c, s)
-            }
-            1 => {
-                let s = d
-                    * (d2 * (d2 * (d2 * (d2 * $c(1.0 / 362_880.0) + $c(-1.0 / 5040.0)) + $c(1.0 / 120.0))
-                        + $c(-1.0 / 6.0))
-                        + $one);
-                let c = d2
-                    * (d2 * (d2 * (d2 * (d2 * $c(-1.0 / 3_628_800.0) + $c(1.0 / 40320.0)) + $c(-1.0 / 720.0))
-                        + $c(1.0 / 24.0))
-                        + $c(-0.5))
-                    + $one;
-                (c, s)
-            }
-            _ => {
-                let s = d
-                    * (d2
-                        * (d2
-                            * (d2
-                                * (d2
-                                    * (d2 * (d2 * $c(1.0 / 6_227_020_800.0) + $c(-1.0 / 39_916_800.0))
-                                        + $c(1.0 / 362_880.0))
-                                    + $c(-1.0 / 5040.0))
-                                + $c(1.0 / 120.0))
-                            + $c(-1.0 / 6.0))
-                        + $one);
-                let c = d2
-                    * (d2
-                        * (d2
-                            * (d2
-                                * (d2
-                                    * (d2
-                                        * (d2 * $c(1.0 / 87_178_291_200.0) + $c(-1.0 / 479_001_600.0))
-                                        + $c(1.0 / 3_628_800.0))
-                                    + $c(-1.0 / 40320.0))
-                                + $c(1.0 / 720.0))
-                            + $c(-1.0 / 24.0))
-                        + $c(0.5))
-                    * $c(-1.0)
-                    + $one;
-                (c, s)
-            }
+/// Bessel function `Jₙ(x)` by its power series (accurate for the small `x ≤ 3` used here).
+fn bessel_j(n: usize, x: f64) -> f64 {
+    let half = 0.5 * x;
+    let mut term = half.powi(n as i32) / (1..=n).map(|k| k as f64).product::<f64>();
+    let mut sum = term;
+    for k in 1..60 {
+        term *= -half * half / (k as f64 * (k + n) as f64);
+        sum += term;
+        if term.abs() < 1e-18 * sum.abs().max(1e-300) {
+            break;
         }
-    }};
+    }
+    sum
 }
 
-/// The profile of 8 waves: `(cos θ, sin θ, 1/(1 − Q cos θ))` per lane.
+/// The Fourier–Bessel series of the trochoid profile (Kepler's equation with eccentricity `Q`):
+/// `τ_Q(s) = cos θ = Σₙ aₙ cos(n s)`, `a₀ = −Q/2`, `aₙ = (Jₙ₋₁(nQ) − Jₙ₊₁(nQ))/n`
+/// (`= (2/n²) d Jₙ(nQ)/dQ`).
 ///
 /// # Arguments
-/// - `s_hi`, `s_lo`: the horizontal phase `s = s_hi + s_lo` (rad), `s_hi ∈ [−π, π]`,
-///   `|s_lo| ≤ 10⁻⁶`.
-/// - `q`: steepness per lane, `[0, 0.99]`, at most what `mode` was chosen for.
-/// - `mode`: iterations and polynomial degree.
+/// - `q`: steepness `Q`, `[0, 0.5]` (the series converges for `Q < 1`; its coefficients are
+///   computed here for small `Q`).
+/// - `harmonics`: the largest `n`.
 ///
 /// # Returns
-/// `cos θ`, `sin θ` and `1/(1 − Q cos θ)` (the stretch `ds/dθ` inverted), with the error of
-/// [`PROFILE_ERROR`].
+/// `[a₀, a₁, …, a_harmonics]`.
 ///
 /// # References
-/// Equation sheet §1 (`τ_Q(s) = cos θ` with `θ − Q sin θ = s`; Newton step); Thon & Ghazanfarpour 2002.
-#[inline]
-pub(crate) fn profile8(s_hi: f32x8, s_lo: f32x8, q: f32x8, mode: ProfileMode) -> (f32x8, f32x8, f32x8) {
-    let one = f32x8::splat(1.0);
-    let c = f32x8::splat;
-    let (ss, cs) = s_hi.sin_cos();
-    let mut delta = if mode.cubic {
+/// Watson G.N. 1944, *A Treatise on the Theory of Bessel Functions*, §17.2 (Kepler's equation:
+/// `cos E = −e/2 + Σ (2/n²) (d/de) Jₙ(ne) cos nM`); equation sheet §1 (the profile `τ_Q`).
+pub(crate) fn series_coefficients(q: f64, harmonics: usize) -> Vec<f64> {
+    let mut a = vec![-0.5 * q];
+    for n in 1..=harmonics {
+        let x = n as f64 * q;
+        a.push((bessel_j(n - 1, x) - bessel_j(n + 1, x)) / n as f64);
+    }
+    a
+}
+
+/// Arithmetic of one f32 lane or of eight (the kernel is written once for both).
+pub(crate) trait Lane:
+    Copy
+    + std::ops::Add<Output = Self>
+    + std::ops::Sub<Output = Self>
+    + std::ops::Mul<Output = Self>
+    + std::ops::Div<Output = Self>
+    + std::ops::Neg<Output = Self>
+{
+    fn splat(x: f32) -> Self;
+    fn max(self, o: Self) -> Self;
+    fn min(self, o: Self) -> Self;
+    fn sqrt(self) -> Self;
+    fn cbrt(self) -> Self;
+}
+
+impl Lane for f32 {
+    #[inline(always)]
+    fn splat(x: f32) -> Self {
+        x
+    }
+    #[inline(always)]
+    fn max(self, o: Self) -> Self {
+        f32::max(self, o)
+    }
+    #[inline(always)]
+    fn min(self, o: Self) -> Self {
+        f32::min(self, o)
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        f32::sqrt(self)
+    }
+    #[inline(always)]
+    fn cbrt(self) -> Self {
+        f32::cbrt(self)
+    }
+}
+
+impl Lane for f32x8 {
+    #[inline(always)]
+    fn splat(x: f32) -> Self {
+        f32x8::splat(x)
+    }
+    #[inline(always)]
+    fn max(self, o: Self) -> Self {
+        f32x8::max(self, o)
+    }
+    #[inline(always)]
+    fn min(self, o: Self) -> Self {
+        f32x8::min(self, o)
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        f32x8::sqrt(self)
+    }
+    #[inline(always)]
+    fn cbrt(self) -> Self {
+        f32x8::cbrt(self)
+    }
+}
+
+/// `(sin r, cos r)` for `|r| ≤ π/4` by Taylor polynomials to `r⁹` and `r¹⁰` (errors below
+/// `r¹¹/11! ≤ 1.7×10⁻⁹` and `r¹²/12! ≤ 1.1×10⁻¹⁰`).
+#[inline(always)]
+fn sin_cos_quarter<T: Lane>(r: T) -> (T, T) {
+    let c = T::splat;
+    let r2 = r * r;
+    let s = r * (r2 * (r2 * (r2 * (r2 * c(1.0 / 362_880.0) + c(-1.0 / 5040.0)) + c(1.0 / 120.0)) + c(-1.0 / 6.0)) + c(1.0));
+    let co = r2 * (r2 * (r2 * (r2 * (r2 * c(-1.0 / 3_628_800.0) + c(1.0 / 40320.0)) + c(-1.0 / 720.0)) + c(1.0 / 24.0))
+        + c(-0.5))
+        + c(1.0);
+    (s, co)
+}
+
+/// `(cos δ, sin δ)` by Taylor polynomials (Horner in `δ²`): `POLY` 0 for `|δ| ≤ 0.2` (to δ⁵,
+/// δ⁶), 1 for `|δ| ≤ 0.6` (δ⁹, δ¹⁰), 2 for `|δ| ≤ 1` (δ¹³, δ¹⁴); errors below 3×10⁻¹⁰.
+#[inline(always)]
+fn cos_sin_small<T: Lane, const POLY: u8>(d: T) -> (T, T) {
+    let c = T::splat;
+    let x = d * d;
+    match POLY {
+        0 => (
+            x * (x * (x * c(-1.0 / 720.0) + c(1.0 / 24.0)) + c(-0.5)) + c(1.0),
+            d * (x * (x * c(1.0 / 120.0) + c(-1.0 / 6.0)) + c(1.0)),
+        ),
+        1 => (
+            x * (x * (x * (x * (x * c(-1.0 / 3_628_800.0) + c(1.0 / 40320.0)) + c(-1.0 / 720.0)) + c(1.0 / 24.0))
+                + c(-0.5))
+                + c(1.0),
+            d * (x * (x * (x * (x * c(1.0 / 362_880.0) + c(-1.0 / 5040.0)) + c(1.0 / 120.0)) + c(-1.0 / 6.0))
+                + c(1.0)),
+        ),
+        _ => {
+            let cos = x
+                * (x * (x
+                    * (x * (x * (x * (x * c(-1.0 / 87_178_291_200.0) + c(1.0 / 479_001_600.0))
+                        + c(-1.0 / 3_628_800.0))
+                        + c(1.0 / 40320.0))
+                        + c(-1.0 / 720.0))
+                    + c(1.0 / 24.0))
+                    + c(-0.5))
+                + c(1.0);
+            let sin = d
+                * (x * (x
+                    * (x * (x * (x * (x * c(1.0 / 6_227_020_800.0) + c(-1.0 / 39_916_800.0)) + c(1.0 / 362_880.0))
+                        + c(-1.0 / 5040.0))
+                        + c(1.0 / 120.0))
+                    + c(-1.0 / 6.0))
+                    + c(1.0));
+            (cos, sin)
+        }
+    }
+}
+
+/// A phase reduced in f64 for the f32 kernel: `s = n π/2 + r_hi + r_lo` with `|r_hi| ≤ π/4`,
+/// `(cq, sq) = (cos nπ/2, sin nπ/2)`, and `s_full = s − 2π·round(s/2π)` in f32 (cubic start).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Phase<T> {
+    pub r_hi: T,
+    pub r_lo: T,
+    pub cq: T,
+    pub sq: T,
+    pub s_full: T,
+}
+
+/// Reduces one phase (rad, `|s| < 2⁵⁰`) for the kernel; exact to f64 rounding. Branch-free and
+/// table-free so that the loop of [`reduce_phases`] vectorises: `n = round(2s/π)`,
+/// `m = n − 4 round(n/4) ∈ {−2, …, 2}`, `cos(mπ/2) = 1 − 7m²/6 + m⁴/6`, `sin(mπ/2) = m(4 − m²)/3`.
+#[inline(always)]
+pub(crate) fn reduce_phase(s: f64) -> (f32, f32, f32, f32, f32) {
+    use std::f64::consts::{FRAC_2_PI, FRAC_PI_2};
+    const MAGIC: f64 = 6_755_399_441_055_744.0; // 1.5·2⁵²: x + MAGIC − MAGIC rounds to an integer
+    let n = (s * FRAC_2_PI + MAGIC) - MAGIC;
+    let r = s - n * FRAC_PI_2;
+    let m = n - 4.0 * ((0.25 * n + MAGIC) - MAGIC);
+    let m2 = m * m;
+    let cq = 1.0 + m2 * (m2 - 7.0) * (1.0 / 6.0);
+    let sq = m * (4.0 - m2) * (1.0 / 3.0);
+    let hi = r as f32;
+    let lo = (r - f64::from(hi)) as f32;
+    (hi, lo, cq as f32, sq as f32, (r + m * FRAC_PI_2) as f32)
+}
+
+/// The profile by Newton's method: `(cos θ, sin θ/(1 − Q cos θ))` with `θ − Q sin θ = s`, for
+/// one lane or eight.
+///
+/// `ITER` Newton steps after the start, Taylor degree `POLY` for the rotations by `δ`, `CUBIC`
+/// start for high steepness (see [`ProfileMode`]). The first step of the `POLY = 2` modes rotates
+/// by the full polynomial; the others by `θ → θ − Δ` with `cos Δ ≈ 1 − Δ²/2 + Δ⁴/24`,
+/// `sin Δ ≈ Δ − Δ³/6 + Δ⁵/120` (error `Δ⁶/720`, `Δ ≤ 0.1` there).
+#[inline(always)]
+fn kernel<T: Lane, const ITER: u8, const POLY: u8, const CUBIC: bool>(p: Phase<T>, q: T) -> (T, T) {
+    let c = T::splat;
+    let one = c(1.0);
+    let (sr, cr) = sin_cos_quarter(p.r_hi);
+    let ss = sr * p.cq + cr * p.sq;
+    let cs = cr * p.cq - sr * p.sq;
+    let mut delta = if CUBIC {
         // θ³ + pθ − r = 0 with p = 6(1 − Q)/Q, r = 6s/Q: Cardano's real root.
         let inv_q = one / q.max(c(1e-3));
-        let p = c(6.0) * (one - q) * inv_q;
-        let r = c(6.0) * s_hi * inv_q;
-        let disc = (c(0.25) * r * r + p * p * p * c(1.0 / 27.0)).sqrt();
+        let pp = c(6.0) * (one - q) * inv_q;
+        let r = c(6.0) * p.s_full * inv_q;
+        let disc = (c(0.25) * r * r + pp * pp * pp * c(1.0 / 27.0)).sqrt();
         let theta = (c(0.5) * r + disc).cbrt() + (c(0.5) * r - disc).cbrt();
-        theta - s_hi
+        theta - p.s_full
     } else {
         q * ss / (one - q * cs)
     };
     delta = delta.max(-q).min(q);
-    let rot = |delta: f32x8| {
-        let (cd, sd) = cos_sin_small!(delta, mode.poly, one, c);
+    let rotate = |delta: T| {
+        let (cd, sd) = cos_sin_small::<T, POLY>(delta);
         (cs * cd - ss * sd, ss * cd + cs * sd)
     };
-    for _ in 0..mode.iterations {
-        let (ct, st) = rot(delta);
-        let residual = delta - q * st - s_lo;
-        delta -= residual / (one - q * ct);
+    let (mut ct, mut st) = rotate(delta);
+    for i in 0..ITER {
+        let residual = delta - q * st - p.r_lo;
+        let step = residual / (one - q * ct);
+        delta = delta - step;
+        if POLY == 2 && i == 0 {
+            (ct, st) = rotate(delta);
+        } else {
+            let x = step * step;
+            let cd = one - x * (c(0.5) - x * c(1.0 / 24.0));
+            let sd = step * (one - x * (c(1.0 / 6.0) - x * c(1.0 / 120.0)));
+            (ct, st) = (ct * cd + st * sd, st * cd - ct * sd);
+        }
     }
-    let (ct, st) = rot(delta);
-    (ct, st, one / (one - q * ct))
+    (ct, st / (one - q * ct))
 }
 
-/// The scalar twin of [`profile8`] (same algorithm in f32), for single components.
+/// The series mode: `cos θ = Σ aₙ cos(n s)` and `sin θ/(1 − Q cos θ) = −dτ/ds = Σ n aₙ sin(n s)`
+/// by two Clenshaw recurrences in `C = cos s` (`sin ns = S Uₙ₋₁(C)`), no division.
+#[inline(always)]
+fn series<T: Lane>(p: Phase<T>, harmonics: usize, coefficient: impl Fn(usize) -> T) -> (T, T) {
+    let c = T::splat;
+    let (sr, cr) = sin_cos_quarter(p.r_hi);
+    let ss = sr * p.cq + cr * p.sq;
+    let cs = sr * -p.sq + cr * p.cq;
+    let two_c = c(2.0) * cs;
+    let (mut b1, mut b2) = (c(0.0), c(0.0));
+    let (mut d1, mut d2) = (c(0.0), c(0.0));
+    for n in (1..=harmonics).rev() {
+        let a = coefficient(n);
+        (b1, b2) = (a + two_c * b1 - b2, b1);
+        (d1, d2) = (a * c(n as f32) + two_c * d1 - d2, d1);
+    }
+    (coefficient(0) + cs * b1 - b2, ss * d1)
+}
+
+/// Dispatches on the mode (one monomorphised body per Newton mode).
+#[inline(always)]
+fn kernel_for<T: Lane>(p: Phase<T>, q: T, mode: ProfileMode, coefficient: impl Fn(usize) -> T) -> (T, T) {
+    if mode.harmonics > 0 {
+        return series(p, usize::from(mode.harmonics), coefficient);
+    }
+    match (mode.iterations, mode.poly, mode.cubic) {
+        (0, _, _) => kernel::<T, 0, 0, false>(p, q),
+        (1, _, _) => kernel::<T, 1, 0, false>(p, q),
+        (2, _, _) => kernel::<T, 2, 1, false>(p, q),
+        (_, _, false) => kernel::<T, 3, 2, false>(p, q),
+        (_, _, true) => kernel::<T, 3, 2, true>(p, q),
+    }
+}
+
+/// The profile of 8 waves: `(cos θ, sin θ/(1 − Q cos θ))` per lane, the height `τ_Q(s)` and
+/// minus its derivative `dτ_Q/ds`.
 ///
 /// # Arguments
-/// As [`profile8`], one lane.
+/// - `phase`: the reduced horizontal phases ([`reduce_phases`]).
+/// - `q`: steepness per lane, `[0, 0.99]`, at most what `mode` was chosen for.
+/// - `series`: per lane, the series coefficients `aₙ` (series mode), indexed `[n][lane]`.
+/// - `mode`: series or Newton, see [`ProfileMode`].
+///
+/// # Returns
+/// `cos θ` and `sin θ/(1 − Q cos θ)` with the error of [`PROFILE_ERROR`].
+///
+/// # References
+/// Equation sheet §1 (`τ_Q(s) = cos θ` with `θ − Q sin θ = s`; Newton step); Thon & Ghazanfarpour
+/// 2002; Watson 1944 §17.2 (the series).
+#[inline(always)]
+pub(crate) fn profile8(phase: Phase<f32x8>, q: f32x8, series: &[[f32; 8]], mode: ProfileMode) -> (f32x8, f32x8) {
+    kernel_for(phase, q, mode, |n| f32x8::new(series[n]))
+}
+
+/// The scalar twin of [`profile8`] (the same code on one lane), for single components.
+///
+/// # Arguments
+/// - `s`: the horizontal phase (rad, any finite value).
+/// - `q`, `mode`: as [`profile8`]; `series`, `lane`: the coefficients `series[n][lane]`.
 ///
 /// # Returns
 /// As [`profile8`].
 #[inline]
-pub(crate) fn profile1(s_hi: f32, s_lo: f32, q: f32, mode: ProfileMode) -> (f32, f32, f32) {
-    let one = 1.0f32;
-    let c = |x: f32| x;
-    let (ss, cs) = s_hi.sin_cos();
-    let mut delta = if mode.cubic {
-        let inv_q = 1.0 / q.max(1e-3);
-        let p = 6.0 * (1.0 - q) * inv_q;
-        let r = 6.0 * s_hi * inv_q;
-        let disc = (0.25 * r * r + p * p * p / 27.0).sqrt();
-        let theta = (0.5 * r + disc).cbrt() + (0.5 * r - disc).cbrt();
-        theta - s_hi
-    } else {
-        q * ss / (1.0 - q * cs)
-    };
-    delta = delta.clamp(-q, q);
-    let rot = |delta: f32| {
-        let (cd, sd) = cos_sin_small!(delta, mode.poly, one, c);
-        (cs * cd - ss * sd, ss * cd + cs * sd)
-    };
-    for _ in 0..mode.iterations {
-        let (ct, st) = rot(delta);
-        let residual = delta - q * st - s_lo;
-        delta -= residual / (1.0 - q * ct);
-    }
-    let (ct, st) = rot(delta);
-    (ct, st, 1.0 / (1.0 - q * ct))
+pub(crate) fn profile1(s: f64, q: f32, series: &[[f32; 8]], lane: usize, mode: ProfileMode) -> (f32, f32) {
+    let (r_hi, r_lo, cq, sq, s_full) = reduce_phase(s);
+    kernel_for(Phase { r_hi, r_lo, cq, sq, s_full }, q, mode, |n| series[n][lane])
 }
 
-/// Splits a phase (rad, any finite value) into `(s_hi, s_lo)`: reduced to `[−π, π]` in f64, then
-/// the nearest f32 and the f32 of the remainder.
-#[inline]
-pub(crate) fn split_phase(s: f64) -> (f32, f32) {
-    use std::f64::consts::TAU;
-    let r = s - TAU * (s * (1.0 / TAU)).round();
-    let hi = r as f32;
-    (hi, (r - f64::from(hi)) as f32)
+/// Reduces 8 phases into the lanes of a [`Phase`] (the loop vectorises).
+#[inline(always)]
+pub(crate) fn reduce_phases(s: &[f64; 8]) -> Phase<f32x8> {
+    let (mut hi, mut lo, mut cq, mut sq, mut full) = ([0f32; 8], [0f32; 8], [0f32; 8], [0f32; 8], [0f32; 8]);
+    for l in 0..8 {
+        (hi[l], lo[l], cq[l], sq[l], full[l]) = reduce_phase(s[l]);
+    }
+    Phase { r_hi: f32x8::new(hi), r_lo: f32x8::new(lo), cq: f32x8::new(cq), sq: f32x8::new(sq), s_full: f32x8::new(full) }
 }
 
 #[cfg(test)]
@@ -202,42 +382,61 @@ mod tests {
     use super::*;
     use crate::solve_trochoid_phase;
 
-    /// Largest steepness of each mode's range, and a few inside.
-    const STEEPNESSES: [f64; 12] = [0.0, 0.003, 0.005, 0.05, 0.15, 0.3, 0.5, 0.65, 0.8, 0.9, 0.95, 0.99];
+    /// Steepnesses at the edges of each mode's range, and a few inside.
+    const STEEPNESSES: [f64; 16] =
+        [0.0, 0.003, 0.01, 0.023, 0.05, 0.07, 0.1, 0.101, 0.15, 0.3, 0.5, 0.65, 0.8, 0.9, 0.95, 0.99];
 
     #[test]
     fn profile_error_is_within_bound() {
         for &q in &STEEPNESSES {
             let mode = ProfileMode::for_steepness(q);
+            let coefficients: Vec<[f32; 8]> =
+                series_coefficients(q, usize::from(mode.harmonics)).iter().map(|&a| [a as f32; 8]).collect();
             let bound = PROFILE_ERROR * (1.0 + 1.0 / (1.0 - q * q).sqrt());
-            let (mut worst, mut worst_inv) = (0.0f64, 0.0f64);
+            let slope_bound = PROFILE_ERROR * (1.0 + 1.0 / ((1.0 - q) * (1.0 - q)));
+            let (mut worst, mut worst_slope) = (0.0f64, 0.0f64);
             for j in 0..20_000 {
                 // Phases far from the origin too: the f64 reduction must keep them exact.
                 let s = -3.2 + 6.4 * j as f64 / 20_000.0 + 2.0e3 * std::f64::consts::TAU;
-                let (hi, lo) = split_phase(s);
                 let (_, c_ref, s_ref) = solve_trochoid_phase(s, q);
-                let lanes = f32x8::splat(hi);
-                let (c8, s8, i8) = profile8(lanes, f32x8::splat(lo), f32x8::splat(q as f32), mode);
-                let (c1, s1, i1) = profile1(hi, lo, q as f32, mode);
-                for (c, sn, inv) in [(c8.to_array()[3], s8.to_array()[3], i8.to_array()[3]), (c1, s1, i1)] {
-                    worst = worst.max((f64::from(c) - c_ref).abs()).max((f64::from(sn) - s_ref).abs());
-                    let inv_ref = 1.0 / (1.0 - q * c_ref);
-                    worst_inv = worst_inv.max((f64::from(inv) - inv_ref).abs() / inv_ref);
+                let g_ref = s_ref / (1.0 - q * c_ref);
+                let (c8, g8) = profile8(reduce_phases(&[s; 8]), f32x8::splat(q as f32), &coefficients, mode);
+                let (c1, g1) = profile1(s, q as f32, &coefficients, 5, mode);
+                for (c, g) in [(c8.to_array()[3], g8.to_array()[3]), (c1, g1)] {
+                    worst = worst.max((f64::from(c) - c_ref).abs());
+                    worst_slope = worst_slope.max((f64::from(g) - g_ref).abs());
                 }
             }
-            eprintln!("Q = {q}: worst {worst:.2e}, stretch {worst_inv:.2e}, bound {bound:.2e}");
+            eprintln!("Q = {q} ({mode:?}): height {worst:.2e} / {bound:.2e}, slope {worst_slope:.2e} / {slope_bound:.2e}");
             assert!(worst <= 0.5 * bound, "Q = {q}: error {worst:e} vs bound {bound:e}");
-            assert!(worst_inv <= 0.5 * bound / (1.0 - q), "Q = {q}: stretch error {worst_inv:e}");
+            assert!(worst_slope <= 0.5 * slope_bound, "Q = {q}: slope error {worst_slope:e} vs {slope_bound:e}");
         }
     }
 
     #[test]
-    fn split_phase_is_exact_to_f64_rounding() {
-        for &s in &[0.0, 1.0, -3.14, 1.0e4, -7.77e5] {
-            let (hi, lo) = split_phase(s);
-            let back = f64::from(hi) + f64::from(lo);
-            let r = s - std::f64::consts::TAU * (s / std::f64::consts::TAU).round();
-            assert!((back - r).abs() < 1e-13, "{s}");
+    fn series_matches_its_small_steepness_expansion() {
+        // cos θ = −Q/2 + (1 − 3Q²/8) cos s + (Q/2) cos 2s + (3Q²/8) cos 3s + O(Q³).
+        let q = 1e-3;
+        let a = series_coefficients(q, 3);
+        let expected = [-q / 2.0, 1.0 - 3.0 * q * q / 8.0, q / 2.0, 3.0 * q * q / 8.0];
+        for (x, e) in a.iter().zip(expected) {
+            assert!((x - e).abs() < 1e-9, "{a:?}");
+        }
+    }
+
+    #[test]
+    fn phase_reduction_is_exact_to_f64_rounding() {
+        for &s in &[0.0, 1.0, -3.14, 0.785, 2.36, 1.0e4, -7.77e5] {
+            let (hi, lo, cq, sq, full) = reduce_phase(s);
+            let r = f64::from(hi) + f64::from(lo);
+            let (ss, cs) = s.sin_cos();
+            // (cos, sin) of n π/2 + r must be those of s.
+            let (sr, cr) = r.sin_cos();
+            let back_s = sr * f64::from(cq) + cr * f64::from(sq);
+            let back_c = cr * f64::from(cq) - sr * f64::from(sq);
+            assert!(r.abs() <= std::f64::consts::FRAC_PI_4 + 1e-12, "{s}");
+            assert!((back_s - ss).abs() < 1e-10 && (back_c - cs).abs() < 1e-10, "{s}");
+            assert!((f64::from(full).sin() - ss).abs() < 1e-6 && f64::from(full).abs() <= 1.25 * std::f64::consts::PI, "{s}");
         }
     }
 }

@@ -6,34 +6,16 @@ use std::f64::consts::TAU;
 
 use brine_trace::{
     Aabb, FADE_CURVATURE, FADE_SLOPE, Hit, LipschitzSum, Ray, RayTiers, Step, TierBounds, TierSample, TierScratch,
-    TraceOptions, TraceStats, footprint_weight, trace_tiers_with,
+    TraceOptions, TraceStats, certify_cone_with, footprint_weight, trace_tiers_with,
 };
 use glam::{DVec2, DVec3};
 use brine_trace::simd::f32x8;
 
-use crate::fast_profile::{PROFILE_ERROR, ProfileMode, profile1, profile8, split_phase};
+use crate::fast_profile::{PROFILE_ERROR, ProfileMode, profile1, profile8, reduce_phases, series_coefficients};
 use crate::{Trochoid, TrochoidSet};
 
 /// Waves per tier: one f32x8 vector.
 pub const LANES: usize = 8;
-
-/// Rounds to the nearest integer by the `1.5·2⁵²` trick (exact for `|x| < 2⁵¹`), branch-free and
-/// without a libm call, so the phase loop vectorises.
-#[inline]
-fn round_fast(x: f64) -> f64 {
-    const MAGIC: f64 = 6_755_399_441_055_744.0;
-    (x + MAGIC) - MAGIC
-}
-
-/// [`split_phase`] for a batch, vectorisable.
-#[inline]
-fn split_phases(s: &[f64; LANES], hi: &mut [f32; LANES], lo: &mut [f32; LANES]) {
-    for l in 0..LANES {
-        let r = s[l] - TAU * round_fast(s[l] * (1.0 / TAU));
-        hi[l] = r as f32;
-        lo[l] = (r - f64::from(hi[l])) as f32;
-    }
-}
 
 /// One tier of 8 lanes (padding lanes have `A = 0`, `k = 0`).
 #[derive(Debug, Clone)]
@@ -51,6 +33,8 @@ struct Tier {
     /// `Aᵢ·PROFILE_ERROR/(1 − Qᵢ)²` (derivative error per unit `|σᵢ|`).
     slope_error_factor: [f64; LANES],
     mode: ProfileMode,
+    /// Series coefficients `aₙ` per lane, `[n][lane]` (series mode; empty otherwise).
+    series: Vec<[f32; LANES]>,
     /// Real waves in this tier.
     count: u32,
     amplitude_sum: f64,
@@ -109,6 +93,7 @@ impl TracedTrochoids {
                 curvature_factor: [0.0; LANES],
                 slope_error_factor: [0.0; LANES],
                 mode: ProfileMode::for_steepness(0.0),
+                series: Vec::new(),
                 count: chunk.len() as u32,
                 amplitude_sum: 0.0,
                 error: 0.0,
@@ -126,7 +111,7 @@ impl TracedTrochoids {
                 t.steepness[l] = q as f32;
                 t.slope_factor[l] = a / (1.0 - q * q).sqrt();
                 t.curvature_factor[l] = a / ((1.0 - q) * (1.0 - q));
-                t.slope_error_factor[l] = a * PROFILE_ERROR / ((1.0 - q) * (1.0 - q));
+                t.slope_error_factor[l] = a * PROFILE_ERROR * (1.0 + 1.0 / ((1.0 - q) * (1.0 - q)));
                 t.amplitude_sum += a;
                 // f32 amplitude rounding (6×10⁻⁸ relative) and the 8-lane f32 sum are inside the
                 // factor 2 of PROFILE_ERROR's margin; the bound adds them explicitly anyway.
@@ -135,6 +120,15 @@ impl TracedTrochoids {
                 lane_of_wave[i] = (tiers.len(), l);
             }
             t.mode = ProfileMode::for_steepness(q_max);
+            let m = usize::from(t.mode.harmonics);
+            if m > 0 {
+                t.series = vec![[0.0; LANES]; m + 1];
+                for l in 0..chunk.len() {
+                    for (n, a) in series_coefficients(f64::from(t.steepness[l]), m).into_iter().enumerate() {
+                        t.series[n][l] = a as f32;
+                    }
+                }
+            }
             tiers.push(t);
         }
         let waves = set.waves().iter().map(|w| (*w, w.phase() - w.omega() * time)).collect();
@@ -166,9 +160,7 @@ impl TracedTrochoids {
             for l in 0..LANES {
                 s[l] = t.kx[l] * x + t.kz[l] * z + t.offset[l];
             }
-            let (mut hi, mut lo) = ([0.0f32; LANES], [0.0f32; LANES]);
-            split_phases(&s, &mut hi, &mut lo);
-            let (c, _, _) = profile8(f32x8::new(hi), f32x8::new(lo), f32x8::new(t.steepness), t.mode);
+            let (c, _) = profile8(reduce_phases(&s), f32x8::new(t.steepness), &t.series, t.mode);
             sum += f64::from((f32x8::new(t.amplitude) * c).reduce_add());
         }
         sum
@@ -178,8 +170,7 @@ impl TracedTrochoids {
     fn wave_height_fast(&self, i: usize, x: f64, z: f64) -> f64 {
         let (tier, lane) = self.lane_of_wave[i];
         let t = &self.tiers[tier];
-        let (hi, lo) = split_phase(t.kx[lane] * x + t.kz[lane] * z + t.offset[lane]);
-        let (c, _, _) = profile1(hi, lo, t.steepness[lane], t.mode);
+        let (c, _) = profile1(t.kx[lane] * x + t.kz[lane] * z + t.offset[lane], t.steepness[lane], &t.series, lane, t.mode);
         f64::from(t.amplitude[lane]) * f64::from(c)
     }
 
@@ -241,7 +232,28 @@ impl TracedTrochoids {
     }
 }
 
-/// Per-ray state of the fast tiers.
+/// Per-tier quantities along one ray.
+#[derive(Debug, Default, Clone, Copy)]
+struct TierOnRay {
+    /// `Σ wᵢ(t₀) Aᵢ|σᵢ|/√(1 − Qᵢ²)` over the lanes in use.
+    lipschitz: f64,
+    /// `Σ Aᵢσᵢ²/(1 − Qᵢ)²` over the lanes in use.
+    curvature: f64,
+    /// Bound of the derivative error.
+    slope_error: f64,
+    /// Smallest and largest fade distance of the tier's waves (m).
+    fade_min: f64,
+    fade_max: f64,
+    /// Amplitude of the lanes in use, and of the lanes a cone cannot follow (held at `−A`).
+    amplitude: f64,
+    held: f64,
+    /// `Σ Aᵢkᵢ/√(1 − Qᵢ²)` over the lanes in use: the 3D Lipschitz constant (cones).
+    spread: f64,
+    /// Some lane is held (cone mode).
+    masked: bool,
+}
+
+/// Per-ray state of the fast tiers (reused between rays).
 #[derive(Debug, Default, Clone)]
 struct RayState {
     /// Phase at the ray origin, per lane (f64).
@@ -250,14 +262,15 @@ struct RayState {
     sigma: Vec<[f64; LANES]>,
     /// Fade distance per lane (m; `+∞` without fading).
     fade: Vec<[f32; LANES]>,
+    /// 1 for a lane in use, 0 for a lane held at its minimum (cone mode).
+    mask: Vec<[f32; LANES]>,
     /// `Aᵢ |σᵢ|/√(1 − Qᵢ²)` and `Aᵢ σᵢ²/(1 − Qᵢ)²` per lane (derivative and curvature bounds).
     lane_bounds: Vec<[(f64, f64); LANES]>,
-    /// Per tier: `(Σ A|σ|/√(1−Q²), Σ Aσ²/(1−Q)², slope error, min fade, max fade)`.
-    tier: Vec<(f64, f64, f64, f64, f64)>,
+    tier: Vec<TierOnRay>,
 }
 
-/// [`RayTiers`] of a [`TracedTrochoids`] along one ray: tier 0 is `y`, tier `j ≥ 1` the `j`-th
-/// group of 8 waves.
+/// [`RayTiers`] of a [`TracedTrochoids`] along one ray (or the cone around it): tier 0 is `y`,
+/// tier `j ≥ 1` the `j`-th group of 8 waves.
 struct SeaTiers<'a> {
     sea: &'a TracedTrochoids,
     state: &'a mut RayState,
@@ -268,48 +281,79 @@ struct SeaTiers<'a> {
 }
 
 impl<'a> SeaTiers<'a> {
-    fn new(sea: &'a TracedTrochoids, state: &'a mut RayState, ray: &Ray, t_exit: f64, footprint_angle: f64) -> Self {
+    /// The tiers along `ray` up to `t_exit`, faded for a pixel of `footprint_angle` rad; with
+    /// `cone > 0`, tiers that bound every ray within `cone` rad of `ray`: a wave that would fade
+    /// for some ray of the cone before `t_exit` is held at its minimum `−A` (the faded term
+    /// `−wA cos θ ≥ −A` for any weight), the others are used whole.
+    fn new(
+        sea: &'a TracedTrochoids,
+        state: &'a mut RayState,
+        ray: &Ray,
+        t_exit: f64,
+        footprint_angle: f64,
+        cone: f64,
+    ) -> Self {
         let (o, d) = (ray.origin(), ray.direction());
         let n = sea.tiers.len();
         state.s0.resize(n, [0.0; LANES]);
         state.sigma.resize(n, [0.0; LANES]);
         state.fade.resize(n, [f32::INFINITY; LANES]);
+        state.mask.resize(n, [1.0; LANES]);
         state.lane_bounds.resize(n, [(0.0, 0.0); LANES]);
-        state.tier.resize(n, (0.0, 0.0, 0.0, 0.0, 0.0));
+        state.tier.resize(n, TierOnRay::default());
         let mut slope_error = 0.0;
         let inv_dy2 = 1.0 / (d.y * d.y).max(1e-300);
+        // In a cone, |σ/d_y| ≤ (|σ_axis| + kθ)/(|d_y| − θ).
+        let dy_cone = (d.y.abs() - cone).max(1e-12);
         for (j, t) in sea.tiers.iter().enumerate() {
-            let (mut l_sum, mut k_sum, mut e_sum) = (0.0, 0.0, 0.0);
+            let mut info = TierOnRay { fade_min: f64::INFINITY, fade_max: f64::INFINITY, ..TierOnRay::default() };
             let (s0, sigma, lanes) = (&mut state.s0[j], &mut state.sigma[j], &mut state.lane_bounds[j]);
+            let (fade, mask) = (&mut state.fade[j], &mut state.mask[j]);
+            if footprint_angle > 0.0 && cone == 0.0 {
+                info.fade_min = f64::INFINITY;
+                info.fade_max = 0.0;
+            }
             for l in 0..LANES {
                 s0[l] = t.kx[l] * o.x + t.kz[l] * o.z + t.offset[l];
                 let sg = t.kx[l] * d.x + t.kz[l] * d.z;
                 sigma[l] = sg;
                 lanes[l] = (t.slope_factor[l] * sg.abs(), t.curvature_factor[l] * sg * sg);
-                l_sum += lanes[l].0;
-                k_sum += lanes[l].1;
-                e_sum += t.slope_error_factor[l] * sg.abs();
-            }
-            let (mut f_min, mut f_max) = (f64::INFINITY, f64::INFINITY);
-            if footprint_angle > 0.0 {
-                // Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²)): the footprint stretched by 1/|d_y| along the view.
-                f_min = f64::INFINITY;
-                f_max = 0.0;
-                let fade = &mut state.fade[j];
-                for l in 0..LANES {
-                    let k2 = t.wavenumber[l] * t.wavenumber[l] + sigma[l] * sigma[l] * inv_dy2;
-                    let big_t = if l < t.count as usize { TAU / (footprint_angle * k2.sqrt()) } else { 0.0 };
-                    fade[l] = big_t as f32;
-                    if l < t.count as usize {
-                        f_min = f_min.min(big_t);
-                        f_max = f_max.max(big_t);
+                let real = l < t.count as usize;
+                // Padding lanes (A = 0) count as faded out when fading, so that no weight is NaN.
+                fade[l] = if footprint_angle > 0.0 && cone == 0.0 && !real { 0.0 } else { f32::INFINITY };
+                mask[l] = 1.0;
+                let a = f64::from(t.amplitude[l]);
+                if footprint_angle > 0.0 && real {
+                    let k = t.wavenumber[l];
+                    if cone > 0.0 {
+                        // Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²)) at its smallest over the cone.
+                        let ratio = (sg.abs() + k * cone) / dy_cone;
+                        let big_t = TAU / (footprint_angle * (k * k + ratio * ratio).sqrt());
+                        if big_t < 1.5 * t_exit {
+                            mask[l] = 0.0;
+                            info.held += a;
+                            info.masked = true;
+                            continue;
+                        }
+                    } else {
+                        // Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²)): the footprint stretched by 1/|d_y|.
+                        let big_t = TAU / (footprint_angle * (k * k + sg * sg * inv_dy2).sqrt());
+                        fade[l] = big_t as f32;
+                        info.fade_min = info.fade_min.min(big_t);
+                        info.fade_max = info.fade_max.max(big_t);
                     }
                 }
-            } else {
-                state.fade[j] = [f32::INFINITY; LANES];
+                info.lipschitz += lanes[l].0;
+                info.curvature += lanes[l].1;
+                info.slope_error += t.slope_error_factor[l] * sg.abs();
+                info.amplitude += a;
+                info.spread += t.slope_factor[l] * t.wavenumber[l];
             }
-            state.tier[j] = (l_sum, k_sum, e_sum, f_min, f_max);
-            slope_error += e_sum;
+            if info.fade_max == 0.0 {
+                info.fade_max = f64::INFINITY; // an empty tier never fades
+            }
+            slope_error += info.slope_error;
+            state.tier[j] = info;
         }
         Self { sea, state, origin: o, direction: d, t_exit, slope_error }
     }
@@ -326,13 +370,18 @@ impl RayTiers for SeaTiers<'_> {
             return TierBounds { min: y0.min(y1), max: y0.max(y1), lipschitz: self.direction.y.abs(), curvature: 0.0 };
         }
         let j = tier - 1;
-        let (l, k, _, f_min, f_max) = self.state.tier[j];
-        if t >= f_max {
+        let info = self.state.tier[j];
+        if t >= info.fade_max {
             return TierBounds::ZERO;
         }
-        if f_min >= 1.5 * self.t_exit {
-            let a = self.sea.tiers[j].amplitude_sum;
-            return TierBounds { min: -a, max: a, lipschitz: l, curvature: k };
+        if info.fade_min >= 1.5 * self.t_exit {
+            // Unfaded (held lanes, if any, sit at −A: the tier is Σ nᵢ − A_held).
+            return TierBounds {
+                min: -info.amplitude - info.held,
+                max: info.amplitude - info.held,
+                lipschitz: info.lipschitz,
+                curvature: info.curvature,
+            };
         }
         // Faded products wᵢ·nᵢ with wᵢ non-increasing in t (footprint.rs): |wᵢnᵢ| ≤ wᵢ(t)Aᵢ,
         // |(wᵢnᵢ)'| ≤ wᵢ(t)Lᵢ + |wᵢ'|Aᵢ, |(wᵢnᵢ)''| ≤ wᵢ(t)Kᵢ + 2|wᵢ'|Lᵢ + |wᵢ''|Aᵢ, with
@@ -358,13 +407,17 @@ impl RayTiers for SeaTiers<'_> {
         TierBounds { min: -amp, max: amp, lipschitz: lip, curvature: curv }
     }
 
+    fn spread_lipschitz(&self, tier: usize) -> f64 {
+        if tier == 0 { 1.0 } else { self.state.tier[tier - 1].spread }
+    }
+
     fn sample(&mut self, tier: usize, t: f64) -> TierSample {
         if tier == 0 {
             return TierSample { value: self.origin.y + self.direction.y * t, slope: self.direction.y, terms: 0 };
         }
         let j = tier - 1;
-        let (_, _, _, f_min, f_max) = self.state.tier[j];
-        if t >= f_max {
+        let info = self.state.tier[j];
+        if t >= info.fade_max {
             return TierSample { value: 0.0, slope: 0.0, terms: 0 };
         }
         let w = &self.sea.tiers[j];
@@ -375,14 +428,15 @@ impl RayTiers for SeaTiers<'_> {
             s[l] = s0[l] + sigma[l] * t;
             sg[l] = sigma[l] as f32;
         }
-        let (mut hi, mut lo) = ([0.0f32; LANES], [0.0f32; LANES]);
-        split_phases(&s, &mut hi, &mut lo);
-        let (c, sn, inv) = profile8(f32x8::new(hi), f32x8::new(lo), f32x8::new(w.steepness), w.mode);
-        let amp = f32x8::new(w.amplitude);
+        let (c, g) = profile8(reduce_phases(&s), f32x8::new(w.steepness), &w.series, w.mode);
+        let mut amp = f32x8::new(w.amplitude);
+        if info.masked {
+            amp *= f32x8::new(self.state.mask[j]);
+        }
         // n = −w·A cos θ;  dn/dt = −w'·A cos θ + w·A sin θ σ/(1 − Q cos θ).
         let h = amp * c;
-        let dh = amp * sn * inv * f32x8::new(sg);
-        let (value, slope, terms) = if t * 1.5 <= f_min {
+        let dh = amp * g * f32x8::new(sg);
+        let (value, slope, terms) = if t * 1.5 <= info.fade_min {
             (-h.reduce_add(), dh.reduce_add(), w.count)
         } else {
             let tf = f32x8::splat(t as f32);
@@ -393,7 +447,7 @@ impl RayTiers for SeaTiers<'_> {
             let live = self.state.fade[j].iter().take(w.count as usize).filter(|&&f| f64::from(f) > t).count();
             (-(weight * h).reduce_add(), (weight * dh - dweight * h).reduce_add(), live as u32)
         };
-        TierSample { value: f64::from(value), slope: f64::from(slope), terms }
+        TierSample { value: f64::from(value) - info.held, slope: f64::from(slope), terms }
     }
 
     fn error_bound(&self) -> f64 {
@@ -443,10 +497,10 @@ impl LipschitzSum for TracedTrochoids {
         }
         let (tier, lane) = self.lane_of_wave[i - 1];
         let t = &self.tiers[tier];
-        let (hi, lo) = split_phase(t.kx[lane] * p.x + t.kz[lane] * p.z + t.offset[lane]);
-        let (_, s, inv) = profile1(hi, lo, t.steepness[lane], t.mode);
+        let (_, g) =
+            profile1(t.kx[lane] * p.x + t.kz[lane] * p.z + t.offset[lane], t.steepness[lane], &t.series, lane, t.mode);
         let sigma = t.kx[lane] * d.x + t.kz[lane] * d.z;
-        Some(f64::from(t.amplitude[lane]) * f64::from(s * inv) * sigma)
+        Some(f64::from(t.amplitude[lane]) * f64::from(g) * sigma)
     }
 
     /// `A σ²/(1 − Q)²`: `|τ''_Q| = |Q − cos θ|/(1 − Q cos θ)³ ≤ 1/(1 − Q)²` (at the crest).
@@ -495,8 +549,135 @@ impl LipschitzSum for TracedTrochoids {
         SCRATCH.with(|cell| {
             let mut guard = cell.borrow_mut();
             let (scratch, state) = &mut *guard;
-            let mut tiers = SeaTiers::new(self, state, ray, t_exit, options.footprint_angle);
+            let mut tiers = SeaTiers::new(self, state, ray, t_exit, options.footprint_angle, 0.0);
             trace_tiers_with(scratch, &mut tiers, ray, t_enter, t_exit, options, stats, log)
         })
+    }
+
+    fn certify_cone(
+        &self,
+        ray: &Ray,
+        half_angle: f64,
+        t_enter: f64,
+        t_exit: f64,
+        options: &TraceOptions,
+        stats: &mut TraceStats,
+    ) -> f64 {
+        SCRATCH.with(|cell| {
+            let mut guard = cell.borrow_mut();
+            let (scratch, state) = &mut *guard;
+            let mut tiers = SeaTiers::new(self, state, ray, t_exit, options.footprint_angle, half_angle);
+            certify_cone_with(scratch, &mut tiers, ray, half_angle, t_enter, t_exit, options, stats)
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use proptest::prelude::*;
+
+    use super::*;
+    use crate::{FitOptions, PiersonMoskowitz, Spectrum, TrochoidSum, fit_trochoids, solve_trochoid_phase};
+
+    /// A set with mixed steepness (series and Newton modes) from the fit, `Q` overridden per wave.
+    fn set(n: usize, q_max: f64, seed: u64) -> TrochoidSet {
+        let pm = PiersonMoskowitz::from_u10(10.0).unwrap();
+        let spreading = crate::CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
+        let fit = fit_trochoids(&pm, &spreading, n, seed, &FitOptions::default()).unwrap();
+        let waves = fit
+            .waves()
+            .iter()
+            .enumerate()
+            .map(|(i, w)| {
+                let q = q_max * ((i * 37 + seed as usize) % 11) as f64 / 10.0;
+                Trochoid::new(w.amplitude(), w.wavenumber(), w.direction(), w.omega(), w.phase(), q).unwrap()
+            })
+            .collect();
+        TrochoidSet::new(waves)
+    }
+
+    /// The exact f64 value of tier `tier` along the ray at `t` (faded like the lanes).
+    fn exact_tier(sea: &TracedTrochoids, state: &RayState, ray: &Ray, tier: usize, t: f64) -> f64 {
+        if tier == 0 {
+            return ray.at(t).y;
+        }
+        let p = ray.at(t);
+        let mut sum = 0.0;
+        for (i, (w, offset)) in sea.waves.iter().enumerate() {
+            let (j, l) = sea.lane_of_wave[i];
+            if j != tier - 1 {
+                continue;
+            }
+            let k = w.wavenumber() * w.direction_vector();
+            let (_, c, _) = solve_trochoid_phase(k.x * p.x + k.y * p.z + offset, w.steepness());
+            let weight = footprint_weight(f64::from(state.fade[j][l]), t);
+            sum -= weight * state.mask[j][l] as f64 * w.amplitude() * c;
+        }
+        sum - state.tier[tier - 1].held
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+
+        /// Along random rays, every tier's samples stay within its bounds, its derivative within
+        /// its Lipschitz bound, the change of the derivative within the curvature bound, and the
+        /// f32 sample within the error bound of the exact f64 tier.
+        #[test]
+        fn tier_samples_respect_their_bounds(
+            n in 1usize..120,
+            q_max in prop_oneof![Just(0.05), Just(0.6), Just(0.99)],
+            seed in 0u64..1000,
+            dy in -0.9f64..-0.01,
+            azimuth in 0.0f64..6.28,
+            fade in prop_oneof![Just(0.0), Just(0.002), Just(0.02)],
+        ) {
+            let set = set(n, q_max, seed);
+            let sea = TracedTrochoids::new(&set, 1.3);
+            let h = (1.0 - dy * dy).sqrt();
+            let ray = Ray::new(DVec3::new(3.0, 2.0, -7.0), DVec3::new(h * azimuth.cos(), dy, h * azimuth.sin())).unwrap();
+            let t_exit = 80.0;
+            let mut state = RayState::default();
+            let mut tiers = SeaTiers::new(&sea, &mut state, &ray, t_exit, fade, 0.0);
+            let eps = tiers.error_bound();
+            let eta = tiers.slope_error_bound();
+            for j in 0..tiers.tier_count() {
+                for &t0 in &[0.5, 5.0, 30.0] {
+                    let b = tiers.bounds(j, t0);
+                    let dt = 1e-3;
+                    let mut previous: Option<(f64, f64)> = None;
+                    for i in 0..200 {
+                        let t = t0 + (t_exit - t0) * i as f64 / 200.0;
+                        let s = tiers.sample(j, t);
+                        prop_assert!(s.value >= b.min - eps && s.value <= b.max + eps, "tier {j} t {t}: {} ∉ [{}, {}]", s.value, b.min, b.max);
+                        prop_assert!(s.slope.abs() <= b.lipschitz + eta, "tier {j} t {t}: slope {} > {}", s.slope, b.lipschitz);
+                        let s2 = tiers.sample(j, t + dt);
+                        // Finite difference of the slope, with the f32 slope error over dt.
+                        let second = (s2.slope - s.slope) / dt;
+                        prop_assert!(second.abs() <= b.curvature * (1.0 + 1e-6) + 2.0 * eta / dt + 1e-9, "tier {j} t {t}: curvature {second} > {}", b.curvature);
+                        let exact = exact_tier(&sea, tiers.state, &ray, j, t);
+                        prop_assert!((s.value - exact).abs() <= eps, "tier {j} t {t}: f32 {} vs f64 {exact} (ε = {eps:e})", s.value);
+                        previous = Some((t, s.value));
+                    }
+                    let _ = previous;
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn fast_height_matches_the_f64_surface_within_its_error_bound() {
+        for (q_max, seed) in [(0.05, 1), (0.5, 2), (0.99, 3)] {
+            let set = set(150, q_max, seed);
+            let sea = TracedTrochoids::new(&set, 0.4);
+            let sum = TrochoidSum::new(&set);
+            let exact = sum.at_time(0.4);
+            for i in 0..500 {
+                let (x, z) = (i as f64 * 1.37 - 300.0, i as f64 * -0.61 + 40.0);
+                let (fast, reference) = (sea.height(x, z), exact.height(x, z));
+                assert!((fast - reference).abs() <= sea.error_bound(), "{fast} vs {reference}");
+                let component = (1..=set.len()).map(|c| -sea.component(c, DVec3::new(x, 0.0, z))).sum::<f64>();
+                assert!((component - reference).abs() <= sea.error_bound(), "{component} vs {reference}");
+            }
+        }
     }
 }
