@@ -5,7 +5,11 @@
 //! Add an entry here when a crate adds a benchmark.
 
 /// `(name, what it measures, cargo arguments)`.
-const BENCHES: &[(&str, &str, &[&str])] = &[];
+const BENCHES: &[(&str, &str, &[&str])] = &[(
+    "trace",
+    "brine-trace: every tracing method on identical 640×480 primary rays (tables of docs/benchmarks.md)",
+    &["bench", "-p", "brine-trace", "--bench", "methods"],
+)];
 
 /// Runs the named benchmarks (all when `names` is empty) or lists them.
 pub fn run(names: &[String], list: bool) -> Result<(), String> {

@@ -16,9 +16,7 @@
 
 use std::time::Instant;
 
-use brine_trace::{
-    Hit, LipschitzSum, Method, Ray, TraceOptions, TraceStats, trace, trace_temporal, trace_tile,
-};
+use brine_trace::{Hit, LipschitzSum, Method, Ray, TraceOptions, TraceStats, trace, trace_temporal, trace_tile};
 use brine_waves::{
     CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, TracedTrochoids, Trochoid, TrochoidSet, TrochoidSum,
     fit_trochoids, solve_trochoid_phase,
@@ -170,8 +168,10 @@ fn run_coherent(surface: &TracedTrochoids, camera: &Camera, xs: &[usize], ys: &[
     for ty in (0..h).step_by(TILE) {
         for tx in (0..w).step_by(TILE) {
             let (tw, th) = (TILE.min(w - tx), TILE.min(h - ty));
-            let dirs: Vec<DVec3> =
-                (0..th).flat_map(|j| (0..tw).map(move |i| (i, j))).map(|(i, j)| camera.direction(xs[tx + i], ys[ty + j])).collect();
+            let dirs: Vec<DVec3> = (0..th)
+                .flat_map(|j| (0..tw).map(move |i| (i, j)))
+                .map(|(i, j)| camera.direction(xs[tx + i], ys[ty + j]))
+                .collect();
             let mut hits = vec![None; dirs.len()];
             let mut costs = vec![0.0; dirs.len()];
             trace_tile(surface, camera.position, &dirs, tw, &o, &mut stats, &mut hits, Some(&mut costs));
@@ -265,7 +265,11 @@ fn kernel_timings() {
 fn machine() {
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
-        .and_then(|s| s.lines().find(|l| l.starts_with("model name")).map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string()))
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("model name"))
+                .map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string())
+        })
         .unwrap_or_else(|| "unknown".into());
     let compiled = if cfg!(target_feature = "avx2") && cfg!(target_feature = "fma") {
         "AVX2+FMA"
@@ -306,7 +310,8 @@ fn main() {
         Camera::new("50 m looking down", 50.0, 100.0, -50.0),
     ];
     let sizes: &[usize] = if quick { &[50] } else { &[30, 50, 100, 200] };
-    let levels: [(Option<f64>, &str); 3] = [(None, "fitted Q (Σ Q ≤ 0.9)"), (Some(0.5), "Q = 0.5"), (Some(0.9), "Q = 0.9")];
+    let levels: [(Option<f64>, &str); 3] =
+        [(None, "fitted Q (Σ Q ≤ 0.9)"), (Some(0.5), "Q = 0.5"), (Some(0.9), "Q = 0.9")];
     let xs: Vec<usize> = (0..WIDTH).step_by(STRIDE).map(|x| x + STRIDE / 2).collect();
     let ys: Vec<usize> = (0..HEIGHT).step_by(STRIDE).map(|y| y + STRIDE / 2).collect();
     let mut summary = Vec::new();
@@ -341,20 +346,31 @@ fn main() {
                 let brute = rows[0].mean();
                 let global = rows[1].mean();
                 print_table(
-                    &format!("{} — {level} — N = {n} — {}×{} rays (every {STRIDE}th pixel)", camera.name, xs.len(), ys.len()),
+                    &format!(
+                        "{} — {level} — N = {n} — {}×{} rays (every {STRIDE}th pixel)",
+                        camera.name,
+                        xs.len(),
+                        ys.len()
+                    ),
                     &rows,
                     Some(brute),
                     Some(global),
                 );
-                // Whole image: the tiered variants, and the next frame with temporal coherence.
-                let whole_tiered = run_method(&fast, &full, Method::Tiered, footprint, "tiered + footprint");
-                let whole_coherent = run_coherent(&fast, camera, &all_x, &all_y, footprint);
-                // Temporal coherence needs the unfaded surface (see `trace_temporal`).
-                let frame = run_method(&fast, &full, Method::Tiered, 0.0, "tiered, frame t");
-                let whole_next = run_method(&next, &full, Method::Tiered, 0.0, "tiered, frame t + 1/25 s");
-                let whole_temporal = run_temporal(&next, &full, &frame.t_hit, 0.0);
-                let full_rows = [whole_tiered, whole_coherent, whole_next, whole_temporal];
-                print_table(&format!("{} — {level} — N = {n} — 640×480 rays", camera.name), &full_rows, None, None);
+                // Whole image (fitted steepness only, the renderer's case): the tiered variants,
+                // and the next frame with temporal coherence.
+                let full_rows = if q.is_none() {
+                    let whole_tiered = run_method(&fast, &full, Method::Tiered, footprint, "tiered + footprint");
+                    let whole_coherent = run_coherent(&fast, camera, &all_x, &all_y, footprint);
+                    // Temporal coherence needs the unfaded surface (see `trace_temporal`).
+                    let frame = run_method(&fast, &full, Method::Tiered, 0.0, "tiered, frame t");
+                    let whole_next = run_method(&next, &full, Method::Tiered, 0.0, "tiered, frame t + 1/25 s");
+                    let whole_temporal = run_temporal(&next, &full, &frame.t_hit, 0.0);
+                    let rows = vec![whole_tiered, whole_coherent, whole_next, whole_temporal];
+                    print_table(&format!("{} — {level} — N = {n} — 640×480 rays", camera.name), &rows, None, None);
+                    rows
+                } else {
+                    Vec::new()
+                };
                 summary.push((camera.name, level, n, brute, global, rows, full_rows));
             }
         }
@@ -366,18 +382,22 @@ fn main() {
     println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     for (camera, level, n, brute, global, rows, full) in &summary {
         let best = rows[6].mean();
-        let sc = full[0].mean() / full[1].mean().max(1e-9);
-        let tc = full[2].mean() / full[3].mean().max(1e-9);
+        let (sc, tc, us) = if full.is_empty() {
+            ("–".to_string(), "–".to_string(), "–".to_string())
+        } else {
+            (
+                format!("{:.2}×", full[0].mean() / full[1].mean().max(1e-9)),
+                format!("{:.2}×", full[2].mean() / full[3].mean().max(1e-9)),
+                format!("{:.2}", 1e6 / full[0].rays_per_second()),
+            )
+        };
         println!(
-            "| {camera} | {level} | {n} | {brute:.0} | {global:.1} | {:.1} | {:.1} | {:.1} | {best:.1} | {:.0}× | {:.1}× | {:.2}× | {:.2}× | {:.2} |",
+            "| {camera} | {level} | {n} | {brute:.0} | {global:.1} | {:.1} | {:.1} | {:.1} | {best:.1} | {:.0}× | {:.1}× | {sc} | {tc} | {us} |",
             rows[2].mean(),
             rows[4].mean(),
             rows[5].mean(),
             brute / best,
             global / best,
-            sc,
-            tc,
-            1e6 / full[0].rays_per_second(),
         );
     }
 }

@@ -42,7 +42,7 @@ pub fn trace_tile<S: LipschitzSum + ?Sized>(
     hits: &mut [Option<Hit>],
     mut costs: Option<&mut [f64]>,
 ) {
-    debug_assert!(width > 0 && directions.len() % width == 0 && hits.len() == directions.len());
+    debug_assert!(width > 0 && directions.len().is_multiple_of(width) && hits.len() == directions.len());
     let height = directions.len() / width;
     if let Some(c) = costs.as_deref_mut() {
         c.iter_mut().for_each(|v| *v = 0.0);
@@ -68,6 +68,16 @@ impl<S: LipschitzSum + ?Sized> Tile<'_, '_, S> {
             return;
         }
         let index = |x: usize, y: usize| y * self.width + x;
+        if t_start >= self.options.t_max {
+            // A cone proved every ray free up to the end of the traced interval.
+            for y in y0..y0 + h {
+                for x in x0..x0 + w {
+                    self.hits[index(x, y)] = None;
+                    self.stats.rays += 1;
+                }
+            }
+            return;
+        }
         if w * h <= MIN_CONE_RAYS {
             for y in y0..y0 + h {
                 for x in x0..x0 + w {
@@ -102,9 +112,7 @@ impl<S: LipschitzSum + ?Sized> Tile<'_, '_, S> {
         let mut t_c = t_start;
         if let Ok(ray) = Ray::new(self.origin, axis) {
             let before = self.stats.evaluations;
-            if t_start < self.options.t_max {
-                t_c = self.surface.certify_cone(&ray, half_angle, t_start, self.options.t_max, self.options, self.stats);
-            }
+            t_c = self.surface.certify_cone(&ray, half_angle, t_start, self.options.t_max, self.options, self.stats);
             if let Some(c) = self.costs.as_deref_mut() {
                 let share = (self.stats.evaluations - before) as f64 / (w * h) as f64;
                 for y in y0..y0 + h {
@@ -150,8 +158,7 @@ pub fn trace_temporal<S: LipschitzSum + ?Sized>(
     options: &TraceOptions,
     stats: &mut TraceStats,
 ) -> Option<Hit> {
-    let Some(t_prev) =
-        previous.filter(|t| *t > options.t_min && *t < options.t_max && options.footprint_angle == 0.0)
+    let Some(t_prev) = previous.filter(|t| *t > options.t_min && *t < options.t_max && options.footprint_angle == 0.0)
     else {
         return trace(surface, ray, options, stats);
     };

@@ -58,8 +58,8 @@ pub(crate) fn darles_trace<S: LipschitzSum + ?Sized>(
             return None;
         }
         steps += 1;
-        for i in 0..n {
-            minima[i] = minimum(i, p);
+        for (i, m) in minima.iter_mut().enumerate() {
+            *m = minimum(i, p);
         }
         let key = |i: usize| {
             let r = sign * estimate[i] - minima[i];
@@ -127,8 +127,8 @@ pub(crate) fn darles_trace<S: LipschitzSum + ?Sized>(
         let f: f64 = value.iter().sum();
         let t_next = (t + h).min(t1);
         let q = ray.at(t_next);
-        for i in 0..n {
-            estimate[i] = surface.component(i, q);
+        for (i, e) in estimate.iter_mut().enumerate() {
+            *e = surface.component(i, q);
         }
         stats.evaluations += 1;
         stats.component_evaluations += n as u64;

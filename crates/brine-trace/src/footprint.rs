@@ -97,7 +97,8 @@ mod tests {
             let t = big_t / 1.5 + (big_t - big_t / 1.5) * j as f64 / 4000.0;
             let h = 1e-5;
             let d1 = (footprint_weight(big_t, t + h) - footprint_weight(big_t, t - h)) / (2.0 * h);
-            let d2 = (footprint_weight(big_t, t + h) - 2.0 * footprint_weight(big_t, t) + footprint_weight(big_t, t - h))
+            let d2 = (footprint_weight(big_t, t + h) - 2.0 * footprint_weight(big_t, t)
+                + footprint_weight(big_t, t - h))
                 / (h * h);
             assert!(d1.abs() <= FADE_SLOPE / t * (1.0 + 1e-6), "t = {t}: {d1}");
             assert!(d2.abs() <= FADE_CURVATURE / (t * t) * (1.0 + 1e-3), "t = {t}: {d2}");

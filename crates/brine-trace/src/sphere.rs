@@ -37,8 +37,11 @@ impl<S: LipschitzSum + ?Sized> Along<'_, S> {
             refinement += 1;
             self.surface.value(self.ray.at(s))
         };
-        let (t_hit, _) =
-            if bisection { bisect_crossing(f, a, fa, b, fb, tolerance) } else { refine_crossing(f, a, fa, b, fb, tolerance) };
+        let (t_hit, _) = if bisection {
+            bisect_crossing(f, a, fa, b, fb, tolerance)
+        } else {
+            refine_crossing(f, a, fa, b, fb, tolerance)
+        };
         stats.evaluations += refinement;
         stats.refinement_evaluations += refinement;
         stats.component_evaluations += refinement * self.n;

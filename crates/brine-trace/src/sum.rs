@@ -151,6 +151,15 @@ pub trait LipschitzSum {
             return t_enter;
         }
         let mut tiers = crate::ComponentTiers::new(self, ray, t_enter, t_exit, 0.0);
-        crate::certify_cone_with(&mut TierScratch::default(), &mut tiers, ray, half_angle, t_enter, t_exit, options, stats)
+        crate::certify_cone_with(
+            &mut TierScratch::default(),
+            &mut tiers,
+            ray,
+            half_angle,
+            t_enter,
+            t_exit,
+            options,
+            stats,
+        )
     }
 }

@@ -101,8 +101,14 @@ fn a_tile_of_coherent_rays_finds_each_first_crossing() {
         let crossings = dense_crossings(&f, t0, t1, 1.5 / 50.0);
         let lambda = field.directional_lipschitz(*d);
         let eps = sea.error_bound();
-        check_first_crossing(&f, &crossings, hit.map(|h| h.t), eps + lambda * o.tolerance, 2.0 * eps + lambda * o.min_step)
-            .unwrap();
+        check_first_crossing(
+            &f,
+            &crossings,
+            hit.map(|h| h.t),
+            eps + lambda * o.tolerance,
+            2.0 * eps + lambda * o.min_step,
+        )
+        .unwrap();
         // The same as tracing the ray alone.
         let single = trace(&sea, &ray, &o, &mut TraceStats::default());
         match (single, hit) {
@@ -123,7 +129,8 @@ fn temporal_coherence_finds_the_first_crossing_of_the_next_frame() {
     let origin = DVec3::new(0.0, 5.0, 0.0);
     let mut hits = 0;
     for k in 0..60 {
-        let d = DVec3::new((0.1 * f64::from(k)).cos(), -0.1 - 0.01 * f64::from(k), (0.1 * f64::from(k)).sin()).normalize();
+        let d =
+            DVec3::new((0.1 * f64::from(k)).cos(), -0.1 - 0.01 * f64::from(k), (0.1 * f64::from(k)).sin()).normalize();
         let ray = Ray::new(origin, d).unwrap();
         let previous = trace(&TracedTrochoids::new(&set, 0.0), &ray, &o, &mut TraceStats::default()).map(|h| h.t);
         let next = TracedTrochoids::new(&set, 0.04);
@@ -133,8 +140,14 @@ fn temporal_coherence_finds_the_first_crossing_of_the_next_frame() {
         let Some((t0, t1)) = field.zero_set_bounds().clip(&ray, 0.0, o.t_max) else { continue };
         let crossings = dense_crossings(&f, t0, t1, 1.0 / 50.0);
         let (eps, lambda) = (next.error_bound(), field.directional_lipschitz(d));
-        check_first_crossing(&f, &crossings, hit.map(|h| h.t), eps + lambda * o.tolerance, 2.0 * eps + lambda * o.min_step)
-            .unwrap();
+        check_first_crossing(
+            &f,
+            &crossings,
+            hit.map(|h| h.t),
+            eps + lambda * o.tolerance,
+            2.0 * eps + lambda * o.min_step,
+        )
+        .unwrap();
         hits += usize::from(hit.is_some());
     }
     assert!(hits > 30, "only {hits} hits");

@@ -1,15 +1,18 @@
 //! A trochoid sum frozen at one instant and laid out for fast tracing: waves sorted by length
 //! scale in tiers of 8 f32 lanes (SIMD), each tier with its bounds along a ray.
 
+// Lane loops index several parallel arrays of one tier at once.
+#![allow(clippy::needless_range_loop)]
+
 use std::cell::RefCell;
 use std::f64::consts::TAU;
 
+use brine_trace::simd::f32x8;
 use brine_trace::{
     Aabb, FADE_CURVATURE, FADE_SLOPE, Hit, LipschitzSum, Ray, RayTiers, Step, TierBounds, TierSample, TierScratch,
     TraceOptions, TraceStats, certify_cone_with, footprint_weight, trace_tiers_with,
 };
 use glam::{DVec2, DVec3};
-use brine_trace::simd::f32x8;
 
 use crate::fast_profile::{PROFILE_ERROR, ProfileMode, profile1, profile8, reduce_phases, series_coefficients};
 use crate::{Trochoid, TrochoidSet};
@@ -170,7 +173,8 @@ impl TracedTrochoids {
     fn wave_height_fast(&self, i: usize, x: f64, z: f64) -> f64 {
         let (tier, lane) = self.lane_of_wave[i];
         let t = &self.tiers[tier];
-        let (c, _) = profile1(t.kx[lane] * x + t.kz[lane] * z + t.offset[lane], t.steepness[lane], &t.series, lane, t.mode);
+        let (c, _) =
+            profile1(t.kx[lane] * x + t.kz[lane] * z + t.offset[lane], t.steepness[lane], &t.series, lane, t.mode);
         f64::from(t.amplitude[lane]) * f64::from(c)
     }
 
@@ -628,7 +632,7 @@ mod tests {
             q_max in prop_oneof![Just(0.05), Just(0.6), Just(0.99)],
             seed in 0u64..1000,
             dy in -0.9f64..-0.01,
-            azimuth in 0.0f64..6.28,
+            azimuth in 0.0f64..std::f64::consts::TAU,
             fade in prop_oneof![Just(0.0), Just(0.002), Just(0.02)],
         ) {
             let set = set(n, q_max, seed);

@@ -24,7 +24,11 @@ impl SphereSum {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let mut s = Self { centres: vec![], radii: vec![], weights: vec![] };
         for _ in 0..n {
-            s.centres.push(DVec3::new(rng.random_range(-2.0..2.0), rng.random_range(-2.0..2.0), rng.random_range(-2.0..2.0)));
+            s.centres.push(DVec3::new(
+                rng.random_range(-2.0..2.0),
+                rng.random_range(-2.0..2.0),
+                rng.random_range(-2.0..2.0),
+            ));
             s.radii.push(rng.random_range(0.3..1.2));
             s.weights.push(if rng.random::<f64>() < 0.7 { 1.0 } else { -0.5 });
         }
@@ -92,7 +96,13 @@ pub fn random_set(n: usize, lambda_min: f64, q_max: f64, slope_sum: f64, seed: u
         let lambda = lambda_min * (100.0 / lambda_min).powf(rng.random::<f64>());
         let k = std::f64::consts::TAU / lambda;
         let weight: f64 = rng.random_range(0.2..1.0);
-        raw.push((k, weight, rng.random_range(-1.5..1.5), rng.random_range(0.0..std::f64::consts::TAU), rng.random_range(0.0..=q_max)));
+        raw.push((
+            k,
+            weight,
+            rng.random_range(-1.5..1.5),
+            rng.random_range(0.0..std::f64::consts::TAU),
+            rng.random_range(0.0..=q_max),
+        ));
     }
     let total: f64 = raw.iter().map(|w| w.1).sum();
     let waves = raw
@@ -216,7 +226,10 @@ pub fn check_steps(
                     let t = s.t_from + (s.t_to - s.t_from) * j as f64 / n as f64;
                     let v = f(t);
                     if (v > 0.0) != (f0 > 0.0) && v.abs() > skim {
-                        return Err(format!("certified step {i} [{}, {}] crosses the surface at {t} (F = {v:e})", s.t_from, s.t_to));
+                        return Err(format!(
+                            "certified step {i} [{}, {}] crosses the surface at {t} (F = {v:e})",
+                            s.t_from, s.t_to
+                        ));
                     }
                 }
             }
@@ -238,7 +251,7 @@ pub fn check_steps(
 }
 
 /// A random ray toward a slab `|y| ≤ half_height`: origin above it, inside it or below the mean
-/// level, directions from straight down to grazing (|d_y| down to 10⁻³) and a few upward.
+/// level, directions from straight down to grazing (`|d_y|` down to 10⁻³) and a few upward.
 pub fn random_ray(half_height: f64, rng: &mut ChaCha8Rng) -> Ray {
     let kind = rng.random_range(0..4);
     let y = match kind {
