@@ -61,7 +61,10 @@ impl ProfileMode {
                 }
                 m -= 1;
             }
-            Self { harmonics: m as u8, iterations: 0, poly: 0, cubic: false }
+            if m <= SERIES_MAX_HARMONICS {
+                return Self { harmonics: m as u8, iterations: 0, poly: 0, cubic: false };
+            }
+            Self { harmonics: 0, iterations: 1, poly: 0, cubic: false }
         } else if q_max <= 0.5 {
             Self {
                 harmonics: 0,
@@ -114,6 +117,50 @@ pub(crate) fn series_coefficients(q: f64, harmonics: usize) -> Vec<f64> {
         a.push((bessel_j(n - 1, x) - bessel_j(n + 1, x)) / n as f64);
     }
     a
+}
+
+/// The series of [`series_coefficients`] as the monomial coefficients the kernel evaluates:
+/// `[p₀ … p₈, r₀ … r₇]` with `Σ aₙ Tₙ(C) = Σ p_k Cᵏ` and `Σ n aₙ Uₙ₋₁(C) = Σ r_k Cᵏ` (Chebyshev
+/// polynomials of the first and second kinds, by their recurrences in f64).
+///
+/// # Arguments
+/// - `q`: steepness, `[0, SERIES_MAX_STEEPNESS]`; `harmonics`: `[1, 8]`.
+///
+/// # Returns
+/// The [`SERIES_ROWS`] coefficients (zeros above the degree).
+pub(crate) fn series_polynomials(q: f64, harmonics: usize) -> [f64; SERIES_ROWS] {
+    debug_assert!((1..=SERIES_MAX_HARMONICS).contains(&harmonics));
+    let a = series_coefficients(q, harmonics);
+    let mut out = [0.0; SERIES_ROWS];
+    // Tₙ and Uₙ as coefficient vectors (degree ≤ 8).
+    let (mut t_prev, mut t_cur) = ([0.0f64; 9], [0.0f64; 9]);
+    t_prev[0] = 1.0; // T₀
+    t_cur[1] = 1.0; // T₁
+    let (mut u_prev, mut u_cur) = ([0.0f64; 9], [0.0f64; 9]);
+    u_prev[0] = 1.0; // U₀
+    u_cur[1] = 2.0; // U₁
+    out[0] += a[0];
+    for (n, &an) in a.iter().enumerate().skip(1) {
+        // aₙ Tₙ into P (t_cur = Tₙ); n aₙ Uₙ₋₁ into R (u_prev = Uₙ₋₁).
+        for k in 0..9 {
+            out[k] += an * t_cur[k];
+            if k < 8 {
+                out[9 + k] += n as f64 * an * u_prev[k];
+            }
+        }
+        // Advance: T_{n+1} = 2C Tₙ − Tₙ₋₁, Uₙ = 2C Uₙ₋₁ − Uₙ₋₂.
+        let mut t_next = [0.0; 9];
+        let mut u_next = [0.0; 9];
+        for k in 0..9 {
+            t_next[k] = -t_prev[k] + if k > 0 { 2.0 * t_cur[k - 1] } else { 0.0 };
+            u_next[k] = -u_prev[k] + if k > 0 { 2.0 * u_cur[k - 1] } else { 0.0 };
+        }
+        t_prev = t_cur;
+        t_cur = t_next;
+        u_prev = u_cur;
+        u_cur = u_next;
+    }
+    out
 }
 
 /// Arithmetic of one f32 lane or of eight (the kernel is written once for both).
@@ -182,14 +229,16 @@ impl Lane for f32x8 {
 /// `r¹¹/11! ≤ 1.7×10⁻⁹` and `r¹²/12! ≤ 1.1×10⁻¹⁰`).
 #[inline(always)]
 fn sin_cos_quarter<T: Lane>(r: T) -> (T, T) {
+    // Estrin's scheme in x = r² (short dependency chains): sin r/r = (1 − x/6) + x²(1/120 − x/5040)
+    // + x⁴/9!, cos r = (1 − x/2) + x²(1/24 − x/720) + x⁴(1/8! − x/10!).
     let c = T::splat;
-    let r2 = r * r;
-    let s =
-        r * (r2 * (r2 * (r2 * (r2 * c(1.0 / 362_880.0) + c(-1.0 / 5040.0)) + c(1.0 / 120.0)) + c(-1.0 / 6.0)) + c(1.0));
-    let co = r2
-        * (r2 * (r2 * (r2 * (r2 * c(-1.0 / 3_628_800.0) + c(1.0 / 40320.0)) + c(-1.0 / 720.0)) + c(1.0 / 24.0))
-            + c(-0.5))
-        + c(1.0);
+    let x = r * r;
+    let x2 = x * x;
+    let x4 = x2 * x2;
+    let s = r * ((c(1.0) - x * c(1.0 / 6.0)) + x2 * (c(1.0 / 120.0) - x * c(1.0 / 5040.0)) + x4 * c(1.0 / 362_880.0));
+    let co = (c(1.0) - x * c(0.5))
+        + x2 * (c(1.0 / 24.0) - x * c(1.0 / 720.0))
+        + x4 * (c(1.0 / 40320.0) - x * c(1.0 / 3_628_800.0));
     (s, co)
 }
 
@@ -308,30 +357,38 @@ fn kernel<T: Lane, const ITER: u8, const POLY: u8, const CUBIC: bool>(p: Phase<T
     (ct, st / (one - q * ct))
 }
 
-/// The series mode: `cos θ = Σ aₙ cos(n s)` and `sin θ/(1 − Q cos θ) = −dτ/ds = Σ n aₙ sin(n s)`
-/// by two Clenshaw recurrences in `C = cos s` (`sin ns = S Uₙ₋₁(C)`), no division.
+/// Rows of the series mode per lane: the value polynomial `P(C) = Σ_{k≤8} p_k Cᵏ` then the
+/// derivative polynomial `R(C) = Σ_{k≤7} r_k Cᵏ` (see [`series_polynomials`]).
+pub(crate) const SERIES_ROWS: usize = 17;
+
+/// Largest number of harmonics of the series mode (`P` of degree 8).
+pub(crate) const SERIES_MAX_HARMONICS: usize = 8;
+
+/// The series mode: `cos θ = Σ aₙ cos(n s) = P(cos s)` and
+/// `sin θ/(1 − Q cos θ) = Σ n aₙ sin(n s) = sin s · R(cos s)` (`cos ns = Tₙ(C)`,
+/// `sin ns = sin s Uₙ₋₁(C)`), both polynomials evaluated by Estrin's scheme: no division, short
+/// dependency chains.
 #[inline(always)]
-fn series<T: Lane>(p: Phase<T>, harmonics: usize, coefficient: impl Fn(usize) -> T) -> (T, T) {
-    let c = T::splat;
+fn series<T: Lane>(p: Phase<T>, coefficient: impl Fn(usize) -> T) -> (T, T) {
     let (sr, cr) = sin_cos_quarter(p.r_hi);
     let ss = sr * p.cq + cr * p.sq;
     let cs = sr * -p.sq + cr * p.cq;
-    let two_c = c(2.0) * cs;
-    let (mut b1, mut b2) = (c(0.0), c(0.0));
-    let (mut d1, mut d2) = (c(0.0), c(0.0));
-    for n in (1..=harmonics).rev() {
-        let a = coefficient(n);
-        (b1, b2) = (a + two_c * b1 - b2, b1);
-        (d1, d2) = (a * c(n as f32) + two_c * d1 - d2, d1);
-    }
-    (coefficient(0) + cs * b1 - b2, ss * d1)
+    let c2 = cs * cs;
+    let c4 = c2 * c2;
+    let k = |i: usize| coefficient(i);
+    let value = ((k(0) + k(1) * cs) + (k(2) + k(3) * cs) * c2)
+        + ((k(4) + k(5) * cs) + (k(6) + k(7) * cs) * c2) * c4
+        + k(8) * (c4 * c4);
+    let slope =
+        ((k(9) + k(10) * cs) + (k(11) + k(12) * cs) * c2) + ((k(13) + k(14) * cs) + (k(15) + k(16) * cs) * c2) * c4;
+    (value, ss * slope)
 }
 
 /// Dispatches on the mode (one monomorphised body per Newton mode).
 #[inline(always)]
 fn kernel_for<T: Lane>(p: Phase<T>, q: T, mode: ProfileMode, coefficient: impl Fn(usize) -> T) -> (T, T) {
     if mode.harmonics > 0 {
-        return series(p, usize::from(mode.harmonics), coefficient);
+        return series(p, coefficient);
     }
     match (mode.iterations, mode.poly, mode.cubic) {
         (0, _, _) => kernel::<T, 0, 0, false>(p, q),
@@ -348,7 +405,7 @@ fn kernel_for<T: Lane>(p: Phase<T>, q: T, mode: ProfileMode, coefficient: impl F
 /// # Arguments
 /// - `phase`: the reduced horizontal phases ([`reduce_phases`]).
 /// - `q`: steepness per lane, `[0, 0.99]`, at most what `mode` was chosen for.
-/// - `series`: per lane, the series coefficients `aₙ` (series mode), indexed `[n][lane]`.
+/// - `series`: per lane, the [`series_polynomials`] (series mode), indexed `[row][lane]`.
 /// - `mode`: series or Newton, see [`ProfileMode`].
 ///
 /// # Returns
@@ -366,7 +423,7 @@ pub(crate) fn profile8(phase: Phase<f32x8>, q: f32x8, series: &[[f32; 8]], mode:
 ///
 /// # Arguments
 /// - `s`: the horizontal phase (rad, any finite value).
-/// - `q`, `mode`: as [`profile8`]; `series`, `lane`: the coefficients `series[n][lane]`.
+/// - `q`, `mode`: as [`profile8`]; `series`, `lane`: the coefficients `series[row][lane]`.
 ///
 /// # Returns
 /// As [`profile8`].
@@ -405,8 +462,11 @@ mod tests {
     fn profile_error_is_within_bound() {
         for &q in &STEEPNESSES {
             let mode = ProfileMode::for_steepness(q);
-            let coefficients: Vec<[f32; 8]> =
-                series_coefficients(q, usize::from(mode.harmonics)).iter().map(|&a| [a as f32; 8]).collect();
+            let coefficients: Vec<[f32; 8]> = if mode.harmonics > 0 {
+                series_polynomials(q, usize::from(mode.harmonics)).iter().map(|&a| [a as f32; 8]).collect()
+            } else {
+                Vec::new()
+            };
             let bound = PROFILE_ERROR * (1.0 + 1.0 / (1.0 - q * q).sqrt());
             let slope_bound = PROFILE_ERROR * (1.0 + 1.0 / ((1.0 - q) * (1.0 - q)));
             let (mut worst, mut worst_slope) = (0.0f64, 0.0f64);
@@ -427,6 +487,22 @@ mod tests {
             );
             assert!(worst <= 0.5 * bound, "Q = {q}: error {worst:e} vs bound {bound:e}");
             assert!(worst_slope <= 0.5 * slope_bound, "Q = {q}: slope error {worst_slope:e} vs {slope_bound:e}");
+        }
+    }
+
+    #[test]
+    fn series_polynomials_equal_the_cosine_series() {
+        let (q, m) = (0.08, 8);
+        let a = series_coefficients(q, m);
+        let p = series_polynomials(q, m);
+        for j in 0..50 {
+            let s = -3.0 + 0.12 * j as f64;
+            let (sn, c) = s.sin_cos();
+            let direct: f64 = a.iter().enumerate().map(|(n, an)| an * (n as f64 * s).cos()).sum();
+            let slope: f64 = a.iter().enumerate().map(|(n, an)| n as f64 * an * (n as f64 * s).sin()).sum();
+            let poly: f64 = (0..9).map(|k| p[k] * c.powi(k as i32)).sum();
+            let poly_slope: f64 = sn * (0..8).map(|k| p[9 + k] * c.powi(k as i32)).sum::<f64>();
+            assert!((direct - poly).abs() < 1e-12 && (slope - poly_slope).abs() < 1e-12, "s = {s}");
         }
     }
 

@@ -14,7 +14,9 @@ use brine_trace::{
 };
 use glam::{DVec2, DVec3};
 
-use crate::fast_profile::{PROFILE_ERROR, ProfileMode, profile1, profile8, reduce_phases, series_coefficients};
+use crate::fast_profile::{
+    PROFILE_ERROR, ProfileMode, SERIES_ROWS, profile1, profile8, reduce_phases, series_polynomials,
+};
 use crate::{Trochoid, TrochoidSet};
 
 /// Waves per tier: one f32x8 vector.
@@ -36,7 +38,7 @@ struct Tier {
     /// `Aᵢ·PROFILE_ERROR/(1 − Qᵢ)²` (derivative error per unit `|σᵢ|`).
     slope_error_factor: [f64; LANES],
     mode: ProfileMode,
-    /// Series coefficients `aₙ` per lane, `[n][lane]` (series mode; empty otherwise).
+    /// Series polynomial coefficients per lane, `[row][lane]` (series mode; empty otherwise).
     series: Vec<[f32; LANES]>,
     /// Real waves in this tier.
     count: u32,
@@ -125,10 +127,10 @@ impl TracedTrochoids {
             t.mode = ProfileMode::for_steepness(q_max);
             let m = usize::from(t.mode.harmonics);
             if m > 0 {
-                t.series = vec![[0.0; LANES]; m + 1];
+                t.series = vec![[0.0; LANES]; SERIES_ROWS];
                 for l in 0..chunk.len() {
-                    for (n, a) in series_coefficients(f64::from(t.steepness[l]), m).into_iter().enumerate() {
-                        t.series[n][l] = a as f32;
+                    for (row, a) in series_polynomials(f64::from(t.steepness[l]), m).into_iter().enumerate() {
+                        t.series[row][l] = a as f32;
                     }
                 }
             }
