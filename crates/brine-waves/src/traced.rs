@@ -80,8 +80,9 @@ thread_local! {
 }
 
 impl TracedTrochoids {
-    /// The surface of `set` at time `time` (s).
+    /// The surface of `set` at time `time` (s, finite: the scene's validated time).
     pub fn new(set: &TrochoidSet, time: f64) -> Self {
+        debug_assert!(time.is_finite(), "time {time} must be finite");
         let n = set.len();
         let mut order: Vec<usize> = (0..n).collect();
         let key = |w: &Trochoid| (1.0 - w.steepness() * w.steepness()).sqrt() / w.wavenumber();
