@@ -38,6 +38,11 @@ const BENCHES: &[(&str, &str, &[&str])] = &[
         "per-pixel foam amount, foam history, spray ray segments, spray medium construction (criterion)",
         &["bench", "-p", "brine-foam", "--bench", "foam"],
     ),
+    (
+        "trace",
+        "brine-trace: every tracing method on identical 640×480 primary rays (tables of docs/benchmarks.md)",
+        &["bench", "-p", "brine-trace", "--bench", "methods"],
+    ),
 ];
 
 /// Runs the named benchmarks (all when `names` is empty) or lists them.

@@ -71,6 +71,47 @@ pub fn refine_crossing(
     (0.5 * (a + b), evaluations)
 }
 
+/// Refines a bracketed crossing of `f` on `[a, b]` by bisection until the bracket is no longer
+/// than `tolerance`: `⌈log₂((b − a)/tolerance)⌉` evaluations (the refinement of brute-force
+/// marching, Darles et al. 2007 §3.1).
+///
+/// # Arguments
+/// As [`refine_crossing`].
+///
+/// # Returns
+/// `(t, evaluations)`: the midpoint of the final bracket and the number of evaluations of `f`.
+pub fn bisect_crossing(
+    mut f: impl FnMut(f64) -> f64,
+    mut a: f64,
+    fa: f64,
+    mut b: f64,
+    fb: f64,
+    tolerance: f64,
+) -> (f64, u32) {
+    debug_assert!(a <= b && fa * fb <= 0.0 && tolerance > 0.0);
+    if fa == 0.0 {
+        return (a, 0);
+    }
+    if fb == 0.0 {
+        return (b, 0);
+    }
+    let mut evaluations = 0;
+    while b - a > tolerance && evaluations < 200 {
+        let m = 0.5 * (a + b);
+        let fm = f(m);
+        evaluations += 1;
+        if fm == 0.0 {
+            return (m, evaluations);
+        }
+        if (fm < 0.0) == (fa < 0.0) {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    (0.5 * (a + b), evaluations)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -81,6 +122,14 @@ mod tests {
         let (t, n) = refine_crossing(f, 0.0, f(0.0), 2.0, f(2.0), 1e-10);
         assert!((t - 2f64.cbrt()).abs() <= 1e-10, "t = {t}");
         assert!(n < 80, "{n} evaluations");
+    }
+
+    #[test]
+    fn bisection_halves_to_tolerance() {
+        let f = |t: f64| t - 0.3;
+        let (t, n) = bisect_crossing(f, 0.0, -0.3, 1.0, 0.7, 1e-9);
+        assert!((t - 0.3).abs() <= 1e-9);
+        assert_eq!(n, 30); // ⌈log₂(10⁹)⌉
     }
 
     #[test]

@@ -97,6 +97,7 @@
 mod dispersion;
 mod elfouhaily;
 mod error;
+mod fast_profile;
 mod fit;
 mod gerstner;
 mod gerstner_lipschitz;
@@ -113,6 +114,7 @@ mod spectrum;
 mod spreading;
 mod surface;
 mod tma;
+mod traced;
 mod trochoid;
 
 pub use dispersion::{Dispersion, ELFOUHAILY_K_M, SEA_WATER_DENSITY, SEA_WATER_SURFACE_TENSION};
@@ -131,4 +133,5 @@ pub use spreading::{CosineSquared, Directions, DonelanBanner};
 pub use spreading::{CosineTwoS, Spreading};
 pub use surface::{TrochoidField, TrochoidSum, WaveSurface};
 pub use tma::{Tma, kitaigorodskii_depth_factor};
+pub use traced::{LANES, TracedTrochoids};
 pub use trochoid::{MAX_STEEPNESS, Trochoid, solve_trochoid_phase};

@@ -1,0 +1,108 @@
+//! Footprint fading: components smaller than a pixel's footprint leave the traced surface.
+
+use glam::DVec3;
+
+use crate::LipschitzSum;
+
+/// Bound of `|dw/dt|·t` for `w(t) = smoothstep(1, 1.5, T/t)`: `|S'| ≤ 3` per unit of `T/t`, and
+/// `|d(T/t)/dt| = (T/t)/t ≤ 1.5/t` where `w` varies.
+pub const FADE_SLOPE: f64 = 4.5;
+
+/// Bound of `|d²w/dt²|·t²` for the same `w`: `|S''| ≤ 24` and `(T/t)² ≤ 2.25` give 54, plus
+/// `|S'|·|d²(T/t)/dt²| ≤ 3·3` gives 9.
+pub const FADE_CURVATURE: f64 = 63.0;
+
+/// The fade weight of a component at distance `t` along a ray, `w = smoothstep(1, 1.5, T/t)`.
+///
+/// `w = 0` for `t ≥ T` (the footprint exceeds the component's size: dropped), `w = 1` for
+/// `t ≤ T/1.5` (kept whole), `3u² − 2u³` with `u = (T/t − 1)/0.5` between.
+///
+/// # Arguments
+/// - `fade_distance`: `T` (m), `(0, ∞]`, from [`LipschitzSum::component_fade_distance`].
+/// - `t`: distance along the ray (m), `≥ 0`.
+///
+/// # Returns
+/// The weight, `[0, 1]`.
+///
+/// # References
+/// Equation sheet §1 "Antialiasing" and §11 (Bruneton, Neyret & Holzschuch 2010, `nyquistMin` =
+/// 1, `nyquistMax` = 1.5); Darles et al. 2007 §3.2 (amplitudes reduced with the pixel footprint).
+#[inline]
+pub fn footprint_weight(fade_distance: f64, t: f64) -> f64 {
+    if t <= 0.0 || fade_distance >= 1.5 * t {
+        return 1.0;
+    }
+    let u = ((fade_distance / t - 1.0) * 2.0).clamp(0.0, 1.0);
+    u * u * (3.0 - 2.0 * u)
+}
+
+/// Derivative `dw/dt` of [`footprint_weight`] (per metre).
+#[inline]
+pub fn footprint_weight_slope(fade_distance: f64, t: f64) -> f64 {
+    if t <= 0.0 || fade_distance >= 1.5 * t || fade_distance <= t {
+        return 0.0;
+    }
+    let x = fade_distance / t;
+    let u = (x - 1.0) * 2.0;
+    // dS/du · du/dx · dx/dt = 6u(1 − u) · 2 · (−x/t).
+    -12.0 * u * (1.0 - u) * x / t
+}
+
+/// The fade weights of every component of `surface` at a hit `t` along a ray of direction `d̂`:
+/// what the tracer dropped or faded, so that a renderer can move the missing slopes into its
+/// BRDF (Bruneton et al. 2010). All weights are 1 when `footprint_angle` is 0.
+///
+/// # Arguments
+/// - `surface`: the traced function.
+/// - `direction`: the unit ray direction.
+/// - `footprint_angle`: the option used to trace (rad).
+/// - `t`: the hit distance (m).
+///
+/// # Returns
+/// `wᵢ ∈ [0, 1]` for each component.
+pub fn component_weights<S: LipschitzSum + ?Sized>(
+    surface: &S,
+    direction: DVec3,
+    footprint_angle: f64,
+    t: f64,
+) -> Vec<f64> {
+    (0..surface.component_count())
+        .map(|i| {
+            if footprint_angle > 0.0 {
+                footprint_weight(surface.component_fade_distance(i, direction, footprint_angle), t)
+            } else {
+                1.0
+            }
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn weight_is_one_near_zero_far_and_smooth_between() {
+        assert!((footprint_weight(15.0, 10.0) - 1.0).abs() < 1e-15);
+        assert!(footprint_weight(10.0, 10.0).abs() < 1e-15);
+        assert!((footprint_weight(12.5, 10.0) - 0.5).abs() < 1e-12);
+        assert!((footprint_weight(f64::INFINITY, 1e9) - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn slope_and_curvature_bounds_hold_on_a_fine_grid() {
+        // Central differences of w(t) over the transition, against FADE_SLOPE/t and FADE_CURVATURE/t².
+        let big_t = 7.0;
+        for j in 1..4000 {
+            let t = big_t / 1.5 + (big_t - big_t / 1.5) * j as f64 / 4000.0;
+            let h = 1e-5;
+            let d1 = (footprint_weight(big_t, t + h) - footprint_weight(big_t, t - h)) / (2.0 * h);
+            let d2 = (footprint_weight(big_t, t + h) - 2.0 * footprint_weight(big_t, t)
+                + footprint_weight(big_t, t - h))
+                / (h * h);
+            assert!(d1.abs() <= FADE_SLOPE / t * (1.0 + 1e-6), "t = {t}: {d1}");
+            assert!(d2.abs() <= FADE_CURVATURE / (t * t) * (1.0 + 1e-3), "t = {t}: {d2}");
+            assert!((footprint_weight_slope(big_t, t) - d1).abs() < 1e-6, "t = {t}");
+        }
+    }
+}

@@ -1,0 +1,473 @@
+//! The tiered method: frequency pruning and the certified second-order step.
+
+use crate::options::log_step;
+use crate::{Hit, Ray, RayTiers, Step, StepBound, StepKind, TierBounds, TraceOptions, TraceStats, refine_crossing};
+
+/// How many tiers whose key falls below the last step are still evaluated at the next point,
+/// as a fraction of the step: tiers with `key ≥ DEPTH_KEEP · step` are kept.
+const DEPTH_KEEP: f64 = 0.5;
+
+/// Bounds are re-read (they tighten as footprint fading removes components) once `t` has grown by
+/// this factor since the last reading.
+const REFRESH_GROWTH: f64 = 1.25;
+
+/// Reusable buffers of [`trace_tiers_with`] (one per thread avoids an allocation per ray).
+#[derive(Debug, Clone, Default)]
+pub struct TierScratch {
+    bounds: Vec<TierBounds>,
+    /// Oriented lower bound of each tier.
+    lo: Vec<f64>,
+    /// `Σ_{j≥k} lo[j]`, length `n + 1`.
+    lo_suffix: Vec<f64>,
+    /// `(max − min)/L`: the largest step at which evaluating the tier can help.
+    key: Vec<f64>,
+    /// Oriented value of each sampled tier at the current point.
+    value: Vec<f64>,
+    /// Oriented derivative (a lower bound of it) of each sampled tier.
+    slope: Vec<f64>,
+    /// Curvature bound used with `slope` (0 when the slope is the Lipschitz lower bound).
+    curvature: Vec<f64>,
+    /// 3D Lipschitz constant of each tier (cone mode).
+    spread: Vec<f64>,
+    /// Unoriented derivative of the first samples (while the side is unknown).
+    raw_slope: Vec<f64>,
+}
+
+impl TierScratch {
+    fn reset(&mut self, n: usize) {
+        for v in [
+            &mut self.lo,
+            &mut self.key,
+            &mut self.value,
+            &mut self.slope,
+            &mut self.curvature,
+            &mut self.spread,
+            &mut self.raw_slope,
+        ] {
+            v.clear();
+            v.resize(n, 0.0);
+        }
+        self.lo_suffix.clear();
+        self.lo_suffix.resize(n + 1, 0.0);
+        self.bounds.clear();
+        self.bounds.resize(n, TierBounds::ZERO);
+    }
+
+    /// Reads the bounds of every tier at `t` and orients them by `sign`.
+    fn refresh<R: RayTiers + ?Sized>(&mut self, tiers: &mut R, t: f64, sign: f64, cone: bool) {
+        let n = self.bounds.len();
+        for j in 0..n {
+            let b = tiers.bounds(j, t);
+            if cone {
+                self.spread[j] = tiers.spread_lipschitz(j);
+            }
+            self.bounds[j] = b;
+            self.lo[j] = if sign > 0.0 { b.min } else { -b.max };
+            let range = b.max - b.min;
+            self.key[j] = if b.lipschitz > 0.0 {
+                range / b.lipschitz
+            } else if range > 0.0 {
+                f64::INFINITY
+            } else {
+                0.0
+            };
+        }
+        self.lo_suffix[n] = 0.0;
+        for j in (0..n).rev() {
+            self.lo_suffix[j] = self.lo_suffix[j + 1] + self.lo[j];
+        }
+    }
+
+    /// Stores the sample of tier `j`, oriented.
+    fn store(&mut self, j: usize, value: f64, slope: f64, sign: f64) {
+        self.value[j] = sign * value;
+        let b = self.bounds[j];
+        if slope.is_finite() && b.curvature.is_finite() {
+            self.slope[j] = (sign * slope).max(-b.lipschitz);
+            self.curvature[j] = b.curvature;
+        } else {
+            // Unknown derivative or curvature: the tier can only fall at its Lipschitz rate.
+            self.slope[j] = -b.lipschitz;
+            self.curvature[j] = 0.0;
+        }
+    }
+
+    /// The certified step from the first `k` sampled tiers (the others at their bounds).
+    ///
+    /// Each sampled tier is assigned to the quadratic part (derivative + curvature) or to the
+    /// reserve part (how far it can fall, at its Lipschitz rate), whichever costs less at the
+    /// expected step; two passes refine the guess. Every assignment gives a valid bound, so the
+    /// largest root is kept.
+    fn step(&self, k: usize, eps: f64, eta: f64, guess: f64, spread: (f64, f64)) -> f64 {
+        // Cone mode: every ray within `θ` of the axis is within `θ(t + s)` of the axis point, so
+        // the evaluated tiers lose at most `θ(t + s) Σ Lⱼ³ᴰ`.
+        let (margin, margin_rate) = if spread.0 > 0.0 {
+            let l3: f64 = self.spread[..k].iter().sum();
+            (spread.0 * spread.1 * l3, spread.0 * l3)
+        } else {
+            (0.0, 0.0)
+        };
+        let value: f64 = self.value[..k].iter().sum::<f64>() + self.lo_suffix[k] - eps - margin;
+        if !(value > 0.0) {
+            return 0.0;
+        }
+        let mut guess = if guess.is_finite() && guess > 0.0 {
+            guess
+        } else {
+            let l: f64 = self.bounds[..k].iter().map(|b| b.lipschitz).sum();
+            if l > 0.0 { value / l } else { f64::INFINITY }
+        };
+        let mut best = 0.0f64;
+        for _ in 0..2 {
+            let mut b = StepBound {
+                value,
+                slope: -eta - margin_rate,
+                curvature: 0.0,
+                lipschitz: eta + margin_rate,
+                reserve: 0.0,
+                reserve_lipschitz: 0.0,
+            };
+            for j in 0..k {
+                let (d, kk, l) = (self.slope[j], self.curvature[j], self.bounds[j].lipschitz);
+                let a = (self.value[j] - self.lo[j]).max(0.0);
+                let fall_q = quadratic_fall(d, kk, l, guess);
+                let fall_p = a.min(l * guess);
+                if fall_q <= fall_p {
+                    b.slope += d;
+                    b.curvature += kk;
+                    b.lipschitz += l;
+                } else {
+                    b.reserve += a;
+                    b.reserve_lipschitz += l;
+                }
+            }
+            let s = b.first_root();
+            best = best.max(s);
+            if !s.is_finite() {
+                break;
+            }
+            guess = s;
+        }
+        best
+    }
+
+    /// Tiers to evaluate at the next point after a step `s`: those whose key is at least
+    /// `DEPTH_KEEP·s`, stopping at the first that is not (at least one).
+    fn next_depth(&self, s: f64) -> usize {
+        let n = self.key.len();
+        let mut k = 1;
+        while k < n && self.key[k] >= DEPTH_KEEP * s {
+            k += 1;
+        }
+        k
+    }
+}
+
+/// How far one tier can fall over `s` by its quadratic bound: `−∫₀ˢ max(d − K u, −L) du`.
+fn quadratic_fall(d: f64, k: f64, l: f64, s: f64) -> f64 {
+    if k <= 0.0 {
+        return -d * s;
+    }
+    let s1 = (d + l) / k;
+    if s <= s1 { -(d * s - 0.5 * k * s * s) } else { -(d * s1 - 0.5 * k * s1 * s1) + l * (s - s1) }
+}
+
+/// Traces a ray given as tiers (see [`trace_tiers_with`]), with fresh buffers.
+///
+/// # Arguments
+/// See [`trace_tiers_with`].
+///
+/// # Returns
+/// The first sign change on `[t_enter, t_exit]`, or `None`.
+pub fn trace_tiers<R: RayTiers + ?Sized>(
+    tiers: &mut R,
+    ray: &Ray,
+    t_enter: f64,
+    t_exit: f64,
+    options: &TraceOptions,
+    stats: &mut TraceStats,
+    log: Option<&mut Vec<Step>>,
+) -> Option<Hit> {
+    trace_tiers_with(&mut TierScratch::default(), tiers, ray, t_enter, t_exit, options, stats, log)
+}
+
+/// The tiered method ([`crate::Method::Tiered`]) on a ray given as tiers `F = Σⱼ Tⱼ`.
+///
+/// At each point only the first `k` tiers are evaluated; the others enter through their bounds
+/// (frequency pruning: far from the surface only long waves are evaluated). Tier `k` is added
+/// while the step is shorter than its key `(maxₖ − minₖ)/Lₖ` (Darles' criterion: beyond that
+/// length its bound costs no more than its value). The step is the first root of the certified
+/// lower bound of [`StepBound`], `G(t + s) ≥ c + ∫₀ˢ max(D − K u, −Λ) du − min(a, Λ_p s)`
+/// (`G = ±F`, oriented to be positive at the start), minus twice the evaluation error. When that
+/// step falls below the minimum step `h(t)` with every tier evaluated, a probe at Newton's estimate
+/// plus half the tolerance (at most `h`) looks for the sign change; its bracket is refined by
+/// [`refine_crossing`].
+///
+/// Safety: every certified step contains no zero of the sampled `F̃` (whose distance to the exact
+/// `F` is at most [`RayTiers::error_bound`]); only the probe steps, no longer than `h`, are
+/// checked at their end alone, as in [`crate::trace`].
+///
+/// # Arguments
+/// - `scratch`: reusable buffers.
+/// - `tiers`: the function along the ray.
+/// - `ray`: the ray (only used to report the hit point).
+/// - `t_enter`, `t_exit`: the traced interval (m), already clipped.
+/// - `options`: minimum step, tolerance, step cap, footprint (for bound refreshing).
+/// - `stats`: counters; one evaluation per point visited, terms as reported by the tiers.
+/// - `log`: receives each step when given.
+///
+/// # Returns
+/// The first sign change on `[t_enter, t_exit]`, or `None`.
+///
+/// # References
+/// Hart 1996 (sphere tracing); Darles et al. 2007 §3.1–3.2 (efficient bound, neglected high
+/// frequencies); Galin et al. 2020 (segment tracing: local bounds over the step); equation sheet §2.
+#[allow(clippy::too_many_arguments)]
+pub fn trace_tiers_with<R: RayTiers + ?Sized>(
+    scratch: &mut TierScratch,
+    tiers: &mut R,
+    ray: &Ray,
+    t_enter: f64,
+    t_exit: f64,
+    options: &TraceOptions,
+    stats: &mut TraceStats,
+    log: Option<&mut Vec<Step>>,
+) -> Option<Hit> {
+    match run(scratch, tiers, ray, t_enter, t_exit, options, stats, log, 0.0) {
+        Outcome::Hit(hit) => Some(hit),
+        Outcome::Miss | Outcome::Free(_) => None,
+    }
+}
+
+/// Image coherence: certifies a cone of rays sharing `ray`'s origin.
+///
+/// Steps along the axis `ray` as [`trace_tiers_with`] does, but every bound loses
+/// `θ(t + s) Σⱼ Lⱼ³ᴰ` over the evaluated tiers (`Lⱼ³ᴰ` = [`RayTiers::spread_lipschitz`]): a ray
+/// within angle `θ` of the axis is within `θ t` of the axis point at the same `t`, so the lower
+/// bound holds for every ray of the cone. The cone stops (without probing) once its step is
+/// shorter than its radius `θ t`, or when the axis starts below the surface.
+///
+/// # Arguments
+/// - `half_angle`: `θ` (rad), `> 0`; `tiers` must be built for the cone (its tiers bound every
+///   ray of the cone, e.g. footprint-faded components at their amplitude).
+/// - The others as [`trace_tiers_with`].
+///
+/// # Returns
+/// `t_c ∈ [t_enter, t_exit]`: no ray of the cone crosses the surface on `[t_enter, t_c]`.
+///
+/// # References
+/// Darles et al. 2007 §3.3 (image coherence: unbounding spheres reused by neighbouring rays, in
+/// a quadtree); Hart 1996 (Lipschitz bound).
+#[allow(clippy::too_many_arguments)]
+pub fn certify_cone_with<R: RayTiers + ?Sized>(
+    scratch: &mut TierScratch,
+    tiers: &mut R,
+    ray: &Ray,
+    half_angle: f64,
+    t_enter: f64,
+    t_exit: f64,
+    options: &TraceOptions,
+    stats: &mut TraceStats,
+) -> f64 {
+    match run(scratch, tiers, ray, t_enter, t_exit, options, stats, None, half_angle) {
+        Outcome::Free(t) => t,
+        Outcome::Miss => t_exit,
+        Outcome::Hit(_) => t_enter,
+    }
+}
+
+/// What [`run`] found.
+enum Outcome {
+    /// A crossing.
+    Hit(Hit),
+    /// No crossing up to `t_exit`.
+    Miss,
+    /// (Cone mode) certified free up to this `t`.
+    Free(f64),
+}
+
+#[allow(clippy::too_many_arguments)]
+fn run<R: RayTiers + ?Sized>(
+    scratch: &mut TierScratch,
+    tiers: &mut R,
+    ray: &Ray,
+    t_enter: f64,
+    t_exit: f64,
+    options: &TraceOptions,
+    stats: &mut TraceStats,
+    mut log: Option<&mut Vec<Step>>,
+    cone: f64,
+) -> Outcome {
+    let n = tiers.tier_count();
+    if n == 0 || !(t_enter < t_exit) {
+        return Outcome::Miss;
+    }
+    let eps = 2.0 * tiers.error_bound();
+    let eta = tiers.slope_error_bound();
+    scratch.reset(n);
+    let mut t = t_enter;
+    scratch.refresh(tiers, t, 1.0, cone > 0.0);
+    let mut t_refresh = t;
+
+    // Which side of the surface the ray starts on: add tiers until the bounds decide. The samples
+    // are stored as if the side were positive and flipped below if not.
+    let hi_total: f64 = scratch.bounds.iter().map(|b| b.max).sum();
+    let (mut sum, mut k, mut hi_rest) = (0.0, 0, hi_total);
+    stats.evaluations += 1;
+    let sign = loop {
+        let s = tiers.sample(k, t);
+        stats.component_evaluations += u64::from(s.terms);
+        scratch.store(k, s.value, s.slope, 1.0);
+        scratch.raw_slope[k] = s.slope;
+        sum += s.value;
+        hi_rest -= scratch.bounds[k].max;
+        k += 1;
+        if sum + scratch.lo_suffix[k] > eps {
+            break 1.0;
+        }
+        if sum + hi_rest < -eps {
+            break -1.0;
+        }
+        if k == n {
+            if cone > 0.0 {
+                return Outcome::Free(t);
+            }
+            if sum == 0.0 {
+                stats.hits += 1;
+                return Outcome::Hit(Hit { t, point: ray.at(t), entering: true, steps: 0 });
+            }
+            break sum.signum();
+        }
+    };
+    if sign < 0.0 {
+        if cone > 0.0 {
+            return Outcome::Free(t);
+        }
+        scratch.refresh(tiers, t, sign, false);
+        for j in 0..k {
+            let (v, d) = (scratch.value[j], scratch.raw_slope[j]);
+            scratch.store(j, v, d, sign);
+        }
+    }
+    let mut sampled = k;
+    let mut guess = f64::NAN;
+    let mut steps = 0u32;
+
+    // Samples every tier of [from, to) at t (the caller counts the point).
+    let sample_range = |scratch: &mut TierScratch, tiers: &mut R, stats: &mut TraceStats, from: usize, to: usize, t| {
+        for j in from..to {
+            let s = tiers.sample(j, t);
+            stats.component_evaluations += u64::from(s.terms);
+            scratch.store(j, s.value, s.slope, sign);
+        }
+    };
+
+    loop {
+        if steps >= options.max_steps {
+            if cone > 0.0 {
+                return Outcome::Free(t);
+            }
+            stats.exhausted += 1;
+            return Outcome::Miss;
+        }
+        steps += 1;
+        if sampled < k {
+            if sampled == 0 {
+                stats.evaluations += 1;
+            }
+            sample_range(scratch, tiers, stats, sampled, k, t);
+        }
+        let mut s = scratch.step(k, eps, eta, guess, (cone, t));
+        while k < n && s < scratch.key[k] {
+            let mut k2 = k + 1;
+            while k2 < n && scratch.key[k2] > s {
+                k2 += 1;
+            }
+            sample_range(scratch, tiers, stats, k, k2, t);
+            k = k2;
+            s = scratch.step(k, eps, eta, guess, (cone, t));
+        }
+        let h = options.min_step_at(t);
+        if s < h && k < n {
+            sample_range(scratch, tiers, stats, k, n, t);
+            k = n;
+            s = scratch.step(k, eps, eta, guess, (cone, t));
+        }
+        if !(s >= 0.0) {
+            s = 0.0;
+        }
+        if t + s >= t_exit {
+            log_step(&mut log, t, t_exit, StepKind::Certified);
+            return Outcome::Miss;
+        }
+        if cone > 0.0 && (s < cone * t || s < h) {
+            // The cone is as wide as its step: its children take over from here.
+            return Outcome::Free(t + s);
+        }
+        if s >= h {
+            log_step(&mut log, t, t + s, StepKind::Certified);
+            t += s;
+            guess = s;
+            k = scratch.next_depth(s);
+            sampled = 0;
+            if options.footprint_angle > 0.0 && t >= REFRESH_GROWTH * t_refresh {
+                scratch.refresh(tiers, t, sign, cone > 0.0);
+                t_refresh = t;
+            }
+            continue;
+        }
+
+        // Every tier is evaluated and the certified step is shorter than h: probe.
+        let g: f64 = scratch.value.iter().sum();
+        let slope: f64 = scratch.slope.iter().sum();
+        let tol = options.tolerance_at(t);
+        let newton = if slope < 0.0 { g / -slope + 0.5 * tol } else { h };
+        let p = newton.clamp(s, h).min(t_exit - t);
+        let tp = t + p;
+        stats.evaluations += 1;
+        sample_range(scratch, tiers, stats, 0, n, tp);
+        let gp: f64 = scratch.value.iter().sum();
+        if gp <= 0.0 {
+            log_step(&mut log, t + s, tp, StepKind::Bracket);
+            let t_hit = if gp == 0.0 {
+                tp
+            } else if p - s <= tol {
+                t + 0.5 * (s + p)
+            } else {
+                let mut refinement = 0u64;
+                let mut terms = 0u64;
+                let (t_hit, _) = refine_crossing(
+                    |x| {
+                        refinement += 1;
+                        let mut sum = 0.0;
+                        for j in 0..n {
+                            let smp = tiers.sample(j, x);
+                            terms += u64::from(smp.terms);
+                            sum += smp.value;
+                        }
+                        sign * sum
+                    },
+                    t,
+                    g,
+                    tp,
+                    gp,
+                    tol,
+                );
+                stats.evaluations += refinement;
+                stats.refinement_evaluations += refinement;
+                stats.component_evaluations += terms;
+                t_hit
+            };
+            stats.hits += 1;
+            return Outcome::Hit(Hit { t: t_hit, point: ray.at(t_hit), entering: sign > 0.0, steps });
+        }
+        log_step(&mut log, t, tp, StepKind::Probe);
+        t = tp;
+        if t >= t_exit {
+            return Outcome::Miss;
+        }
+        guess = p;
+        k = n;
+        sampled = n;
+    }
+}

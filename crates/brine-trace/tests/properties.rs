@@ -1,0 +1,158 @@
+//! Property tests: the certified step bound, and "every method's hit is the first crossing" on
+//! random sums of spheres and random trochoid sets, against a dense f64 reference.
+
+mod common;
+
+use brine_trace::{LipschitzSum, Method, Ray, StepBound, TraceOptions, TraceStats, trace_logged};
+use brine_waves::{TracedTrochoids, TrochoidSum};
+use common::{SphereSum, check_first_crossing, check_steps, dense_crossings, random_ray, random_set};
+use glam::DVec3;
+use proptest::prelude::*;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+/// Options of the safety tests: a small minimum step (so that only skims thinner than 10⁻⁴ m can
+/// be skipped), a tight tolerance, and no practical step cap.
+fn test_options(method: Method) -> TraceOptions {
+    TraceOptions {
+        method,
+        t_max: 60.0,
+        max_steps: 2_000_000,
+        min_step: 1e-4,
+        min_step_relative: 0.0,
+        tolerance: 1e-7,
+        tolerance_relative: 0.0,
+        ..TraceOptions::default()
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+
+    /// The certified lower bound is positive on `[0, s*)` and vanishes at `s*`.
+    #[test]
+    fn certified_step_bound_is_positive_before_its_root(
+        value in 1e-6f64..10.0,
+        slope in -3.0f64..3.0,
+        curvature in prop_oneof![Just(0.0), 0.0f64..10.0, Just(f64::INFINITY)],
+        lipschitz in 0.0f64..5.0,
+        reserve in 0.0f64..5.0,
+        reserve_lipschitz in 0.0f64..5.0,
+    ) {
+        let b = StepBound { value, slope, curvature, lipschitz, reserve, reserve_lipschitz };
+        let r = b.first_root();
+        prop_assert!(r > 0.0, "root {r}");
+        let span = if r.is_finite() { r } else { 1e4 };
+        for j in 0..2000 {
+            let s = span * j as f64 / 2000.0;
+            // Relative rounding of the closed form: a few ulps of the terms.
+            prop_assert!(b.lower_bound(s) > -1e-12 * (1.0 + value), "bound {} < 0 at s = {s} < root {r}", b.lower_bound(s));
+        }
+        if r.is_finite() {
+            prop_assert!(b.lower_bound(r).abs() <= 1e-9 * (1.0 + value + lipschitz * r), "bound at root {}", b.lower_bound(r));
+        }
+    }
+}
+
+/// Reference step of the dense march on the sphere sums (m): far below the smallest radius 0.3.
+const SPHERE_REFERENCE_STEP: f64 = 2e-3;
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+
+    /// A sum of sphere distance functions (not an ocean): every method finds the first crossing.
+    #[test]
+    fn every_method_finds_the_first_crossing_of_a_sphere_sum(n in 1usize..12, seed in 0u64..1000) {
+        let surface = SphereSum::random(n, seed);
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        for _ in 0..4 {
+            let origin = DVec3::new(rand::Rng::random_range(&mut rng, -6.0..6.0), rand::Rng::random_range(&mut rng, -6.0..6.0), 7.0);
+            let target = DVec3::new(rand::Rng::random_range(&mut rng, -2.0..2.0), rand::Rng::random_range(&mut rng, -2.0..2.0), rand::Rng::random_range(&mut rng, -2.0..2.0));
+            let ray = Ray::new(origin, target - origin).unwrap();
+            let f = |t: f64| surface.value(ray.at(t));
+            let t_max = 30.0;
+            let crossings = dense_crossings(&f, 0.0, t_max, SPHERE_REFERENCE_STEP);
+            let lambda = surface.directional_lipschitz(ray.direction());
+            for method in Method::ALL {
+                let options = TraceOptions { t_max, ..test_options(method) };
+                let mut log = Vec::new();
+                let hit = trace_logged(&surface, &ray, &options, &mut TraceStats::default(), &mut log);
+                let march = 0.25 * surface.min_feature_size();
+                // Skims a method may skip: thinner than its probe (h) or its march step.
+                let skim = lambda * if method == Method::BruteForce { march } else { options.min_step } + 1e-12;
+                let on_surface = lambda * options.tolerance + 1e-12;
+                check_first_crossing(&f, &crossings, hit.map(|h| h.t), on_surface, skim)
+                    .map_err(|e| TestCaseError::fail(format!("{method:?}, seed {seed}: {e}")))?;
+                check_steps(&f, &log, &options, 1e-12, method != Method::BruteForce)
+                    .map_err(|e| TestCaseError::fail(format!("{method:?}, seed {seed}: {e}")))?;
+            }
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 20, ..ProptestConfig::default() })]
+
+    /// Random trochoid sets (N up to 200, steepness up to 0.99) and random rays, grazing ones
+    /// included: on the fast f32 surface every method returns the first crossing of the exact f64
+    /// surface (up to skims thinner than its minimum step or 2ε, ε the f32 error bound); the
+    /// generic tiered and directional tracers on the exact surface do too; and the tiered method
+    /// with footprint fading returns the first crossing of the faded f64 surface.
+    #[test]
+    fn every_method_finds_the_first_crossing_of_a_trochoid_sum(
+        n in prop_oneof![1usize..20, 20usize..201],
+        lambda_min in 1.0f64..5.0,
+        q_max in prop_oneof![Just(0.3), Just(0.9), Just(0.99)],
+        slope_sum in 0.05f64..0.6,
+        seed in 0u64..100_000,
+    ) {
+        let set = random_set(n, lambda_min, q_max, slope_sum, seed);
+        let sum = TrochoidSum::new(&set);
+        let exact = sum.at_time(0.7);
+        let fast = TracedTrochoids::new(&set, 0.7);
+        let eps = fast.error_bound();
+        let half = set.total_amplitude();
+        let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x5eed);
+        for _ in 0..2 {
+            let ray = random_ray(half, &mut rng);
+            let f = |t: f64| exact.value(ray.at(t));
+            let Some((t0, t1)) = exact.zero_set_bounds().clip(&ray, 0.0, 60.0) else { continue };
+            let lambda = exact.directional_lipschitz(ray.direction());
+            let crossings = dense_crossings(&f, t0, t1, lambda_min / 50.0);
+            let run = |surface: &dyn LipschitzSum, method: Method, fp: f64, reference: &dyn Fn(f64) -> f64, crossings: &[common::Crossing], err: f64| -> Result<(), TestCaseError> {
+                let options = TraceOptions { footprint_angle: fp, ..test_options(method) };
+                let mut log = Vec::new();
+                let hit = trace_logged(surface, &ray, &options, &mut TraceStats::default(), &mut log);
+                let march = 0.25 * surface.min_feature_size();
+                let skim = 2.0 * err + lambda * if method == Method::BruteForce { march } else { options.min_step };
+                let on_surface = err + lambda * options.tolerance + 1e-12;
+                check_first_crossing(reference, crossings, hit.map(|h| h.t), on_surface, skim)
+                    .map_err(|e| TestCaseError::fail(format!("{method:?} fp {fp}, n {n}, seed {seed}, ray {ray:?}: {e}")))?;
+                check_steps(reference, &log, &options, 2.0 * err + 1e-12, method != Method::BruteForce)
+                    .map_err(|e| TestCaseError::fail(format!("{method:?} fp {fp}, n {n}, seed {seed}: {e}")))
+            };
+            for method in Method::ALL {
+                run(&fast, method, 0.0, &f, &crossings, eps)?;
+            }
+            for method in [Method::Directional, Method::Tiered] {
+                run(&exact, method, 0.0, &f, &crossings, 0.0)?;
+            }
+            // Footprint fading: the reference is the faded surface y − Σ wᵢ(t) hᵢ.
+            let fp = 0.02;
+            let d = ray.direction();
+            let faded = |t: f64| {
+                let p = ray.at(t);
+                let mut h = 0.0;
+                for i in 0..set.len() {
+                    let w = fast.fade_weight(i, d, fp, t);
+                    if w > 0.0 {
+                        h += w * -exact.component(i + 1, p);
+                    }
+                }
+                p.y - h
+            };
+            let faded_crossings = dense_crossings(&faded, t0, t1, lambda_min / 50.0);
+            run(&fast, Method::Tiered, fp, &faded, &faded_crossings, eps)?;
+        }
+    }
+}

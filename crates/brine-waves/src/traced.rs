@@ -1,0 +1,736 @@
+//! A trochoid sum frozen at one instant and laid out for fast tracing: waves sorted by length
+//! scale in tiers of 8 f32 lanes (SIMD), each tier with its bounds along a ray.
+
+// Lane loops index several parallel arrays of one tier at once.
+#![allow(clippy::needless_range_loop)]
+
+use std::cell::RefCell;
+use std::f64::consts::TAU;
+
+use brine_trace::{
+    Aabb, FADE_CURVATURE, FADE_SLOPE, Hit, LipschitzSum, Ray, RayTiers, Step, TierBounds, TierSample, TierScratch,
+    TraceOptions, TraceStats, certify_cone_with, footprint_weight, trace_tiers_with,
+};
+use glam::{DVec2, DVec3};
+use wide::f32x8;
+
+use crate::fast_profile::{
+    PROFILE_ERROR, ProfileMode, SERIES_ROWS, profile1, profile8, reduce_phases, series_polynomials,
+};
+use crate::{Trochoid, TrochoidSet};
+
+/// Waves per tier: one f32x8 vector.
+pub const LANES: usize = 8;
+
+/// One tier of 8 lanes (padding lanes have `A = 0`, `k = 0`).
+#[derive(Debug, Clone)]
+struct Tier {
+    kx: [f64; LANES],
+    kz: [f64; LANES],
+    offset: [f64; LANES],
+    wavenumber: [f64; LANES],
+    amplitude: [f32; LANES],
+    steepness: [f32; LANES],
+    /// `Aᵢ/√(1 − Qᵢ²)` (the max slope per unit wavenumber along `d̂`).
+    slope_factor: [f64; LANES],
+    /// `Aᵢ/(1 − Qᵢ)²` (the curvature bound per unit wavenumber² along `d̂`).
+    curvature_factor: [f64; LANES],
+    /// `Aᵢ·PROFILE_ERROR/(1 − Qᵢ)²` (derivative error per unit `|σᵢ|`).
+    slope_error_factor: [f64; LANES],
+    mode: ProfileMode,
+    /// Series polynomial coefficients per lane, `[row][lane]` (series mode; empty otherwise).
+    series: Vec<[f32; LANES]>,
+    /// Real waves in this tier.
+    count: u32,
+    amplitude_sum: f64,
+    /// Bound of the evaluation error of the tier's sum (m).
+    error: f64,
+}
+
+/// The trochoid-sum surface of Darles et al. (`F = y − Σ Aᵢ τ_{Qᵢ}(kᵢ d̂ᵢ·(x, z) − ωᵢt + φᵢ)`,
+/// [`crate::TrochoidField`]) at one instant, prepared for [`brine_trace::Method::Tiered`]:
+///
+/// - waves sorted by decreasing `2Aᵢ/Lᵢ = 2√(1 − Qᵢ²)/kᵢ` (Darles' key at its largest, ∝ the
+///   wavelength), in tiers of [`LANES`]; component 0 is `y`, then the waves in their original order;
+/// - each tier evaluated in f32 SIMD lanes ([`wide::f32x8`]) after an f64 reduction of the phase,
+///   within `Aᵢ·5×10⁻⁷·(1 + 1/√(1 − Qᵢ²))` of the f64 surface (test `profile_error_is_within_bound`);
+/// - along a ray, each tier knows its value, derivative, range, Lipschitz and curvature bounds
+///   (`Σ Aᵢ σᵢ²/(1 − Qᵢ)²`, `σᵢ = kᵢ d̂ᵢ·d̂_xz`), and fades with the pixel footprint.
+///
+/// It implements [`LipschitzSum`] (every method can trace it; the components are evaluated by
+/// the same f32 kernel) and overrides [`LipschitzSum::trace_tiered`] with the fast path.
+///
+/// # References
+/// Darles et al. 2007 §3.2; equation sheet §1 (trochoid profile, per-wave bounds, antialiasing).
+#[derive(Debug, Clone)]
+pub struct TracedTrochoids {
+    tiers: Vec<Tier>,
+    /// `(tier, lane)` of wave `i` (original order).
+    lane_of_wave: Vec<(usize, usize)>,
+    /// Wave `i` (original order): `(Trochoid, offset φᵢ − ωᵢt)`.
+    waves: Vec<(Trochoid, f64)>,
+    /// Wave `i`'s slope covariance `⟨sᵢ²⟩ (k̂x², k̂x k̂z, k̂z²)`.
+    slope_covariance: Vec<DVec3>,
+    total_amplitude: f64,
+    error: f64,
+}
+
+thread_local! {
+    static SCRATCH: RefCell<(TierScratch, RayState)> = RefCell::new((TierScratch::default(), RayState::default()));
+}
+
+impl TracedTrochoids {
+    /// The surface of `set` at time `time` (s, finite: the scene's validated time).
+    pub fn new(set: &TrochoidSet, time: f64) -> Self {
+        debug_assert!(time.is_finite(), "time {time} must be finite");
+        let n = set.len();
+        let mut order: Vec<usize> = (0..n).collect();
+        let key = |w: &Trochoid| (1.0 - w.steepness() * w.steepness()).sqrt() / w.wavenumber();
+        order.sort_by(|&a, &b| key(&set.waves()[b]).total_cmp(&key(&set.waves()[a])));
+        let mut tiers = Vec::with_capacity(n.div_ceil(LANES));
+        let mut lane_of_wave = vec![(0, 0); n];
+        for chunk in order.chunks(LANES) {
+            let mut t = Tier {
+                kx: [0.0; LANES],
+                kz: [0.0; LANES],
+                offset: [0.0; LANES],
+                wavenumber: [0.0; LANES],
+                amplitude: [0.0; LANES],
+                steepness: [0.0; LANES],
+                slope_factor: [0.0; LANES],
+                curvature_factor: [0.0; LANES],
+                slope_error_factor: [0.0; LANES],
+                mode: ProfileMode::for_steepness(0.0),
+                series: Vec::new(),
+                count: chunk.len() as u32,
+                amplitude_sum: 0.0,
+                error: 0.0,
+            };
+            let mut q_max = 0.0f64;
+            for (l, &i) in chunk.iter().enumerate() {
+                let w = &set.waves()[i];
+                let d = w.direction_vector();
+                let (a, q) = (w.amplitude(), w.steepness());
+                t.kx[l] = w.wavenumber() * d.x;
+                t.kz[l] = w.wavenumber() * d.y;
+                t.offset[l] = w.phase() - w.omega() * time;
+                t.wavenumber[l] = w.wavenumber();
+                t.amplitude[l] = a as f32;
+                t.steepness[l] = q as f32;
+                t.slope_factor[l] = a / (1.0 - q * q).sqrt();
+                t.curvature_factor[l] = a / ((1.0 - q) * (1.0 - q));
+                t.slope_error_factor[l] = a * PROFILE_ERROR * (1.0 + 1.0 / ((1.0 - q) * (1.0 - q)));
+                t.amplitude_sum += a;
+                // f32 amplitude rounding (6×10⁻⁸ relative) and the 8-lane f32 sum are inside the
+                // factor 2 of PROFILE_ERROR's margin; the bound adds them explicitly anyway.
+                t.error += a * PROFILE_ERROR * (1.0 + 1.0 / (1.0 - q * q).sqrt()) + a * 1e-6;
+                q_max = q_max.max(q);
+                lane_of_wave[i] = (tiers.len(), l);
+            }
+            t.mode = ProfileMode::for_steepness(q_max);
+            let m = usize::from(t.mode.harmonics);
+            if m > 0 {
+                t.series = vec![[0.0; LANES]; SERIES_ROWS];
+                for l in 0..chunk.len() {
+                    for (row, a) in series_polynomials(f64::from(t.steepness[l]), m).into_iter().enumerate() {
+                        t.series[row][l] = a as f32;
+                    }
+                }
+            }
+            tiers.push(t);
+        }
+        let waves = set.waves().iter().map(|w| (*w, w.phase() - w.omega() * time)).collect();
+        let error = tiers.iter().map(|t| t.error).sum();
+        let slope_covariance = set
+            .waves()
+            .iter()
+            .map(|w| {
+                let d = w.direction_vector();
+                w.mean_square_slope() * DVec3::new(d.x * d.x, d.x * d.y, d.y * d.y)
+            })
+            .collect();
+        Self { tiers, lane_of_wave, waves, slope_covariance, total_amplitude: set.total_amplitude(), error }
+    }
+
+    /// Number of waves.
+    pub fn len(&self) -> usize {
+        self.waves.len()
+    }
+
+    /// `true` for a flat sea.
+    pub fn is_empty(&self) -> bool {
+        self.waves.is_empty()
+    }
+
+    /// Bound of `|h̃ − h|` (m) between this f32 evaluation and the f64 height of
+    /// [`crate::TrochoidField`], everywhere.
+    pub fn error_bound(&self) -> f64 {
+        self.error
+    }
+
+    /// Height `h̃(x, z)` (m) by the f32 SIMD kernel.
+    pub fn height(&self, x: f64, z: f64) -> f64 {
+        let mut sum = 0.0;
+        for t in &self.tiers {
+            let mut s = [0.0; LANES];
+            for l in 0..LANES {
+                s[l] = t.kx[l] * x + t.kz[l] * z + t.offset[l];
+            }
+            let (c, _) = profile8(reduce_phases(&s), f32x8::new(t.steepness), &t.series, t.mode);
+            sum += f64::from((f32x8::new(t.amplitude) * c).reduce_add());
+        }
+        sum
+    }
+
+    /// Height of wave `i` alone by the scalar twin of the kernel.
+    fn wave_height_fast(&self, i: usize, x: f64, z: f64) -> f64 {
+        let (tier, lane) = self.lane_of_wave[i];
+        let t = &self.tiers[tier];
+        let (c, _) =
+            profile1(t.kx[lane] * x + t.kz[lane] * z + t.offset[lane], t.steepness[lane], &t.series, lane, t.mode);
+        f64::from(t.amplitude[lane]) * f64::from(c)
+    }
+
+    /// The fade weight of wave `i` (original order) at distance `t` along a ray of direction `d̂`
+    /// traced with a pixel footprint of `footprint_angle` rad (1 when the angle is 0).
+    pub fn fade_weight(&self, i: usize, direction: DVec3, footprint_angle: f64, t: f64) -> f64 {
+        if footprint_angle > 0.0 {
+            footprint_weight(self.component_fade_distance(i + 1, direction, footprint_angle), t)
+        } else {
+            1.0
+        }
+    }
+
+    /// The gradient `(∂h/∂x, ∂h/∂z)` of the surface the tracer drew at a hit `t` along a ray of
+    /// direction `d̂`: `Σ wᵢ(t) ∂hᵢ/∂s · kᵢ d̂ᵢ` with `∂hᵢ/∂s = −Aᵢ sin θ/(1 − Qᵢ cos θ)`, every wave
+    /// weighted by its fade weight, by the f32 SIMD kernel (relative error about 10⁻⁶).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: the hit's horizontal position (m).
+    /// - `direction`: unit ray direction; `footprint_angle` (rad, 0: no fading) and `t` (m) as
+    ///   traced.
+    ///
+    /// # Returns
+    /// The gradient (dimensionless); the upward normal is `(−gx, 1, −gz)/‖·‖`.
+    pub fn faded_gradient(&self, x: f64, z: f64, direction: DVec3, footprint_angle: f64, t: f64) -> DVec2 {
+        let inv_dy2 = 1.0 / (direction.y * direction.y).max(1e-300);
+        let (mut gx, mut gz) = (0.0, 0.0);
+        for tier in &self.tiers {
+            let mut s = [0.0; LANES];
+            let (mut weight, mut kx, mut kz) = ([1.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
+            for l in 0..LANES {
+                s[l] = tier.kx[l] * x + tier.kz[l] * z + tier.offset[l];
+                kx[l] = tier.kx[l] as f32;
+                kz[l] = tier.kz[l] as f32;
+                if footprint_angle > 0.0 && l < tier.count as usize {
+                    let sigma = tier.kx[l] * direction.x + tier.kz[l] * direction.z;
+                    let k2 = tier.wavenumber[l] * tier.wavenumber[l] + sigma * sigma * inv_dy2;
+                    weight[l] = footprint_weight(TAU / (footprint_angle * k2.sqrt()), t) as f32;
+                }
+            }
+            let (_, g) = profile8(reduce_phases(&s), f32x8::new(tier.steepness), &tier.series, tier.mode);
+            let dh = -(f32x8::new(tier.amplitude) * g * f32x8::new(weight));
+            gx += f64::from((dh * f32x8::new(kx)).reduce_add());
+            gz += f64::from((dh * f32x8::new(kz)).reduce_add());
+        }
+        DVec2::new(gx, gz)
+    }
+
+    /// The slope covariance `(⟨ζx²⟩, ⟨ζx ζz⟩, ⟨ζz²⟩)` of the waves the tracer faded at `t`:
+    /// `Σ (1 − wᵢ) ⟨sᵢ²⟩ (k̂x², k̂x k̂z, k̂z²)` in world axes, to be added to the BRDF's unresolved
+    /// slope variance (Bruneton et al. 2010 seamless transition).
+    ///
+    /// # Arguments
+    /// - `direction`, `footprint_angle`, `t`: as traced.
+    ///
+    /// # Returns
+    /// The covariance (dimensionless) as `DVec3(xx, xz, zz)`.
+    ///
+    /// # References
+    /// Equation sheet §11 (`σ²_BRDF = σ²_total − σ²_resolved`, weights `smoothstep(1, 1.5, λ/ℓ)`).
+    pub fn faded_slope_covariance(&self, direction: DVec3, footprint_angle: f64, t: f64) -> DVec3 {
+        let mut out = DVec3::ZERO;
+        if footprint_angle <= 0.0 {
+            return out;
+        }
+        for (i, cov) in self.slope_covariance.iter().enumerate() {
+            let lost = 1.0 - self.fade_weight(i, direction, footprint_angle, t);
+            if lost > 0.0 {
+                out += lost * *cov;
+            }
+        }
+        out
+    }
+}
+
+/// Per-tier quantities along one ray.
+#[derive(Debug, Default, Clone, Copy)]
+struct TierOnRay {
+    /// `Σ wᵢ(t₀) Aᵢ|σᵢ|/√(1 − Qᵢ²)` over the lanes in use.
+    lipschitz: f64,
+    /// `Σ Aᵢσᵢ²/(1 − Qᵢ)²` over the lanes in use.
+    curvature: f64,
+    /// Bound of the derivative error.
+    slope_error: f64,
+    /// Smallest and largest fade distance of the tier's waves (m).
+    fade_min: f64,
+    fade_max: f64,
+    /// Amplitude of the lanes in use, and of the lanes a cone cannot follow (held at `−A`).
+    amplitude: f64,
+    held: f64,
+    /// `Σ Aᵢkᵢ/√(1 − Qᵢ²)` over the lanes in use: the 3D Lipschitz constant (cones).
+    spread: f64,
+    /// Some lane is held (cone mode).
+    masked: bool,
+}
+
+/// Per-ray state of the fast tiers (reused between rays).
+#[derive(Debug, Default, Clone)]
+struct RayState {
+    /// Phase at the ray origin, per lane (f64).
+    s0: Vec<[f64; LANES]>,
+    /// Phase rate along the ray `σ = k·d̂_xz` (rad m⁻¹), per lane.
+    sigma: Vec<[f64; LANES]>,
+    /// Fade distance per lane (m; `+∞` without fading).
+    fade: Vec<[f32; LANES]>,
+    /// 1 for a lane in use, 0 for a lane held at its minimum (cone mode).
+    mask: Vec<[f32; LANES]>,
+    /// `Aᵢ |σᵢ|/√(1 − Qᵢ²)` and `Aᵢ σᵢ²/(1 − Qᵢ)²` per lane (derivative and curvature bounds).
+    lane_bounds: Vec<[(f64, f64); LANES]>,
+    tier: Vec<TierOnRay>,
+}
+
+/// [`RayTiers`] of a [`TracedTrochoids`] along one ray (or the cone around it): tier 0 is `y`,
+/// tier `j ≥ 1` the `j`-th group of 8 waves.
+struct SeaTiers<'a> {
+    sea: &'a TracedTrochoids,
+    state: &'a mut RayState,
+    origin: DVec3,
+    direction: DVec3,
+    t_exit: f64,
+    slope_error: f64,
+}
+
+impl<'a> SeaTiers<'a> {
+    /// The tiers along `ray` up to `t_exit`, faded for a pixel of `footprint_angle` rad; with
+    /// `cone > 0`, tiers that bound every ray within `cone` rad of `ray`: a wave that would fade
+    /// for some ray of the cone before `t_exit` is held at its minimum `−A` (the faded term
+    /// `−wA cos θ ≥ −A` for any weight), the others are used whole.
+    fn new(
+        sea: &'a TracedTrochoids,
+        state: &'a mut RayState,
+        ray: &Ray,
+        t_exit: f64,
+        footprint_angle: f64,
+        cone: f64,
+    ) -> Self {
+        let (o, d) = (ray.origin(), ray.direction());
+        let n = sea.tiers.len();
+        state.s0.resize(n, [0.0; LANES]);
+        state.sigma.resize(n, [0.0; LANES]);
+        state.fade.resize(n, [f32::INFINITY; LANES]);
+        state.mask.resize(n, [1.0; LANES]);
+        state.lane_bounds.resize(n, [(0.0, 0.0); LANES]);
+        state.tier.resize(n, TierOnRay::default());
+        let mut slope_error = 0.0;
+        let inv_dy2 = 1.0 / (d.y * d.y).max(1e-300);
+        // In a cone, |σ/d_y| ≤ (|σ_axis| + kθ)/(|d_y| − θ).
+        let dy_cone = (d.y.abs() - cone).max(1e-12);
+        for (j, t) in sea.tiers.iter().enumerate() {
+            let mut info = TierOnRay { fade_min: f64::INFINITY, fade_max: f64::INFINITY, ..TierOnRay::default() };
+            let (s0, sigma, lanes) = (&mut state.s0[j], &mut state.sigma[j], &mut state.lane_bounds[j]);
+            let (fade, mask) = (&mut state.fade[j], &mut state.mask[j]);
+            if footprint_angle > 0.0 && cone == 0.0 {
+                info.fade_min = f64::INFINITY;
+                info.fade_max = 0.0;
+            }
+            for l in 0..LANES {
+                s0[l] = t.kx[l] * o.x + t.kz[l] * o.z + t.offset[l];
+                let sg = t.kx[l] * d.x + t.kz[l] * d.z;
+                sigma[l] = sg;
+                lanes[l] = (t.slope_factor[l] * sg.abs(), t.curvature_factor[l] * sg * sg);
+                let real = l < t.count as usize;
+                // Padding lanes (A = 0) count as faded out when fading, so that no weight is NaN.
+                fade[l] = if footprint_angle > 0.0 && cone == 0.0 && !real { 0.0 } else { f32::INFINITY };
+                mask[l] = 1.0;
+                let a = f64::from(t.amplitude[l]);
+                if footprint_angle > 0.0 && real {
+                    let k = t.wavenumber[l];
+                    if cone > 0.0 {
+                        // Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²)) at its smallest over the cone.
+                        let ratio = (sg.abs() + k * cone) / dy_cone;
+                        let big_t = TAU / (footprint_angle * (k * k + ratio * ratio).sqrt());
+                        if big_t < 1.5 * t_exit {
+                            mask[l] = 0.0;
+                            info.held += a;
+                            info.masked = true;
+                            continue;
+                        }
+                    } else {
+                        // Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²)): the footprint stretched by 1/|d_y|.
+                        let big_t = TAU / (footprint_angle * (k * k + sg * sg * inv_dy2).sqrt());
+                        fade[l] = big_t as f32;
+                        info.fade_min = info.fade_min.min(big_t);
+                        info.fade_max = info.fade_max.max(big_t);
+                    }
+                }
+                info.lipschitz += lanes[l].0;
+                info.curvature += lanes[l].1;
+                info.slope_error += t.slope_error_factor[l] * sg.abs();
+                info.amplitude += a;
+                info.spread += t.slope_factor[l] * t.wavenumber[l];
+            }
+            if info.fade_max == 0.0 {
+                info.fade_max = f64::INFINITY; // an empty tier never fades
+            }
+            slope_error += info.slope_error;
+            state.tier[j] = info;
+        }
+        Self { sea, state, origin: o, direction: d, t_exit, slope_error }
+    }
+}
+
+impl RayTiers for SeaTiers<'_> {
+    fn tier_count(&self) -> usize {
+        self.sea.tiers.len() + 1
+    }
+
+    fn bounds(&mut self, tier: usize, t: f64) -> TierBounds {
+        if tier == 0 {
+            let (y0, y1) = (self.origin.y + self.direction.y * t, self.origin.y + self.direction.y * self.t_exit);
+            return TierBounds { min: y0.min(y1), max: y0.max(y1), lipschitz: self.direction.y.abs(), curvature: 0.0 };
+        }
+        let j = tier - 1;
+        let info = self.state.tier[j];
+        if t >= info.fade_max {
+            return TierBounds::ZERO;
+        }
+        if info.fade_min >= 1.5 * self.t_exit {
+            // Unfaded (held lanes, if any, sit at −A: the tier is Σ nᵢ − A_held).
+            return TierBounds {
+                min: -info.amplitude - info.held,
+                max: info.amplitude - info.held,
+                lipschitz: info.lipschitz,
+                curvature: info.curvature,
+            };
+        }
+        // Faded products wᵢ·nᵢ with wᵢ non-increasing in t (footprint.rs): |wᵢnᵢ| ≤ wᵢ(t)Aᵢ,
+        // |(wᵢnᵢ)'| ≤ wᵢ(t)Lᵢ + |wᵢ'|Aᵢ, |(wᵢnᵢ)''| ≤ wᵢ(t)Kᵢ + 2|wᵢ'|Lᵢ + |wᵢ''|Aᵢ, with
+        // |wᵢ'| ≤ 4.5/t and |wᵢ''| ≤ 63/t² while fading (t ∈ [Tᵢ/1.5, Tᵢ]), 0 after.
+        let tier = &self.sea.tiers[j];
+        let (mut amp, mut lip, mut curv) = (0.0, 0.0, 0.0);
+        for l in 0..tier.count as usize {
+            let big_t = f64::from(self.state.fade[j][l]);
+            if big_t <= t {
+                continue;
+            }
+            let (a_i, (l_i, k_i)) = (f64::from(tier.amplitude[l]), self.state.lane_bounds[j][l]);
+            let w = footprint_weight(big_t, t);
+            amp += w * a_i;
+            lip += w * l_i;
+            curv += w * k_i;
+            if big_t < 1.5 * self.t_exit {
+                let tt = t.max(big_t / 1.5);
+                lip += FADE_SLOPE * a_i / tt;
+                curv += 2.0 * FADE_SLOPE * l_i / tt + FADE_CURVATURE * a_i / (tt * tt);
+            }
+        }
+        TierBounds { min: -amp, max: amp, lipschitz: lip, curvature: curv }
+    }
+
+    fn spread_lipschitz(&self, tier: usize) -> f64 {
+        if tier == 0 { 1.0 } else { self.state.tier[tier - 1].spread }
+    }
+
+    fn sample(&mut self, tier: usize, t: f64) -> TierSample {
+        if tier == 0 {
+            return TierSample { value: self.origin.y + self.direction.y * t, slope: self.direction.y, terms: 0 };
+        }
+        let j = tier - 1;
+        let info = self.state.tier[j];
+        if t >= info.fade_max {
+            return TierSample { value: 0.0, slope: 0.0, terms: 0 };
+        }
+        let w = &self.sea.tiers[j];
+        let (s0, sigma) = (&self.state.s0[j], &self.state.sigma[j]);
+        let mut s = [0.0; LANES];
+        let mut sg = [0.0f32; LANES];
+        for l in 0..LANES {
+            s[l] = s0[l] + sigma[l] * t;
+            sg[l] = sigma[l] as f32;
+        }
+        let (c, g) = profile8(reduce_phases(&s), f32x8::new(w.steepness), &w.series, w.mode);
+        let mut amp = f32x8::new(w.amplitude);
+        if info.masked {
+            amp *= f32x8::new(self.state.mask[j]);
+        }
+        // n = −w·A cos θ;  dn/dt = −w'·A cos θ + w·A sin θ σ/(1 − Q cos θ).
+        let h = amp * c;
+        let dh = amp * g * f32x8::new(sg);
+        let (value, slope, terms) = if t * 1.5 <= info.fade_min {
+            (-h.reduce_add(), dh.reduce_add(), w.count)
+        } else {
+            let tf = f32x8::splat(t as f32);
+            let x = f32x8::new(self.state.fade[j]) / tf;
+            let u = ((x - f32x8::splat(1.0)) * f32x8::splat(2.0)).max(f32x8::splat(0.0)).min(f32x8::splat(1.0));
+            let weight = u * u * (f32x8::splat(3.0) - f32x8::splat(2.0) * u);
+            let dweight = f32x8::splat(-12.0) * u * (f32x8::splat(1.0) - u) * x / tf;
+            let live = self.state.fade[j].iter().take(w.count as usize).filter(|&&f| f64::from(f) > t).count();
+            (-(weight * h).reduce_add(), (weight * dh - dweight * h).reduce_add(), live as u32)
+        };
+        TierSample { value: f64::from(value) - info.held, slope: f64::from(slope), terms }
+    }
+
+    fn error_bound(&self) -> f64 {
+        self.sea.error
+    }
+
+    fn slope_error_bound(&self) -> f64 {
+        self.slope_error
+    }
+}
+
+impl LipschitzSum for TracedTrochoids {
+    fn component_count(&self) -> usize {
+        self.waves.len() + 1
+    }
+
+    fn component(&self, i: usize, p: DVec3) -> f64 {
+        if i == 0 { p.y } else { -self.wave_height_fast(i - 1, p.x, p.z) }
+    }
+
+    fn component_lipschitz(&self, i: usize) -> f64 {
+        if i == 0 { 1.0 } else { self.waves[i - 1].0.max_slope() }
+    }
+
+    fn component_min(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
+        if i == 0 { a.y.min(b.y) } else { -self.waves[i - 1].0.amplitude() }
+    }
+
+    fn component_max(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
+        if i == 0 { a.y.max(b.y) } else { self.waves[i - 1].0.amplitude() }
+    }
+
+    /// `Lᵢ |k̂ᵢ·d̂_xz|` for a wave, `|d_y|` for `y`.
+    fn component_directional_lipschitz(&self, i: usize, d: DVec3) -> f64 {
+        if i == 0 {
+            return d.y.abs();
+        }
+        let w = &self.waves[i - 1].0;
+        let k = w.direction_vector();
+        w.max_slope() * (k.x * d.x + k.y * d.z).abs()
+    }
+
+    /// `d(−A cos θ)/dt = A sin θ/(1 − Q cos θ) · σ`, `σ = k d̂ᵢ·d̂_xz` (f32 kernel).
+    fn component_directional_derivative(&self, i: usize, p: DVec3, d: DVec3) -> Option<f64> {
+        if i == 0 {
+            return Some(d.y);
+        }
+        let (tier, lane) = self.lane_of_wave[i - 1];
+        let t = &self.tiers[tier];
+        let (_, g) =
+            profile1(t.kx[lane] * p.x + t.kz[lane] * p.z + t.offset[lane], t.steepness[lane], &t.series, lane, t.mode);
+        let sigma = t.kx[lane] * d.x + t.kz[lane] * d.z;
+        Some(f64::from(t.amplitude[lane]) * f64::from(g) * sigma)
+    }
+
+    /// `A σ²/(1 − Q)²`: `|τ''_Q| = |Q − cos θ|/(1 − Q cos θ)³ ≤ 1/(1 − Q)²` (at the crest).
+    fn component_directional_curvature(&self, i: usize, d: DVec3) -> f64 {
+        if i == 0 {
+            return 0.0;
+        }
+        let w = &self.waves[i - 1].0;
+        let sigma = w.wavenumber() * (w.direction_vector().x * d.x + w.direction_vector().y * d.z);
+        w.amplitude() * sigma * sigma / ((1.0 - w.steepness()).powi(2))
+    }
+
+    fn component_feature_size(&self, i: usize) -> f64 {
+        if i == 0 { f64::INFINITY } else { self.waves[i - 1].0.wavelength() }
+    }
+
+    /// `Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²))`: the pixel footprint on the sea is `αt` across the view and
+    /// `αt/|d_y|` along it; its extent along `k̂ᵢ` is `αt √(1 + (k̂ᵢ·d̂_xz)²/d_y²)`.
+    fn component_fade_distance(&self, i: usize, d: DVec3, footprint_angle: f64) -> f64 {
+        if i == 0 {
+            return f64::INFINITY;
+        }
+        let w = &self.waves[i - 1].0;
+        let k = w.wavenumber();
+        let sigma = k * (w.direction_vector().x * d.x + w.direction_vector().y * d.z);
+        TAU / (footprint_angle * (k * k + sigma * sigma / (d.y * d.y).max(1e-300)).sqrt())
+    }
+
+    fn value(&self, p: DVec3) -> f64 {
+        p.y - self.height(p.x, p.z)
+    }
+
+    fn zero_set_bounds(&self) -> Aabb {
+        Aabb::slab_y(-self.total_amplitude, self.total_amplitude)
+    }
+
+    fn trace_tiered(
+        &self,
+        ray: &Ray,
+        t_enter: f64,
+        t_exit: f64,
+        options: &TraceOptions,
+        stats: &mut TraceStats,
+        log: Option<&mut Vec<Step>>,
+    ) -> Option<Hit> {
+        SCRATCH.with(|cell| {
+            let mut guard = cell.borrow_mut();
+            let (scratch, state) = &mut *guard;
+            let mut tiers = SeaTiers::new(self, state, ray, t_exit, options.footprint_angle, 0.0);
+            trace_tiers_with(scratch, &mut tiers, ray, t_enter, t_exit, options, stats, log)
+        })
+    }
+
+    fn certify_cone(
+        &self,
+        ray: &Ray,
+        half_angle: f64,
+        t_enter: f64,
+        t_exit: f64,
+        options: &TraceOptions,
+        stats: &mut TraceStats,
+    ) -> f64 {
+        SCRATCH.with(|cell| {
+            let mut guard = cell.borrow_mut();
+            let (scratch, state) = &mut *guard;
+            let mut tiers = SeaTiers::new(self, state, ray, t_exit, options.footprint_angle, half_angle);
+            certify_cone_with(scratch, &mut tiers, ray, half_angle, t_enter, t_exit, options, stats)
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use proptest::prelude::*;
+
+    use super::*;
+    use crate::{FitOptions, PiersonMoskowitz, Spectrum, TrochoidSum, fit_trochoids, solve_trochoid_phase};
+
+    /// A set with mixed steepness (series and Newton modes) from the fit, `Q` overridden per wave.
+    fn set(n: usize, q_max: f64, seed: u64) -> TrochoidSet {
+        let pm = PiersonMoskowitz::from_u10(10.0).unwrap();
+        let spreading = crate::CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
+        let fit = fit_trochoids(&pm, &spreading, n, seed, &FitOptions::default()).unwrap();
+        let waves = fit
+            .waves()
+            .iter()
+            .enumerate()
+            .map(|(i, w)| {
+                let q = q_max * ((i * 37 + seed as usize) % 11) as f64 / 10.0;
+                Trochoid::new(w.amplitude(), w.wavenumber(), w.direction(), w.omega(), w.phase(), q).unwrap()
+            })
+            .collect();
+        TrochoidSet::new(waves)
+    }
+
+    /// The exact f64 value of tier `tier` along the ray at `t` (faded like the lanes).
+    fn exact_tier(sea: &TracedTrochoids, state: &RayState, ray: &Ray, tier: usize, t: f64) -> f64 {
+        if tier == 0 {
+            return ray.at(t).y;
+        }
+        let p = ray.at(t);
+        let mut sum = 0.0;
+        for (i, (w, offset)) in sea.waves.iter().enumerate() {
+            let (j, l) = sea.lane_of_wave[i];
+            if j != tier - 1 {
+                continue;
+            }
+            let k = w.wavenumber() * w.direction_vector();
+            let (_, c, _) = solve_trochoid_phase(k.x * p.x + k.y * p.z + offset, w.steepness());
+            let weight = footprint_weight(f64::from(state.fade[j][l]), t);
+            sum -= weight * state.mask[j][l] as f64 * w.amplitude() * c;
+        }
+        sum - state.tier[tier - 1].held
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+
+        /// Along random rays, every tier's samples stay within its bounds, its derivative within
+        /// its Lipschitz bound, the change of the derivative within the curvature bound, and the
+        /// f32 sample within the error bound of the exact f64 tier.
+        #[test]
+        fn tier_samples_respect_their_bounds(
+            n in 1usize..120,
+            q_max in prop_oneof![Just(0.05), Just(0.6), Just(0.99)],
+            seed in 0u64..1000,
+            dy in -0.9f64..-0.01,
+            azimuth in 0.0f64..std::f64::consts::TAU,
+            fade in prop_oneof![Just(0.0), Just(0.002), Just(0.02)],
+        ) {
+            let set = set(n, q_max, seed);
+            let sea = TracedTrochoids::new(&set, 1.3);
+            let h = (1.0 - dy * dy).sqrt();
+            let ray = Ray::new(DVec3::new(3.0, 2.0, -7.0), DVec3::new(h * azimuth.cos(), dy, h * azimuth.sin())).unwrap();
+            let t_exit = 80.0;
+            let mut state = RayState::default();
+            let mut tiers = SeaTiers::new(&sea, &mut state, &ray, t_exit, fade, 0.0);
+            let eps = tiers.error_bound();
+            let eta = tiers.slope_error_bound();
+            for j in 0..tiers.tier_count() {
+                for &t0 in &[0.5, 5.0, 30.0] {
+                    let b = tiers.bounds(j, t0);
+                    let dt = 1e-3;
+                    let mut previous: Option<(f64, f64)> = None;
+                    for i in 0..200 {
+                        let t = t0 + (t_exit - t0) * i as f64 / 200.0;
+                        let s = tiers.sample(j, t);
+                        prop_assert!(s.value >= b.min - eps && s.value <= b.max + eps, "tier {j} t {t}: {} ∉ [{}, {}]", s.value, b.min, b.max);
+                        prop_assert!(s.slope.abs() <= b.lipschitz + eta, "tier {j} t {t}: slope {} > {}", s.slope, b.lipschitz);
+                        let s2 = tiers.sample(j, t + dt);
+                        // Finite difference of the slope, with the f32 slope error over dt.
+                        let second = (s2.slope - s.slope) / dt;
+                        prop_assert!(second.abs() <= b.curvature * (1.0 + 1e-6) + 2.0 * eta / dt + 1e-9, "tier {j} t {t}: curvature {second} > {}", b.curvature);
+                        let exact = exact_tier(&sea, tiers.state, &ray, j, t);
+                        prop_assert!((s.value - exact).abs() <= eps, "tier {j} t {t}: f32 {} vs f64 {exact} (ε = {eps:e})", s.value);
+                        previous = Some((t, s.value));
+                    }
+                    let _ = previous;
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn faded_gradient_matches_the_f64_gradient_and_fades() {
+        let set = set(80, 0.6, 5);
+        let sea = TracedTrochoids::new(&set, 0.4);
+        let sum = TrochoidSum::new(&set);
+        let exact = sum.at_time(0.4);
+        let d = DVec3::new(0.9, -0.1, 0.3).normalize();
+        for i in 0..200 {
+            let (x, z) = (i as f64 * 2.37 - 200.0, i as f64 * -0.71 + 40.0);
+            let (fast, reference) = (sea.faded_gradient(x, z, d, 0.0, 10.0), exact.gradient(x, z));
+            // f32 kernel: relative 10⁻⁵ of the slope sum Σ Lᵢ (at most the largest possible slope).
+            let scale: f64 = set.waves().iter().map(Trochoid::max_slope).sum();
+            assert!((fast - reference).length() <= 1e-5 * scale, "{fast} vs {reference}");
+        }
+        // Far away every short wave has faded: the gradient loses them and the covariance gains them.
+        let near = sea.faded_slope_covariance(d, 0.002, 1.0);
+        let far = sea.faded_slope_covariance(d, 0.002, 1e6);
+        assert!(near.x.abs() < 1e-12 && far.x > 0.0 && far.z > 0.0);
+        let total: f64 = set.waves().iter().map(Trochoid::mean_square_slope).sum();
+        assert!(((far.x + far.z) - total).abs() < 1e-9 * total, "all waves faded at 1000 km");
+    }
+
+    #[test]
+    fn fast_height_matches_the_f64_surface_within_its_error_bound() {
+        for (q_max, seed) in [(0.05, 1), (0.5, 2), (0.99, 3)] {
+            let set = set(150, q_max, seed);
+            let sea = TracedTrochoids::new(&set, 0.4);
+            let sum = TrochoidSum::new(&set);
+            let exact = sum.at_time(0.4);
+            for i in 0..500 {
+                let (x, z) = (i as f64 * 1.37 - 300.0, i as f64 * -0.61 + 40.0);
+                let (fast, reference) = (sea.height(x, z), exact.height(x, z));
+                assert!((fast - reference).abs() <= sea.error_bound(), "{fast} vs {reference}");
+                let component = (1..=set.len()).map(|c| -sea.component(c, DVec3::new(x, 0.0, z))).sum::<f64>();
+                assert!((component - reference).abs() <= sea.error_bound(), "{component} vs {reference}");
+            }
+        }
+    }
+}
