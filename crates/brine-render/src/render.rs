@@ -3,7 +3,10 @@
 use brine_foam::{SprayLighting, SprayRay, SprayScattering};
 use brine_optics::{SlopeVariance, WATER_IOR, fresnel_dielectric, reflect, reflected_sun_radiance, refract};
 use brine_trace::{Aabb, LipschitzSum, Ray, TraceOptions, TraceStats, trace};
-use brine_waves::TrochoidField;
+use brine_trace::{Hit, Method};
+use brine_waves::{GerstnerField, SineField, TracedTrochoids, WaveSurface};
+
+use crate::world::Sea;
 use brine_whitecap::WHITECAP_REFLECTANCE;
 use glam::{DVec2, DVec3};
 use rand::{Rng, SeedableRng};
@@ -99,7 +102,7 @@ pub fn render_world(
     let (w, h) = (scene.camera.width, scene.camera.height);
     let spp = scene.camera.spp;
     let seed = scene.sea.seed;
-    let field = world.sea.at_time(world.time);
+    let field = SeaField::new(world);
     let mut pixels = vec![DVec3::ZERO; w as usize * h as usize];
     let mut aovs = vec![Aov::default(); w as usize * h as usize];
     let work = |pixels: &mut [DVec3], aovs: &mut [Aov]| -> TraceStats {
@@ -161,26 +164,30 @@ struct Sample {
 
 /// Radiance (linear sRGB, kcd m⁻²) arriving at the camera along the unit direction `d`, and the
 /// sample's output variables.
-fn radiance(world: &World, field: &TrochoidField<'_>, d: DVec3, stats: &mut TraceStats) -> Sample {
+fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, stats: &mut TraceStats) -> Sample {
     let origin = world.camera.position;
     let ray = Ray::new(origin, d).expect("camera rays are finite and normalised");
-    let hit = trace(field, &ray, &world.trace, stats);
+    let hit = field.trace(&ray, true, world, stats);
     if world.underwater {
         return underwater_radiance(world, field, d, hit.map(|h| (h.t, h.point)), stats);
     }
+    let faded;
     let (t, p, n, variance) = match hit {
-        Some(hit) => (hit.t, hit.point, field.normal(hit.point.x, hit.point.z), &world.variance_unresolved),
+        Some(hit) => {
+            faded = field.faded_variance(world, d, hit.t);
+            (hit.t, hit.point, field.normal(hit.point, d, hit.t, world), &faded)
+        }
         // Beyond the trace distance: the mean plane, with every wave's slopes in the BRDF.
         None if d.y < 0.0 => {
             let t = world.camera.position.y / -d.y;
             (t, origin + t * d, DVec3::Y, &world.variance_total)
         }
         None => {
-            let l = spray(world, d, f64::INFINITY, sky_radiance(world, d));
-            return Sample { radiance: l, aov: Aov { depth: f32::INFINITY, ..Aov::default() } };
+            // The sky's own aerosol is Preetham's turbidity: spray is not added to sky rays.
+            return Sample { radiance: sky_radiance(world, d), aov: Aov { depth: f32::INFINITY, ..Aov::default() } };
         }
     };
-    let shade = shade_surface(world, p, d, t, n, variance, stats);
+    let shade = shade_surface(world, field, p, d, t, n, variance, stats);
     let aov = Aov {
         depth: t as f32,
         normal: n.as_vec3().to_array(),
@@ -191,7 +198,7 @@ fn radiance(world: &World, field: &TrochoidField<'_>, d: DVec3, stats: &mut Trac
     Sample { radiance: spray(world, d, t, aerial(world, d, t, shade.radiance)), aov }
 }
 
-/// Sea spray between the eye and `t` metres along `d` (to the top of the spray for sky rays):
+/// Sea spray between the eye and the sea `t` metres along `d`:
 /// Beer–Lambert transmittance and single scattering of sun and sky light by the drops
 /// (brine-foam `SprayRay`, Darles et al. 2007 §4.2 corrected). Drops are much larger than the
 /// wavelength, so the extinction is grey; the in-scattered light takes the sun's and sky's colour.
@@ -199,13 +206,7 @@ fn spray(world: &World, d: DVec3, t: f64, l0: DVec3) -> DVec3 {
     let Some(medium) = &world.spray else { return l0 };
     let y0 = world.camera.position.y.max(0.0);
     let top = medium.params().max_height_m;
-    let (len, y1) = if t.is_finite() {
-        (t, (y0 + d.y * t).max(0.0))
-    } else if d.y > 1e-3 {
-        (((top - y0) / d.y).max(0.0), top)
-    } else {
-        (SPRAY_HORIZON_M, (y0 + d.y * SPRAY_HORIZON_M).clamp(0.0, top))
-    };
+    let (len, y1) = (t, (y0 + d.y * t).clamp(0.0, top));
     let sun = world.sky.sun();
     let scattering = SprayScattering::default();
     let lit = |sun_irradiance: f64, sky_radiance: f64| {
@@ -227,9 +228,6 @@ fn spray(world: &World, d: DVec3, t: f64, l0: DVec3) -> DVec3 {
     let sky_mean = world.sky.horizontal_irradiance_rgb() / std::f64::consts::PI;
     l0 * transmittance + sun.irradiance_rgb * in_sun + sky_mean * in_sky
 }
-
-/// Length of a horizontal sky ray through the spray (m): beyond, the sea hides the rest.
-const SPRAY_HORIZON_M: f64 = 50_000.0;
 
 /// The shading of a surface point.
 struct SurfaceShade {
@@ -314,8 +312,10 @@ fn water_column_radiance(world: &World, p: DVec3, t: DVec3, stats: &mut TraceSta
 /// Radiance leaving the sea surface toward the camera at `p`: Fresnel-weighted sky reflection, the
 /// sun through the ocean BRDF of the unresolved slopes, and the water column through `1 − F` and
 /// the `n²` radiance law (Chen et al. 2007 §3.4; Bruneton et al. 2010 §5; Darles et al. 2007 §4.3).
+#[allow(clippy::too_many_arguments)]
 fn shade_surface(
     world: &World,
+    field: &SeaField<'_>,
     p: DVec3,
     d: DVec3,
     t: f64,
@@ -356,7 +356,8 @@ fn shade_surface(
         Some(t) => water_column_radiance(world, p, t, stats),
         None => DVec3::ZERO,
     };
-    let sea = f * sky + sun + (1.0 - f) * below / (WATER_IOR * WATER_IOR) + crest_radiance(world, p, v, n, stats);
+    let sea =
+        f * sky + sun + (1.0 - f) * below / (WATER_IOR * WATER_IOR) + crest_radiance(world, field, p, v, n, stats);
     white_water(world, p, d, t, normal, sea)
 }
 
@@ -398,7 +399,7 @@ const MAX_CREST_THICKNESS_M: f64 = 8.0;
 /// Sun light through a thin crest (Jensen et al. 2001 dipole, brine-optics `crest_radiance`):
 /// the crest's thickness is the distance from `p` back along the sun's ray refracted by a level
 /// surface to where it entered the water, found by tracing inside the water with the same tracer.
-fn crest_radiance(world: &World, p: DVec3, v: DVec3, n: DVec3, stats: &mut TraceStats) -> DVec3 {
+fn crest_radiance(world: &World, field: &SeaField<'_>, p: DVec3, v: DVec3, n: DVec3, stats: &mut TraceStats) -> DVec3 {
     let Some(materials) = &world.crest else { return DVec3::ZERO };
     let sun = world.sky.sun();
     let l = sun.direction;
@@ -406,11 +407,9 @@ fn crest_radiance(world: &World, p: DVec3, v: DVec3, n: DVec3, stats: &mut Trace
         return DVec3::ZERO;
     }
     let Some(t_sun) = refract(-l, DVec3::Y, 1.0, WATER_IOR) else { return DVec3::ZERO };
-    let field = world.sea.at_time(world.time);
     let Ok(ray) = Ray::new(p - 1e-3 * n, -t_sun) else { return DVec3::ZERO };
-    let options = TraceOptions { t_max: MAX_CREST_THICKNESS_M, ..world.trace };
-    let Some(exit) = trace(&field, &ray, &options, stats) else { return DVec3::ZERO };
-    let n_entry = field.normal(exit.point.x, exit.point.z);
+    let Some(exit) = field.trace_within(&ray, MAX_CREST_THICKNESS_M, world, stats) else { return DVec3::ZERO };
+    let n_entry = field.normal(exit.point, -t_sun, 0.0, world);
     let cos_i = l.dot(n_entry);
     if cos_i <= 0.0 {
         return DVec3::ZERO;
@@ -437,7 +436,7 @@ fn water_background(world: &World, z: f64) -> DVec3 {
 /// background radiance at the camera's depth (single-scattering equilibrium approximation).
 fn underwater_radiance(
     world: &World,
-    field: &TrochoidField<'_>,
+    field: &SeaField<'_>,
     d: DVec3,
     surface: Option<(f64, DVec3)>,
     stats: &mut TraceStats,
@@ -446,7 +445,7 @@ fn underwater_radiance(
     let z_cam = -origin.y;
     let background = water_background(world, z_cam);
     let (s, source, aov) = if let Some((t, p)) = surface {
-        let n = field.normal(p.x, p.z);
+        let n = field.normal(p, d, t, world);
         let cos_i = d.dot(n).abs();
         let fw = fresnel_dielectric(cos_i, WATER_IOR, 1.0);
         let above = match refract(d, n, WATER_IOR, 1.0) {
@@ -463,4 +462,76 @@ fn underwater_radiance(
     };
     let transmittance = (-world.water.c * s).exp();
     Sample { radiance: source * transmittance + background * (DVec3::ONE - transmittance), aov }
+}
+
+/// The sea surface of a frame, ready to trace.
+pub(crate) enum SeaField<'a> {
+    /// Trochoid sum by the tiered tracer with footprint fading.
+    Traced(&'a TracedTrochoids),
+    /// Gerstner sum by directional sphere tracing.
+    Gerstner(GerstnerField<'a>, &'a brine_waves::GerstnerSurface),
+    /// Sine waves by directional sphere tracing.
+    Sine(SineField<'a>, &'a brine_waves::SineSet),
+}
+
+impl<'a> SeaField<'a> {
+    fn new(world: &'a World) -> Self {
+        match &world.sea {
+            Sea::Trochoids(t) => SeaField::Traced(t),
+            Sea::Gerstner(g) => SeaField::Gerstner(g.at_time(world.time), g),
+            Sea::Sine(s) => SeaField::Sine(s.at_time(world.time), s),
+        }
+    }
+
+    /// Traces a primary (`footprint = true`: waves fade with the pixel footprint) or secondary ray.
+    fn trace(&self, ray: &Ray, footprint: bool, world: &World, stats: &mut TraceStats) -> Option<Hit> {
+        match self {
+            SeaField::Traced(t) => {
+                let angle = if footprint { world.camera.pixel_angle() } else { 0.0 };
+                let options = TraceOptions { method: Method::Tiered, footprint_angle: angle, ..world.trace };
+                trace(*t, ray, &options, stats)
+            }
+            SeaField::Gerstner(f, _) => trace(f, ray, &world.trace, stats),
+            SeaField::Sine(f, _) => trace(f, ray, &world.trace, stats),
+        }
+    }
+
+    /// Traces a secondary ray up to `t_max` metres.
+    fn trace_within(&self, ray: &Ray, t_max: f64, world: &World, stats: &mut TraceStats) -> Option<Hit> {
+        let options = TraceOptions { t_max, ..world.trace };
+        match self {
+            SeaField::Traced(t) => trace(*t, ray, &TraceOptions { method: Method::Tiered, ..options }, stats),
+            SeaField::Gerstner(f, _) => trace(f, ray, &options, stats),
+            SeaField::Sine(f, _) => trace(f, ray, &options, stats),
+        }
+    }
+
+    /// Upward unit normal of the surface as drawn at `p`, hit `t` metres along `d` (the faded
+    /// waves of a primary ray are left out; `t = 0` keeps every wave).
+    fn normal(&self, p: DVec3, d: DVec3, t: f64, world: &World) -> DVec3 {
+        let g = match self {
+            SeaField::Traced(s) => {
+                let angle = if t > 0.0 { world.camera.pixel_angle() } else { 0.0 };
+                s.faded_gradient(p.x, p.z, d, angle, t)
+            }
+            SeaField::Gerstner(_, s) => s.gradient(p.x, p.z, world.time),
+            SeaField::Sine(_, s) => return s.normal(p.x, p.z, world.time),
+        };
+        DVec3::new(-g.x, 1.0, -g.y).normalize()
+    }
+
+    /// The BRDF slope variances at a hit `t` along `d`: the unresolved waves' plus those the tracer
+    /// faded (Bruneton et al. 2010's seamless transition), in the wind frame.
+    fn faded_variance(&self, world: &World, d: DVec3, t: f64) -> SlopeVariance {
+        let SeaField::Traced(s) = self else { return world.variance_unresolved };
+        let c = s.faded_slope_covariance(d, world.camera.pixel_angle(), t);
+        if c == DVec3::ZERO {
+            return world.variance_unresolved;
+        }
+        let (wx, wz) = (world.wind.x, world.wind.z);
+        let along = c.x * wx * wx + 2.0 * c.y * wx * wz + c.z * wz * wz;
+        let across = c.x * wz * wz - 2.0 * c.y * wx * wz + c.z * wx * wx;
+        let v = &world.variance_unresolved;
+        SlopeVariance::new(v.sigma_x2() + along.max(0.0), v.sigma_y2() + across.max(0.0)).unwrap_or(*v)
+    }
 }

@@ -10,10 +10,11 @@ use brine_optics::{
     fresnel_dielectric, hemispherical_fresnel_reflectance,
 };
 use brine_sky::{CloudParams, MoonParams, Sky, SkyParams};
-use brine_trace::{LipschitzSum, Method, TraceOptions};
+use brine_trace::{Method, TraceOptions};
 use brine_waves::{
-    CosineSquared, CosineTwoS, Directions, DonelanBanner, Elfouhaily, FitOptions, Jonswap, Phillips, PiersonMoskowitz,
-    SeaComponent, Spectrum, Spreading, SteepnessLimit, Tma, Trochoid, TrochoidSet, TrochoidSum, fit_sea_state,
+    CosineSquared, CosineTwoS, Directions, DonelanBanner, Elfouhaily, FitOptions, GerstnerSurface, Jonswap, Phillips,
+    PiersonMoskowitz, SeaComponent, SineSet, Spectrum, Spreading, SteepnessLimit, Tma, TracedTrochoids, Trochoid,
+    TrochoidSet, TrochoidSum, WaveSurface, fit_sea_state,
 };
 use brine_whitecap::{
     Calibration, CalibrationOptions, ErfMethod, FootprintFilter, JacobianStatistics, whitecap_coverage,
@@ -23,7 +24,9 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 use crate::camera::{Camera, direction_from_bearing};
-use crate::scene::{FloorConfig, Scene, SeaConfig, SkyConfig, SpectrumKind, SpreadingKind, SunModelKind, SwellConfig};
+use crate::scene::{
+    FloorConfig, Scene, SeaConfig, SkyConfig, SpectrumKind, SpreadingKind, SunModelKind, SurfaceKind, SwellConfig,
+};
 
 /// Why a scene could not be turned into models.
 #[derive(Debug, thiserror::Error)]
@@ -38,7 +41,7 @@ pub struct World {
     /// The fitted wave set.
     pub set: TrochoidSet,
     /// The traced surface.
-    pub sea: TrochoidSum,
+    pub sea: Sea,
     /// Time of the frame (s).
     pub time: f64,
     /// Sky, sun, moon, clouds and aerial perspective, for any sun elevation.
@@ -121,6 +124,32 @@ pub fn log_average_luminance_cd_m2(pixels: &[DVec3]) -> f64 {
         })
         .sum();
     (sum / pixels.len() as f64).exp()
+}
+
+/// Waves shorter than this are not drawn as geometry by the sine surface of Chen et al.: they only
+/// perturb its normals (m).
+pub const SINE_DETAIL_WAVELENGTH_M: f64 = 4.0;
+
+/// The sea surface a scene traces.
+pub enum Sea {
+    /// Darles et al.'s trochoid sum, laid out for the tiered tracer (brine-waves
+    /// `TracedTrochoids`).
+    Trochoids(TracedTrochoids),
+    /// The true Gerstner sum.
+    Gerstner(GerstnerSurface),
+    /// Chen et al.'s sine waves with normal-perturbing detail waves.
+    Sine(SineSet),
+}
+
+impl Sea {
+    /// Height of the surface above `(x, z)` at time `t` (m).
+    pub fn height(&self, x: f64, z: f64, t: f64) -> f64 {
+        match self {
+            Sea::Trochoids(s) => s.height(x, z),
+            Sea::Gerstner(s) => s.height(x, z, t),
+            Sea::Sine(s) => s.height(x, z, t),
+        }
+    }
 }
 
 /// Share of Monahan's whitecap coverage drawn as active whitecaps (Dupuy & Bruneton) when foam
@@ -359,7 +388,11 @@ impl World {
         let wind_angle = s.wind_direction_deg.to_radians();
         let wind = DVec3::new(wind_angle.cos(), 0.0, wind_angle.sin());
         let set = fit_sea(s)?;
-        let sea = TrochoidSum::new(&set);
+        let sea = match s.surface {
+            SurfaceKind::Trochoids => Sea::Trochoids(TracedTrochoids::new(&set, s.time_s)),
+            SurfaceKind::Gerstner => Sea::Gerstner(GerstnerSurface::new(&set).map_err(|e| model(&e))?),
+            SurfaceKind::Sine => Sea::Sine(SineSet::split_at_wavelength(&set, SINE_DETAIL_WAVELENGTH_M)),
+        };
 
         let k = &scene.sky;
         let (sun_dir, sun_distance_au, moon) = sun_and_moon(scene)?;
@@ -504,7 +537,8 @@ impl World {
             illuminance_lx: e_horizontal * 1000.0,
         };
         let mut world = world;
-        world.underwater = world.sea.at_time(world.time).value(camera.position) < 0.0;
+        let c = camera.position;
+        world.underwater = c.y < world.sea.height(c.x, c.z, world.time);
         Ok(world)
     }
 }
