@@ -11,7 +11,8 @@ fn one_and_two_threads_write_identical_files() {
     let dir = tempfile::tempdir().unwrap();
     let mut bytes = Vec::new();
     for threads in [1, 2] {
-        let frame = render(&scene, &RenderOptions { threads: Some(threads) }, &|| {}).unwrap();
+        let frame =
+            render(&scene, &RenderOptions { threads: Some(threads), ..RenderOptions::default() }, &|| {}).unwrap();
         for ext in ["png", "exr"] {
             let path = dir.path().join(format!("t{threads}.{ext}"));
             write_image(&path, frame.width, frame.height, &frame.pixels, frame.exposure_ev).unwrap();

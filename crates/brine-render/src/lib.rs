@@ -28,6 +28,6 @@ pub mod tonemap;
 mod world;
 
 pub use output::{OutputError, OutputFormat, write_frame, write_image};
-pub use render::{Aov, Frame, RenderError, RenderOptions, render, render_world};
+pub use render::{Aov, Frame, RenderError, RenderOptions, Stage, StageTimes, render, render_world};
 pub use scene::{Scene, SceneError};
 pub use world::{World, WorldError, auto_exposure_ev};

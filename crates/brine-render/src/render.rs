@@ -21,6 +21,84 @@ use crate::world::{World, WorldError};
 pub struct RenderOptions {
     /// Worker threads; `None` uses all cores. The image does not depend on it.
     pub threads: Option<usize>,
+    /// Measure the time spent in each stage ([`Frame::stages`]); costs a few percent.
+    pub profile: bool,
+}
+
+/// Stages of the per-pixel work, as in Darles et al.'s Table 3.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stage {
+    /// Primary ray–surface intersection.
+    Trace,
+    /// Fresnel, sky reflection, sun and moon through the BRDF.
+    Surface,
+    /// The water column under the surface (Darles Eq. 8–11) with the floor.
+    Water,
+    /// Light through thin crests (dipole, with its trace inside the water).
+    Subsurface,
+    /// Foam and whitecaps.
+    WhiteWater,
+    /// Aerial perspective and spray along the camera ray.
+    Atmosphere,
+    /// Sky seen directly (rays that miss the sea).
+    Sky,
+}
+
+/// Seconds of thread time spent per stage, summed over all threads.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct StageTimes {
+    /// Seconds per [`Stage`], in declaration order.
+    pub seconds: [f64; 7],
+    /// Glare and exposure after the pixels (wall-clock seconds).
+    pub post_s: f64,
+}
+
+impl StageTimes {
+    /// The stages with their names, in order.
+    pub fn named(&self) -> [(&'static str, f64); 8] {
+        let s = &self.seconds;
+        [
+            ("ray-surface intersection", s[0]),
+            ("surface (Fresnel, sky, sun glint)", s[1]),
+            ("water column and floor", s[2]),
+            ("sub-surface (crests)", s[3]),
+            ("foam and whitecaps", s[4]),
+            ("aerial perspective and spray", s[5]),
+            ("sky", s[6]),
+            ("glare and exposure", self.post_s),
+        ]
+    }
+}
+
+/// Per-row counters: tracer statistics of primary and secondary rays, and stage times.
+pub(crate) struct Counters {
+    primary: TraceStats,
+    secondary: TraceStats,
+    times: Option<StageTimes>,
+}
+
+impl Counters {
+    fn new(profile: bool) -> Self {
+        Self {
+            primary: TraceStats::default(),
+            secondary: TraceStats::default(),
+            times: profile.then(StageTimes::default),
+        }
+    }
+
+    /// Starts a timer when profiling.
+    #[inline]
+    fn clock(&self) -> Option<std::time::Instant> {
+        self.times.map(|_| std::time::Instant::now())
+    }
+
+    /// Adds the time since `started` to `stage`.
+    #[inline]
+    fn lap(&mut self, stage: Stage, started: Option<std::time::Instant>) {
+        if let (Some(t), Some(s)) = (self.times.as_mut(), started) {
+            t.seconds[stage as usize] += s.elapsed().as_secs_f64();
+        }
+    }
 }
 
 /// Arbitrary output variables of a pixel, taken from its first sample.
@@ -51,6 +129,10 @@ pub struct Frame {
     pub aovs: Vec<Aov>,
     /// Tracer counters over all primary rays.
     pub stats: TraceStats,
+    /// Tracer counters of the secondary rays (floor, crests).
+    pub secondary_stats: TraceStats,
+    /// Time per stage, when profiled.
+    pub stages: Option<StageTimes>,
     /// Exposure to display the frame with (EV₁₀₀).
     pub exposure_ev: f64,
 }
@@ -105,13 +187,13 @@ pub fn render_world(
     let field = SeaField::new(world);
     let mut pixels = vec![DVec3::ZERO; w as usize * h as usize];
     let mut aovs = vec![Aov::default(); w as usize * h as usize];
-    let work = |pixels: &mut [DVec3], aovs: &mut [Aov]| -> TraceStats {
+    let work = |pixels: &mut [DVec3], aovs: &mut [Aov]| -> Counters {
         pixels
             .par_chunks_mut(w as usize)
             .zip(aovs.par_chunks_mut(w as usize))
             .enumerate()
             .map(|(y, (row, aov_row))| {
-                let mut stats = TraceStats::default();
+                let mut cx = Counters::new(options.profile);
                 for (x, (out, aov)) in row.iter_mut().zip(aov_row.iter_mut()).enumerate() {
                     let index = y as u64 * u64::from(w) + x as u64;
                     let mut rng = ChaCha8Rng::seed_from_u64(pixel_seed(seed, index));
@@ -119,24 +201,33 @@ pub fn render_world(
                     for s in 0..spp {
                         let (jx, jy) = if spp == 1 { (0.5, 0.5) } else { (rng.random::<f64>(), rng.random::<f64>()) };
                         let d = world.camera.direction(x as f64 + jx, y as f64 + jy);
-                        let before = stats.evaluations;
-                        let sample = radiance(world, &field, d, &mut stats);
+                        let before = cx.primary.evaluations;
+                        let sample = radiance(world, &field, d, &mut cx);
                         if s == 0 {
-                            *aov = Aov { evaluations: (stats.evaluations - before) as f32, ..sample.aov };
+                            *aov = Aov { evaluations: (cx.primary.evaluations - before) as f32, ..sample.aov };
                         }
                         sum += sample.radiance;
                     }
                     *out = sum / f64::from(spp);
                 }
                 on_row();
-                stats
+                cx
             })
-            .reduce(TraceStats::default, |mut a, b| {
-                a.merge(&b);
-                a
-            })
+            .reduce(
+                || Counters::new(options.profile),
+                |mut a, b| {
+                    a.primary.merge(&b.primary);
+                    a.secondary.merge(&b.secondary);
+                    if let (Some(x), Some(y)) = (a.times.as_mut(), b.times) {
+                        for (u, v) in x.seconds.iter_mut().zip(y.seconds) {
+                            *u += v;
+                        }
+                    }
+                    a
+                },
+            )
     };
-    let stats = match options.threads {
+    let counters = match options.threads {
         None => work(&mut pixels, &mut aovs),
         Some(n) => rayon::ThreadPoolBuilder::new()
             .num_threads(n)
@@ -144,6 +235,7 @@ pub fn render_world(
             .map_err(|e| RenderError::Threads { threads: n, message: e.to_string() })?
             .install(|| work(&mut pixels, &mut aovs)),
     };
+    let post = std::time::Instant::now();
     let exposure_ev = world.exposure_ev.unwrap_or_else(|| {
         let l = crate::world::log_average_luminance_cd_m2(&pixels);
         (crate::world::auto_exposure_ev(l, world.illuminance_lx) - world.exposure_compensation_ev).clamp(-10.0, 30.0)
@@ -153,7 +245,20 @@ pub fn render_world(
         crate::glare::Glare::new(w as usize, h as usize, world.camera.pixel_angle())
             .apply(&mut pixels, crate::glare::GLARE_CLIP_WHITES * white);
     }
-    Ok(Frame { width: w, height: h, pixels, aovs, stats, exposure_ev })
+    let stages = counters.times.map(|mut t| {
+        t.post_s = post.elapsed().as_secs_f64();
+        t
+    });
+    Ok(Frame {
+        width: w,
+        height: h,
+        pixels,
+        aovs,
+        stats: counters.primary,
+        secondary_stats: counters.secondary,
+        stages,
+        exposure_ev,
+    })
 }
 
 /// What one camera sample returns.
@@ -164,12 +269,14 @@ struct Sample {
 
 /// Radiance (linear sRGB, kcd m⁻²) arriving at the camera along the unit direction `d`, and the
 /// sample's output variables.
-fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, stats: &mut TraceStats) -> Sample {
+fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, cx: &mut Counters) -> Sample {
     let origin = world.camera.position;
     let ray = Ray::new(origin, d).expect("camera rays are finite and normalised");
-    let hit = field.trace(&ray, true, world, stats);
+    let started = cx.clock();
+    let hit = field.trace(&ray, true, world, &mut cx.primary);
+    cx.lap(Stage::Trace, started);
     if world.underwater {
-        return underwater_radiance(world, field, d, hit.map(|h| (h.t, h.point)), stats);
+        return underwater_radiance(world, field, d, hit.map(|h| (h.t, h.point)), cx);
     }
     let faded;
     let (t, p, n, variance) = match hit {
@@ -178,16 +285,19 @@ fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, stats: &mut TraceStat
             (hit.t, hit.point, field.normal(hit.point, d, hit.t, world), &faded)
         }
         // Beyond the trace distance: the mean plane, with every wave's slopes in the BRDF.
-        None if d.y < 0.0 => {
+        None if d.y < 0.0 && world.camera.position.y / -d.y < horizon_distance(world.camera.position.y) => {
             let t = world.camera.position.y / -d.y;
             (t, origin + t * d, DVec3::Y, &world.variance_total)
         }
         None => {
             // The sky's own aerosol is Preetham's turbidity: spray is not added to sky rays.
-            return Sample { radiance: sky_radiance(world, d), aov: Aov { depth: f32::INFINITY, ..Aov::default() } };
+            let started = cx.clock();
+            let l = sky_radiance(world, d);
+            cx.lap(Stage::Sky, started);
+            return Sample { radiance: l, aov: Aov { depth: f32::INFINITY, ..Aov::default() } };
         }
     };
-    let shade = shade_surface(world, field, p, d, t, n, variance, stats);
+    let shade = shade_surface(world, field, p, d, t, n, variance, cx);
     let aov = Aov {
         depth: t as f32,
         normal: n.as_vec3().to_array(),
@@ -195,7 +305,21 @@ fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, stats: &mut TraceStat
         whitecap: shade.whitecap as f32,
         ..Aov::default()
     };
-    Sample { radiance: spray(world, d, t, aerial(world, d, t, shade.radiance)), aov }
+    let started = cx.clock();
+    let l = spray(world, d, t, aerial(world, d, t, shade.radiance));
+    cx.lap(Stage::Atmosphere, started);
+    Sample { radiance: l, aov }
+}
+
+/// Mean radius of the Earth (m).
+const EARTH_RADIUS_M: f64 = 6.371e6;
+
+/// Distance to the sea horizon from a height `h` above the sea, `√(2Rh + h²)` (m): the Earth's
+/// curvature hides the sea beyond it, so rays that would meet the mean plane farther away see the
+/// sky just above the horizon.
+fn horizon_distance(h: f64) -> f64 {
+    let h = h.max(0.01);
+    (2.0 * EARTH_RADIUS_M * h + h * h).sqrt()
 }
 
 /// Sea spray between the eye and the sea `t` metres along `d`:
@@ -283,27 +407,35 @@ impl<S: LipschitzSum> LipschitzSum for Lowered<'_, S> {
 }
 
 /// Where a ray through the water from `p` along the unit `d` meets the floor: `(distance, point)`.
-fn floor_hit(world: &World, p: DVec3, d: DVec3, stats: &mut TraceStats) -> Option<(f64, DVec3)> {
+fn floor_hit(world: &World, p: DVec3, d: DVec3, cx: &mut Counters) -> Option<(f64, DVec3)> {
     let floor = world.floor.as_ref()?;
     let field = floor.shape.at_time(0.0);
     let lowered = Lowered { inner: &field, depth: floor.depth };
     let ray = Ray::new(p, d).ok()?;
     let options = TraceOptions { t_max: 50.0 * floor.depth + 100.0, ..world.trace };
-    trace(&lowered, &ray, &options, stats).map(|h| (h.t, h.point))
+    trace(&lowered, &ray, &options, &mut cx.secondary).map(|h| (h.t, h.point))
 }
 
-/// Radiance leaving the floor at `point` (Lambertian, lit by `E_d` attenuated down to its depth).
+/// Radiance leaving the floor at `point`: Lambertian, lit by the diffuse part of `E_d` and by the
+/// refracted sun on the floor's own slope (`n_f·(−t)/(−t_y)` times its horizontal irradiance),
+/// both attenuated by `e^{−K_d z}` down to its depth (brine-optics `lambertian_floor_radiance`).
 fn floor_radiance(world: &World, point: DVec3) -> DVec3 {
     let floor = world.floor.as_ref().expect("floor_radiance needs a floor");
-    world.water.lambertian_floor_radiance(floor.albedo, world.e_below, (-point.y).max(0.0))
+    let depth = (-point.y).max(0.0);
+    let n = floor.shape.at_time(0.0).normal(point.x, point.z);
+    let t = world.sun_below;
+    let slope_gain = (n.dot(-t)).max(0.0) / (-t.y).max(1e-3);
+    let direct = world.e_below_direct * slope_gain;
+    let diffuse = world.e_below - world.e_below_direct;
+    world.water.lambertian_floor_radiance(floor.albedo, direct + diffuse, depth)
 }
 
 /// Upwelling radiance just below the surface along the downward refracted ray `t` from the
 /// surface point `p`: Darles et al. 2007 Eq. 8–11 (corrected, equation sheet §7) with the floor
 /// traced by the same sphere tracer.
-fn water_column_radiance(world: &World, p: DVec3, t: DVec3, stats: &mut TraceStats) -> DVec3 {
+fn water_column_radiance(world: &World, p: DVec3, t: DVec3, cx: &mut Counters) -> DVec3 {
     let cos_theta = (-t.y).clamp(0.0, 1.0);
-    match floor_hit(world, p, t, stats) {
+    match floor_hit(world, p, t, cx) {
         Some((s, q)) => world.water.refracted_ray_radiance(world.e_below, cos_theta, s, floor_radiance(world, q)),
         None => world.water.refracted_ray_radiance(world.e_below, cos_theta, f64::INFINITY, DVec3::ZERO),
     }
@@ -321,8 +453,9 @@ fn shade_surface(
     t: f64,
     normal: DVec3,
     variance: &SlopeVariance,
-    stats: &mut TraceStats,
+    cx: &mut Counters,
 ) -> SurfaceShade {
+    let started = cx.clock();
     let v = -d;
     // Grazing views can see a facet from behind; tilt its normal toward the viewer just enough.
     let mut n = normal;
@@ -352,13 +485,21 @@ fn shade_surface(
         }
     };
     let sun = glint(world.sky.sun()) + world.sky.moon().map_or(DVec3::ZERO, glint);
+    cx.lap(Stage::Surface, started);
+    let started = cx.clock();
     let below = match refract(d, n, 1.0, WATER_IOR) {
-        Some(t) => water_column_radiance(world, p, t, stats),
+        Some(t) => water_column_radiance(world, p, t, cx),
         None => DVec3::ZERO,
     };
-    let sea =
-        f * sky + sun + (1.0 - f) * below / (WATER_IOR * WATER_IOR) + crest_radiance(world, field, p, v, n, stats);
-    white_water(world, p, d, t, normal, sea)
+    cx.lap(Stage::Water, started);
+    let started = cx.clock();
+    let crest = crest_radiance(world, field, p, v, n, cx);
+    cx.lap(Stage::Subsurface, started);
+    let sea = f * sky + sun + (1.0 - f) * below / (WATER_IOR * WATER_IOR) + crest;
+    let started = cx.clock();
+    let shade = white_water(world, p, d, t, normal, sea);
+    cx.lap(Stage::WhiteWater, started);
+    shade
 }
 
 /// Foam (Darles et al. 2007 §4.1, Koepke 1984) and active whitecaps (Dupuy & Bruneton 2012) over
@@ -399,7 +540,7 @@ const MAX_CREST_THICKNESS_M: f64 = 8.0;
 /// Sun light through a thin crest (Jensen et al. 2001 dipole, brine-optics `crest_radiance`):
 /// the crest's thickness is the distance from `p` back along the sun's ray refracted by a level
 /// surface to where it entered the water, found by tracing inside the water with the same tracer.
-fn crest_radiance(world: &World, field: &SeaField<'_>, p: DVec3, v: DVec3, n: DVec3, stats: &mut TraceStats) -> DVec3 {
+fn crest_radiance(world: &World, field: &SeaField<'_>, p: DVec3, v: DVec3, n: DVec3, cx: &mut Counters) -> DVec3 {
     let Some(materials) = &world.crest else { return DVec3::ZERO };
     let sun = world.sky.sun();
     let l = sun.direction;
@@ -408,7 +549,9 @@ fn crest_radiance(world: &World, field: &SeaField<'_>, p: DVec3, v: DVec3, n: DV
     }
     let Some(t_sun) = refract(-l, DVec3::Y, 1.0, WATER_IOR) else { return DVec3::ZERO };
     let Ok(ray) = Ray::new(p - 1e-3 * n, -t_sun) else { return DVec3::ZERO };
-    let Some(exit) = field.trace_within(&ray, MAX_CREST_THICKNESS_M, world, stats) else { return DVec3::ZERO };
+    let Some(exit) = field.trace_within(&ray, MAX_CREST_THICKNESS_M, world, &mut cx.secondary) else {
+        return DVec3::ZERO;
+    };
     let n_entry = field.normal(exit.point, -t_sun, 0.0, world);
     let cos_i = l.dot(n_entry);
     if cos_i <= 0.0 {
@@ -439,7 +582,7 @@ fn underwater_radiance(
     field: &SeaField<'_>,
     d: DVec3,
     surface: Option<(f64, DVec3)>,
-    stats: &mut TraceStats,
+    cx: &mut Counters,
 ) -> Sample {
     let origin = world.camera.position;
     let z_cam = -origin.y;
@@ -455,7 +598,7 @@ fn underwater_radiance(
         // Radiance entering the water is compressed into a smaller solid angle: × n².
         let l = (1.0 - fw) * above * WATER_IOR * WATER_IOR + fw * water_background(world, 0.0);
         (t, l, Aov { depth: t as f32, normal: (-n).as_vec3().to_array(), ..Aov::default() })
-    } else if let Some((t, q)) = floor_hit(world, origin, d, stats) {
+    } else if let Some((t, q)) = floor_hit(world, origin, d, cx) {
         (t, floor_radiance(world, q), Aov { depth: t as f32, normal: [0.0, 1.0, 0.0], ..Aov::default() })
     } else {
         return Sample { radiance: background, aov: Aov { depth: f32::INFINITY, ..Aov::default() } };

@@ -58,6 +58,12 @@ pub struct World {
     pub water: WaterRgb,
     /// Downwelling irradiance just below a flat surface, `E_d(0⁻)` (klx per channel).
     pub e_below: DVec3,
+    /// The sun's (and moon's) share of `e_below` (klx per channel), arriving along
+    /// [`World::sun_below`].
+    pub e_below_direct: DVec3,
+    /// Unit direction of the sun's light refracted into the water (pointing down); straight down
+    /// when the sun has set.
+    pub sun_below: DVec3,
     /// The sea floor, if the water is not deep.
     pub floor: Option<Floor>,
     /// `true` when the camera is below the sea surface.
@@ -434,6 +440,9 @@ impl World {
         let e_horizontal = sky_e.y
             + sky.sun().irradiance_rgb.y * sky.sun().direction.y.max(0.0)
             + sky.moon().map_or(0.0, |m| m.irradiance_rgb.y * m.direction.y.max(0.0));
+        let sun_below = brine_optics::refract(-sky.sun().direction, DVec3::Y, 1.0, WATER_IOR)
+            .filter(|_| sky.sun().direction.y > 0.0)
+            .unwrap_or(DVec3::NEG_Y);
         let body = water_body_of(scene.water.water_type.as_deref(), scene.water.chlorophyll_mg_m3)
             .map_err(WorldError::Model)?;
         let water = WaterRgb::new(&body, RgbBands::SrgbAverage);
@@ -524,6 +533,8 @@ impl World {
             variance_total,
             water,
             e_below,
+            e_below_direct: discs_e,
+            sun_below,
             floor,
             underwater: false,
             crest,

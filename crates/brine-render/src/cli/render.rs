@@ -144,7 +144,7 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
             bar.set_message(format!("{:.2} Mrays/s", bar.position() as f64 * rays_per_row / secs / 1e6));
         }
     };
-    let options = RenderOptions { threads: args.threads.map(usize::from) };
+    let options = RenderOptions { threads: args.threads.map(usize::from), profile: false };
     let mut evaluations = 0.0;
     for (frame, path) in &todo {
         let mut s = scene.clone();
