@@ -61,6 +61,35 @@ fn check_golden(name: &str, scene: &Scene) {
     }
 }
 
+/// A gallery scene (`docs/gallery/NAME.toml`) at 160 × 90.
+fn gallery_scene(name: &str) -> Scene {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../docs/gallery").join(format!("{name}.toml"));
+    let mut scene = Scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+    scene.camera.width = 160;
+    scene.camera.height = 90;
+    scene
+}
+
+#[test]
+fn calm_dawn_160x90() {
+    check_golden("calm-dawn-160x90", &gallery_scene("calm-dawn"));
+}
+
+#[test]
+fn windy_noon_160x90() {
+    check_golden("windy-noon-160x90", &gallery_scene("windy-noon"));
+}
+
+#[test]
+fn coastal_floor_160x90() {
+    check_golden("coastal-floor-160x90", &gallery_scene("coastal-floor"));
+}
+
+#[test]
+fn full_moon_160x90() {
+    check_golden("full-moon-160x90", &gallery_scene("full-moon"));
+}
+
 #[test]
 fn default_scene_160x90() {
     let mut scene = Scene::default_scene();

@@ -82,9 +82,9 @@ pub fn run_sun(args: &SunArgs) -> Result<(), CliError> {
     let (alt, az) = (p.altitude.to_degrees(), p.azimuth.to_degrees());
     if args.place.json {
         let v = serde_json::json!({ "altitude_deg": alt, "azimuth_deg": az, "distance_au": p.distance_au });
-        println!("{v}");
+        super::outln!("{v}");
     } else {
-        println!("sun altitude {alt:.4}°  azimuth {az:.4}°  distance {:.6} AU", p.distance_au);
+        super::outln!("sun altitude {alt:.4}°  azimuth {az:.4}°  distance {:.6} AU", p.distance_au);
     }
     Ok(())
 }
@@ -114,11 +114,12 @@ pub fn run_moon(args: &MoonArgs) -> Result<(), CliError> {
             "phase_angle_deg": phase,
             "illuminated_fraction": p.illuminated_fraction,
         });
-        println!("{v}");
+        super::outln!("{v}");
     } else {
-        println!(
+        super::outln!(
             "moon altitude {alt:.3}°  azimuth {az:.3}°  distance {:.0} km  phase angle {phase:.2}°  illuminated {:.3}",
-            p.distance_km, p.illuminated_fraction
+            p.distance_km,
+            p.illuminated_fraction
         );
     }
     Ok(())

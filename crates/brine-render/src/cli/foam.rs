@@ -102,9 +102,9 @@ pub fn foam_json(args: &FoamArgs) -> Result<Value, CliError> {
 pub fn run_foam(args: &FoamArgs) -> Result<(), CliError> {
     let v = foam_json(args)?;
     if args.json {
-        println!("{v}");
+        super::outln!("{v}");
     } else {
-        println!(
+        super::outln!(
             "whitecap coverage W = {:.6} ({:.4} %) at U10 = {} m/s ({})",
             v["coverage"].as_f64().unwrap_or(0.0),
             100.0 * v["coverage"].as_f64().unwrap_or(0.0),
@@ -219,18 +219,18 @@ pub fn spray_json(args: &SprayArgs) -> Result<Value, CliError> {
 pub fn run_spray(args: &SprayArgs) -> Result<(), CliError> {
     let v = spray_json(args)?;
     if args.json {
-        println!("{v}");
+        super::outln!("{v}");
         return Ok(());
     }
-    println!(
+    super::outln!(
         "U10 = {} m/s: k_e(0) = {:.4e} m^-1, optical depth τ = {:.4e}",
         args.u10,
         v["extinction_m"].as_f64().unwrap_or(f64::NAN),
         v["optical_depth"].as_f64().unwrap_or(f64::NAN)
     );
-    println!("{:>12} {:>14} {:>16}", "r80 (µm)", "dF/dr", "n(r, 0)");
+    super::outln!("{:>12} {:>14} {:>16}", "r80 (µm)", "dF/dr", "n(r, 0)");
     for d in v["distribution"].as_array().into_iter().flatten() {
-        println!(
+        super::outln!(
             "{:>12.4} {:>14.5e} {:>16.5e}{}",
             d["radius_um"].as_f64().unwrap_or(f64::NAN),
             d["dF_dr"].as_f64().unwrap_or(f64::NAN),

@@ -3,7 +3,29 @@
 //! Each subcommand lives in its own module. Exit codes: 0 success, 2 bad input (usage, scene,
 //! parameter out of range), 1 failure while working (I/O).
 
+use std::io::Write;
 use std::process::ExitCode;
+
+/// Writes one line to standard output. A closed pipe (`brine fit … | head`) ends the program
+/// quietly with success, as command-line tools do; another write error ends it with code 1.
+pub(crate) fn write_stdout_line(args: std::fmt::Arguments<'_>) {
+    let mut out = std::io::stdout().lock();
+    if let Err(e) = out.write_fmt(args).and_then(|()| out.write_all(b"\n")) {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            std::process::exit(0);
+        }
+        eprintln!("error: cannot write to standard output: {e}");
+        std::process::exit(1);
+    }
+}
+
+/// `println!` that does not panic on a closed pipe (see [`write_stdout_line`]).
+macro_rules! outln {
+    ($($arg:tt)*) => {
+        $crate::cli::write_stdout_line(format_args!($($arg)*))
+    };
+}
+pub(crate) use outln;
 
 use clap::{Parser, Subcommand};
 

@@ -93,7 +93,7 @@ fn input<E: std::fmt::Display>(e: E) -> CliError {
 
 fn print_json<T: Serialize>(value: &T) -> Result<(), CliError> {
     let text = serde_json::to_string_pretty(value).map_err(|e| CliError::Failure(e.to_string()))?;
-    println!("{text}");
+    super::outln!("{text}");
     Ok(())
 }
 
@@ -131,7 +131,7 @@ fn run_fresnel(a: &FresnelArgs) -> Result<(), CliError> {
     if a.json {
         print_json(&out)
     } else {
-        println!(
+        super::outln!(
             "reflectance {:.6}  transmittance {:.6}  Schlick {:.6}{}",
             out.reflectance,
             out.transmittance,
@@ -207,10 +207,10 @@ fn run_water(a: &WaterArgs) -> Result<(), CliError> {
     if a.json {
         print_json(&out)
     } else {
-        println!("{} ({}; K_d: {})", out.water, out.iop_source, out.kd_source);
-        println!("{:>8} {:>10} {:>10} {:>10} {:>10} {:>10}", "nm", "a", "b", "b_b", "c", "K_d");
+        super::outln!("{} ({}; K_d: {})", out.water, out.iop_source, out.kd_source);
+        super::outln!("{:>8} {:>10} {:>10} {:>10} {:>10} {:>10}", "nm", "a", "b", "b_b", "c", "K_d");
         for (l, i) in out.wavelength_nm.iter().zip(&iops) {
-            println!("{l:>8.1} {:>10.5} {:>10.5} {:>10.6} {:>10.5} {:>10.5}", i.a, i.b, i.b_b, i.c, i.k_d);
+            super::outln!("{l:>8.1} {:>10.5} {:>10.5} {:>10.6} {:>10.5} {:>10.5}", i.a, i.b, i.b_b, i.c, i.k_d);
         }
         Ok(())
     }

@@ -126,7 +126,7 @@ pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
         if let Some(m) = sky.moon() {
             out["moon_irradiance_rgb_klx"] = serde_json::json!(m.irradiance_rgb.to_array());
         }
-        println!("{out}");
+        super::outln!("{out}");
     }
     if let Some(path) = &args.out {
         let n = args.size;

@@ -162,19 +162,19 @@ fn spectrum_json(args: &SpectrumArgs) -> Result<serde_json::Value, CliError> {
 pub fn run_spectrum(args: &SpectrumArgs) -> Result<(), CliError> {
     let doc = spectrum_json(args)?;
     if args.json {
-        println!("{doc}");
+        super::outln!("{doc}");
     } else {
-        println!(
+        super::outln!(
             "# {} spectrum, U10 = {} m/s: ωₚ = {:.5} rad/s, Hs = {:.4} m",
             doc["model"].as_str().unwrap_or(""),
             args.spectrum.u10,
             doc["peak_omega_rad_s"].as_f64().unwrap_or(f64::NAN),
             doc["significant_wave_height_m"].as_f64().unwrap_or(f64::NAN)
         );
-        println!("{:>14} {:>14}", "omega_rad_s", "s_m2_s_rad");
+        super::outln!("{:>14} {:>14}", "omega_rad_s", "s_m2_s_rad");
         let (w, s) = (doc["omega"].as_array(), doc["s"].as_array());
         for (w, s) in w.into_iter().flatten().zip(s.into_iter().flatten()) {
-            println!("{:>14.6} {:>14.6e}", w.as_f64().unwrap_or(f64::NAN), s.as_f64().unwrap_or(f64::NAN));
+            super::outln!("{:>14.6} {:>14.6e}", w.as_f64().unwrap_or(f64::NAN), s.as_f64().unwrap_or(f64::NAN));
         }
     }
     Ok(())
@@ -347,10 +347,10 @@ fn fit_json(args: &FitArgs) -> Result<serde_json::Value, CliError> {
 pub fn run_fit(args: &FitArgs) -> Result<(), CliError> {
     let doc = fit_json(args)?;
     if args.json {
-        println!("{doc}");
+        super::outln!("{doc}");
         return Ok(());
     }
-    println!(
+    super::outln!(
         "# {} waves fitted to {} (seed {}): Σ A²/2 = {:.5} m² (band ∫S dω = {:.5} m²), Σ Q = {:.4}",
         args.waves,
         doc["model"].as_str().unwrap_or(""),
@@ -360,9 +360,9 @@ pub fn run_fit(args: &FitArgs) -> Result<(), CliError> {
         doc["total_steepness"].as_f64().unwrap_or(f64::NAN)
     );
     let cols = ["amplitude_m", "wavelength_m", "direction_rad", "omega_rad_s", "phase_rad", "steepness"];
-    println!("{}", cols.map(|c| format!("{c:>14}")).join(" "));
+    super::outln!("{}", cols.map(|c| format!("{c:>14}")).join(" "));
     for w in doc["waves"].as_array().into_iter().flatten() {
-        println!("{}", cols.map(|c| format!("{:>14.6}", w[c].as_f64().unwrap_or(f64::NAN))).join(" "));
+        super::outln!("{}", cols.map(|c| format!("{:>14.6}", w[c].as_f64().unwrap_or(f64::NAN))).join(" "));
     }
     Ok(())
 }

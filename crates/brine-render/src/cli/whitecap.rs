@@ -192,9 +192,9 @@ pub fn whitecap_json(args: &WhitecapArgs) -> Result<Value, CliError> {
 pub fn run_whitecap(args: &WhitecapArgs) -> Result<(), CliError> {
     let v = whitecap_json(args)?;
     if args.json {
-        println!("{v}");
+        super::outln!("{v}");
     } else if v.get("u10_m_s").is_some() {
-        println!(
+        super::outln!(
             "U10 = {} m/s, {} waves: α = {:.5}, surface coverage {:.5} ± {:.5}, Monahan {:.5}",
             v["u10_m_s"],
             v["waves"],
@@ -204,7 +204,7 @@ pub fn run_whitecap(args: &WhitecapArgs) -> Result<(), CliError> {
             v["monahan_coverage"].as_f64().unwrap_or(f64::NAN)
         );
     } else {
-        println!("W = {:.8}", v["coverage"].as_f64().unwrap_or(f64::NAN));
+        super::outln!("W = {:.8}", v["coverage"].as_f64().unwrap_or(f64::NAN));
     }
     Ok(())
 }
