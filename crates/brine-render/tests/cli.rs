@@ -131,3 +131,51 @@ fn a_closed_pipe_ends_quietly() {
     assert!(!err.contains("panicked"), "{err}");
     assert_eq!(out.status.code(), Some(0));
 }
+
+#[test]
+fn a_time_lapse_needs_a_place_and_moves_the_sun() {
+    let dir = tempfile::tempdir().unwrap();
+    let root = dir.path();
+    std::fs::write(root.join("noplace.toml"), "[camera]\nwidth = 8\nheight = 6\n").unwrap();
+    let out = brine(
+        &[
+            "render",
+            "noplace.toml",
+            "--time-lapse",
+            "2024-06-21T04:00Z..2024-06-21T23:00Z",
+            "--frames",
+            "2",
+            "-o",
+            "f_#.png",
+        ],
+        root,
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--time-lapse needs a [place]"));
+    std::fs::write(
+        root.join("place.toml"),
+        "[place]\nlatitude_deg = 43.3\nlongitude_deg = 5.37\ntime_utc = \"2024-06-21T12:00:00Z\"\n[camera]\nwidth = 16\nheight = 9\n[sea]\nwaves = 4\n",
+    )
+    .unwrap();
+    let out = brine(
+        &[
+            "render",
+            "place.toml",
+            "--time-lapse",
+            "2024-06-21T10:00Z..2024-06-21T22:00Z",
+            "--frames",
+            "2",
+            "-o",
+            "f_#.png",
+            "--quiet",
+        ],
+        root,
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    // Frame 0 is late morning, frame 1 is night (22:00 UTC, after sunset in Marseille).
+    let day = image::open(root.join("f_0.png")).unwrap().to_rgb8();
+    let night = image::open(root.join("f_1.png")).unwrap().to_rgb8();
+    let mean =
+        |im: &image::RgbImage| im.pixels().map(|p| u32::from(p[0]) + u32::from(p[1]) + u32::from(p[2])).sum::<u32>();
+    assert!(mean(&day) > 2 * mean(&night), "day {} vs night {}", mean(&day), mean(&night));
+}

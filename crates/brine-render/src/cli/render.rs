@@ -33,22 +33,49 @@ pub struct RenderArgs {
     /// No progress bar and no summary.
     #[arg(short, long)]
     pub quiet: bool,
-    /// Render an animation: frames `A..B` (B excluded), frame `f` at `sea.time_s + f/fps`; the
-    /// output path must hold a run of `#` replaced by the zero-padded frame number.
+    /// Render an animation: frames `A..B` (B excluded) or a count `N` (= `0..N`), frame `f` at
+    /// `sea.time_s + f/fps`; the output path must hold a run of `#` replaced by the zero-padded
+    /// frame number.
     #[arg(long, value_parser = parse_frames)]
     pub frames: Option<(u32, u32)>,
+    /// A time-lapse `START..END` (UTC, e.g. `2024-06-21T04:00Z..2024-06-21T23:00Z`): the scene's
+    /// `[place]` time runs from START (frame 0) to END (last frame) while the waves move at the
+    /// normal rate; needs `--frames` and a `[place]`.
+    #[arg(long, value_parser = parse_time_lapse, requires = "frames")]
+    pub time_lapse: Option<(brine_ephem::Timestamp, brine_ephem::Timestamp)>,
     /// With `--frames`: skip frames whose output file already exists.
     #[arg(long, requires = "frames")]
     pub resume: bool,
 }
 
-/// Parses `A..B` with `A < B`.
+/// Parses `A..B` with `A < B`, or a count `N ≥ 1` as `0..N`.
 fn parse_frames(s: &str) -> Result<(u32, u32), String> {
-    let (a, b) = s.split_once("..").ok_or_else(|| format!("expected A..B (e.g. 0..240), got {s:?}"))?;
+    let Some((a, b)) = s.split_once("..") else {
+        let n: u32 =
+            s.trim().parse().map_err(|_| format!("expected A..B (e.g. 0..240) or a frame count, got {s:?}"))?;
+        return if n == 0 { Err("the frame count must be at least 1".into()) } else { Ok((0, n)) };
+    };
     let a: u32 = a.trim().parse().map_err(|_| format!("expected a frame number before .., got {a:?}"))?;
     let b: u32 = b.trim().parse().map_err(|_| format!("expected a frame number after .., got {b:?}"))?;
     if a >= b {
         return Err(format!("the range {a}..{b} is empty (the end is excluded)"));
+    }
+    Ok((a, b))
+}
+
+/// Parses `START..END`, two UTC instants (RFC 3339; `2024-06-21T04:00Z` is accepted too), with
+/// `START < END`.
+fn parse_time_lapse(s: &str) -> Result<(brine_ephem::Timestamp, brine_ephem::Timestamp), String> {
+    let (a, b) = s.split_once("..").ok_or_else(|| format!("expected START..END (UTC instants), got {s:?}"))?;
+    let parse = |t: &str| {
+        let t = t.trim();
+        // Accept minutes without seconds (`04:00Z`), which RFC 3339 requires.
+        let full = if t.len() == 17 && t.ends_with('Z') { format!("{}:00Z", &t[..16]) } else { t.to_owned() };
+        brine_ephem::parse_utc(&full).and_then(brine_ephem::check_range).map_err(|e| e.to_string())
+    };
+    let (a, b) = (parse(a)?, parse(b)?);
+    if a >= b {
+        return Err(format!("the time-lapse {a}..{b} is empty: START must be before END"));
     }
     Ok((a, b))
 }
@@ -145,10 +172,25 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
         }
     };
     let options = RenderOptions { threads: args.threads.map(usize::from), profile: false };
+    if args.time_lapse.is_some() && scene.place.is_none() {
+        return Err(CliError::Input(
+            "--time-lapse needs a [place] in the scene (the sun and moon follow its time)".into(),
+        ));
+    }
+    let (first, last) = args.frames.unwrap_or((0, 1));
     let mut evaluations = 0.0;
     for (frame, path) in &todo {
         let mut s = scene.clone();
         s.sea.time_s += f64::from(*frame) / scene.animation.fps;
+        if let (Some((start, end)), Some(place)) = (args.time_lapse, s.place.as_mut()) {
+            // Frame `first` at START, frame `last − 1` at END, linearly between.
+            let span = (end.as_nanosecond() - start.as_nanosecond()) as f64 * 1e-9;
+            let share = if last - first > 1 { f64::from(*frame - first) / f64::from(last - first - 1) } else { 0.0 };
+            let at = start
+                .checked_add(jiff::SignedDuration::from_secs_f64(span * share))
+                .map_err(|e| CliError::Input(format!("--time-lapse: {e}")))?;
+            place.time_utc = at.to_string();
+        }
         let frame = render(&s, &options, &on_row).map_err(|e| match e {
             RenderError::World(w) => CliError::Input(w.to_string()),
             other => CliError::Failure(other.to_string()),
@@ -189,5 +231,16 @@ mod tests {
         let p = frame_path(std::path::Path::new("a#b_##.exr"), 7).unwrap();
         assert_eq!(p, PathBuf::from("a#b_07.exr"));
         assert!(frame_path(std::path::Path::new("x.png"), 1).is_err());
+    }
+
+    #[test]
+    fn frames_are_a_range_or_a_count_and_time_lapses_are_ordered() {
+        assert_eq!(parse_frames("3..7"), Ok((3, 7)));
+        assert_eq!(parse_frames("240"), Ok((0, 240)));
+        assert!(parse_frames("0").is_err() && parse_frames("5..5").is_err() && parse_frames("x").is_err());
+        let (a, b) = parse_time_lapse("2024-06-21T04:00Z..2024-06-21T23:00:00Z").unwrap();
+        assert_eq!(b.as_second() - a.as_second(), 19 * 3600);
+        assert!(parse_time_lapse("2024-06-21T23:00Z..2024-06-21T04:00Z").is_err());
+        assert!(parse_time_lapse("yesterday..today").is_err());
     }
 }
