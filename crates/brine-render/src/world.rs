@@ -518,8 +518,8 @@ impl World {
             max_steps: 20_000,
             min_step: 1e-3,
             min_step_relative: 1e-4,
-            tolerance: 1e-4,
-            tolerance_relative: 1e-6,
+            tolerance: 1e-3,
+            tolerance_relative: 1e-5,
             ..TraceOptions::default()
         };
         let world = Self {
