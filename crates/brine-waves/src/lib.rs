@@ -98,6 +98,12 @@ mod dispersion;
 mod elfouhaily;
 mod error;
 mod fast_profile;
+mod fft;
+mod fft_frame;
+mod fft_lipschitz;
+mod fft_options;
+mod fft_resample;
+mod fft_spectrum;
 mod fit;
 mod gerstner;
 mod gerstner_lipschitz;
@@ -121,6 +127,14 @@ pub use dispersion::{Dispersion, ELFOUHAILY_K_M, SEA_WATER_DENSITY, SEA_WATER_SU
 pub use dispersion::{G, omega_deep_water, wavenumber_deep_water};
 pub use elfouhaily::{Elfouhaily, ElfouhailySpreading};
 pub use error::WaveError;
+pub use fft::{FftOcean, FftRestFields};
+pub use fft_frame::{FftCascade, FftFrame};
+pub use fft_options::{
+    FFT_CASCADE_CUT_INDEX, FFT_DEFAULT_TILE_RATIO, FFT_MAX_CASCADES, FFT_MAX_CHOPPINESS, FFT_MAX_LOOP_PERIOD_S,
+    FFT_MAX_RESOLUTION, FFT_MIN_RESOLUTION, FFT_PEAK_WAVELENGTHS_PER_TILE, FftOptions,
+};
+pub use fft_resample::FFT_MAX_SHADING_SLOPE;
+pub use fft_spectrum::directional_spectrum;
 pub use fit::{AmplitudeRule, FrequencyBin, SeaComponent, SteepnessLimit, fit_sea_state, frequency_bins};
 pub use fit::{FitOptions, FrequencyPartition, fit_trochoids};
 pub use gerstner::{GERSTNER_MAX_ITERATIONS, GERSTNER_TOLERANCE_M, GerstnerField, GerstnerSurface, Inversion};
