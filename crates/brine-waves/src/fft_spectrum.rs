@@ -80,9 +80,9 @@ const GL8: [(f64, f64); 8] = [
 ];
 
 /// Cells closer to the origin than this many cell widths (`|n|_∞`) get the 8×8 Gauss rule.
-const FINE_INDEX: f64 = 8.0;
+const FINE_INDEX: f64 = 16.0;
 /// Cells closer than this get 4×4 points; farther ones 2×2 up to [`COARSE_INDEX`], then 1.
-const MEDIUM_INDEX: f64 = 24.0;
+const MEDIUM_INDEX: f64 = 40.0;
 /// Beyond this index a cell spans less than 1/64 of its wavenumber: the midpoint rule's relative
 /// error, about `(Δk/k)²/24 ≈ 10⁻⁵` for a smooth power law, is enough.
 const COARSE_INDEX: f64 = 64.0;
@@ -93,7 +93,9 @@ const COARSE_INDEX: f64 = 64.0;
 ///
 /// `psi(kx, kz)` is `Ψ` in Cartesian wave-vector coordinates (m⁴). The rule has 8×8, 4×4, 2×2 or
 /// 1 point per piece by the cell's distance `|n|_∞` from the origin in cells (closer cells see
-/// `Ψ` vary faster across them).
+/// `Ψ` vary faster across them). Where the spreading jumps (a down-wind fold at `θ_w ± π/2`,
+/// Hasselmann's `s` at the peak) the rule loses its order; the error measured against a polar
+/// quadrature stays below `10⁻⁴` of the band (tests/fft.rs).
 pub(crate) fn cell_energy(psi: &impl Fn(f64, f64) -> f64, kx: f64, kz: f64, dk: f64, band: Band) -> f64 {
     let half = 0.5 * dk;
     let index = kx.abs().max(kz.abs()) / dk;
