@@ -1,16 +1,16 @@
 //! The FFT ocean frame as a [`brine_trace::LipschitzSum`], with one tier per cascade for the
 //! tiered method.
 //!
-//! `F(p) = y − Σ_c h̄_c(x, z)`: component 0 is `n₀ = y` (`L₀ = 1`, directional `|d_y|`), component
-//! `c + 1` is `−h̄_c(x, z)`, the bilinear interpolant of cascade `c`'s grid, with the certified
-//! bounds of [`crate::FftCascade`]: `L = maxᶜ √(aᶜ² + bᶜ²)`, directional
-//! `min(L|d_xz|, a|dₓ| + b|d_z|)`, `−max H ≤ n ≤ −min H`.
+//! `F(p) = y − Σ_c s_c(x, z)`: component 0 is `n₀ = y` (`L₀ = 1`, directional `|d_y|`, no
+//! curvature), component `c + 1` is `−s_c(x, z)`, cascade `c`'s cubic B-spline, with the certified
+//! bounds of [`crate::FftCascade`]: `L = √(a² + b²)`, directional `a|dₓ| + b|d_z|`, curvature
+//! `A dₓ² + 2C|dₓd_z| + B d_z²`, `−max c ≤ n ≤ −min c`, and its exact derivative along a ray.
 
 use std::cell::RefCell;
 
 use brine_trace::{
-    Aabb, FADE_SLOPE, Hit, LipschitzSum, Ray, RayTiers, Step, TierBounds, TierSample, TierScratch, TraceOptions,
-    TraceStats, certify_cone_with, footprint_weight, trace_tiers_with,
+    Aabb, FADE_CURVATURE, FADE_SLOPE, Hit, LipschitzSum, Ray, RayTiers, Step, TierBounds, TierSample, TierScratch,
+    TraceOptions, TraceStats, certify_cone_with, footprint_weight, footprint_weight_slope, trace_tiers_with,
 };
 use glam::DVec3;
 
@@ -32,9 +32,22 @@ impl LipschitzSum for FftFrame {
         if i == 0 { 1.0 } else { self.cascade(i - 1).max_slope() }
     }
 
-    /// `|d_y|` for `y`; `min(L|d_xz|, a|dₓ| + b|d_z|)` for a cascade.
+    /// `|d_y|` for `y`; `a|dₓ| + b|d_z|` for a cascade.
     fn component_directional_lipschitz(&self, i: usize, d: DVec3) -> f64 {
         if i == 0 { d.y.abs() } else { self.cascade(i - 1).directional_max_slope(d.x, d.z) }
+    }
+
+    /// `d_y` for `y`; `−∇s·(dₓ, d_z)` for a cascade (the spline's exact derivative).
+    fn component_directional_derivative(&self, i: usize, p: DVec3, d: DVec3) -> Option<f64> {
+        if i == 0 {
+            return Some(d.y);
+        }
+        Some(-self.cascade(i - 1).height_and_derivative(p.x, p.z, d.x, d.z).1)
+    }
+
+    /// 0 for `y`; `A dₓ² + 2C|dₓd_z| + B d_z²` for a cascade.
+    fn component_directional_curvature(&self, i: usize, d: DVec3) -> f64 {
+        if i == 0 { 0.0 } else { self.cascade(i - 1).directional_curvature(d.x, d.z) }
     }
 
     fn component_min(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
@@ -117,6 +130,8 @@ struct CascadeOnRay {
     max: f64,
     /// Directional slope bound along the ray.
     lipschitz: f64,
+    /// Directional curvature bound along the ray.
+    curvature: f64,
     /// 3-D slope bound (cones).
     spread: f64,
     /// Fade distance `T` (m), `+∞` without fading.
@@ -154,6 +169,7 @@ impl<'a> CascadeTiers<'a> {
                 min: -hi,
                 max: -lo,
                 lipschitz: cascade.directional_max_slope(d.x, d.z),
+                curvature: cascade.directional_curvature(d.x, d.z),
                 spread: cascade.max_slope(),
                 fade: if footprint_angle > 0.0 { cascade.fade_distance(d, footprint_angle) } else { f64::INFINITY },
             });
@@ -179,17 +195,17 @@ impl RayTiers for CascadeTiers<'_> {
             return TierBounds::ZERO; // faded out for good
         }
         if c.fade >= 1.5 * self.t_exit {
-            return TierBounds { min: c.min, max: c.max, lipschitz: c.lipschitz, curvature: f64::INFINITY };
+            return TierBounds { min: c.min, max: c.max, lipschitz: c.lipschitz, curvature: c.curvature };
         }
         // w·n with w ∈ [0, 1] non-increasing (brine-trace footprint.rs): |(wn)'| ≤ L + |w'| size,
-        // |w'| ≤ 4.5/t while fading.
+        // |(wn)''| ≤ K + 2|w'| L + |w''| size, |w'| ≤ 4.5/t and |w''| ≤ 63/t² while fading.
         let size = c.min.abs().max(c.max.abs());
         let tt = t.max(c.fade / 1.5);
         TierBounds {
             min: c.min.min(0.0),
             max: c.max.max(0.0),
             lipschitz: c.lipschitz + FADE_SLOPE * size / tt,
-            curvature: f64::INFINITY,
+            curvature: c.curvature + 2.0 * FADE_SLOPE * c.lipschitz / tt + FADE_CURVATURE * size / (tt * tt),
         }
     }
 
@@ -203,9 +219,10 @@ impl RayTiers for CascadeTiers<'_> {
             return TierSample { value: 0.0, slope: 0.0, terms: 0 };
         }
         let p = self.origin + t * self.direction;
-        let h = self.frame.cascade(c.cascade).height(p.x, p.z);
-        // The bilinear slope jumps across cell edges: no curvature bound, so no derivative either.
-        TierSample { value: -w * h, slope: f64::NAN, terms: 1 }
+        let d = self.direction;
+        let (h, dh) = self.frame.cascade(c.cascade).height_and_derivative(p.x, p.z, d.x, d.z);
+        // n = −w h;  dn/dt = −(w' h + w dh/dt).
+        TierSample { value: -w * h, slope: -(footprint_weight_slope(c.fade, t) * h + w * dh), terms: 1 }
     }
 
     fn spread_lipschitz(&self, tier: usize) -> f64 {

@@ -104,6 +104,7 @@ mod fft_lipschitz;
 mod fft_options;
 mod fft_resample;
 mod fft_spectrum;
+mod fft_spline;
 mod fit;
 mod gerstner;
 mod gerstner_lipschitz;

@@ -1,6 +1,7 @@
 //! The FFT ocean frame traced by `brine-trace`: every component bound of the `LipschitzSum`
-//! contract holds on random points (and the slope bound is attained), and every method returns
-//! the first sign change found by a dense march (or an earlier, real one the march skipped).
+//! contract holds on random points (and the slope bounds are close to the slopes), and every
+//! method returns the first sign change found by a dense march (or an earlier, real one the march
+//! skipped).
 
 use std::f64::consts::PI;
 use std::sync::OnceLock;
@@ -11,7 +12,7 @@ use glam::DVec3;
 use proptest::prelude::*;
 
 /// Rounding slack of the Lipschitz comparisons: `|Δn| ≤ L|Δp|(1 + REL) + ABS`. Heights are below
-/// 2 m and a bilinear evaluation rounds to a few 10⁻¹⁶ m.
+/// 2 m and a spline evaluation (16 terms) rounds to a few 10⁻¹⁶ m.
 const SLACK_REL: f64 = 1e-9;
 const SLACK_ABS: f64 = 1e-12;
 
@@ -68,6 +69,19 @@ proptest! {
             let (lo, hi) = (frame.component_min(i, p, q), frame.component_max(i, p, q));
             prop_assert!(np >= lo - SLACK_ABS && np <= hi + SLACK_ABS && nq >= lo - SLACK_ABS && nq <= hi + SLACK_ABS);
         }
+        // Derivative along d (exact) against a central difference, which is the mean of the
+        // derivative over [−h, h], within K h/2 of it; the curvature bound against a second
+        // difference (step 10⁻⁴ m; rounding 10⁻¹⁶/h² = 10⁻⁸).
+        for i in 0..frame.component_count() {
+            let h = 1e-4;
+            let (np, nm, n0) = (frame.component(i, p + h * d), frame.component(i, p - h * d), frame.component(i, p));
+            let fd = (np - nm) / (2.0 * h);
+            let k = frame.component_directional_curvature(i, d);
+            let derivative = frame.component_directional_derivative(i, p, d).unwrap();
+            prop_assert!((derivative - fd).abs() <= 0.5 * k * h + 1e-9, "component {i}: derivative {derivative} vs {fd}");
+            let second = (np - 2.0 * n0 + nm) / (h * h);
+            prop_assert!(second.abs() <= k * (1.0 + 1e-6) + 1e-6, "component {i}: curvature {second} > {k}");
+        }
         prop_assert!((sum - frame.value(p)).abs() < 1e-12);
         let h = frame.height(p.x, p.z);
         let b = frame.zero_set_bounds();
@@ -76,27 +90,26 @@ proptest! {
 }
 
 #[test]
-fn the_slope_bound_is_attained_on_the_grid() {
-    // The bound maxᶜ √(aᶜ² + bᶜ²) is the gradient of the bilinear interpolant at a cell corner
-    // (taken from inside the cell): it is exact, not merely safe.
+fn the_slope_bounds_are_close_to_the_largest_slopes() {
+    // The bounds are the largest coefficient differences; the spline's slopes reach most of them
+    // (a plane wave along an axis reaches a exactly): sampled on a grid 4× finer than the cells,
+    // they reach 72–93 % of the bounds on these 64² cascades, whose bands reach 85 % of Nyquist.
     for (_, frame) in frames() {
         for c in frame.cascades() {
             let dx = c.spacing();
             let n = c.resolution();
-            let mut best = 0.0f64;
-            for j in 0..n {
-                for i in 0..n {
-                    for (si, sj) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)] {
-                        // A point just inside the cell next to corner (i + si, j + sj).
-                        let x = (i as f64 + 0.5 + 0.499_999 * (2.0 * si - 1.0)) * dx;
-                        let z = (j as f64 + 0.5 + 0.499_999 * (2.0 * sj - 1.0)) * dx;
-                        let g = (c.directional_derivative(x, z, 1.0, 0.0), c.directional_derivative(x, z, 0.0, 1.0));
-                        best = best.max(g.0.hypot(g.1));
-                    }
+            let (a, b) = c.max_axis_slopes();
+            let (mut gx, mut gz) = (0.0f64, 0.0f64);
+            for j in 0..4 * n {
+                for i in 0..4 * n {
+                    let g = c.traced_gradient(i as f64 * 0.25 * dx, j as f64 * 0.25 * dx);
+                    gx = gx.max(g.x.abs());
+                    gz = gz.max(g.y.abs());
+                    assert!(g.length() <= c.max_slope(), "{} > {}", g.length(), c.max_slope());
                 }
             }
-            // 10⁻⁶ of a cell from the corner: the gradient there differs by at most 2·10⁻⁶ L.
-            assert!(best <= c.max_slope() && best >= c.max_slope() * (1.0 - 3e-6), "{best} vs {}", c.max_slope());
+            assert!(gx <= a && gz <= b, "({gx}, {gz}) vs ({a}, {b})");
+            assert!(gx >= 0.7 * a && gz >= 0.7 * b, "loose: ({gx}, {gz}) vs ({a}, {b})");
         }
     }
 }
