@@ -144,7 +144,8 @@ fn main() {
                 let o = FftOptions { resolution: n, ..base.clone() };
                 let ocean = FftOcean::new(&elf, &spreading, &o).expect("valid ocean");
                 let build = start.elapsed().as_secs_f64();
-                let flat = FftOcean::new(&elf, &spreading, &FftOptions { choppiness: 0.0, ..o.clone() }).expect("ocean");
+                let flat =
+                    FftOcean::new(&elf, &spreading, &FftOptions { choppiness: 0.0, ..o.clone() }).expect("ocean");
                 let time = |f: &dyn Fn(f64)| {
                     median(
                         (0..FRAMES)

@@ -154,7 +154,7 @@ pub struct FftOcean {
     dispersion: Dispersion,
 }
 
-/// Word position of the random pair of wave vector `(nₓ, n_z)`: one ChaCha block (16 words) per
+/// Word position of the random pair of wave vector `(nₓ, n_z)`: one `ChaCha` block (16 words) per
 /// pair, keyed by the zig-zag codes of the two integers.
 fn word_position(nx: i64, nz: i64) -> u128 {
     let zig = |v: i64| ((v << 1) ^ (v >> 63)) as u64 & 0xffff_ffff;
@@ -558,7 +558,12 @@ mod tests {
                 for q in 0..8 {
                     // FFT rounding: ~10⁻¹⁵ of the sum of |h̃| times the largest factor (k ≤ 0.6 rad/m
                     // here, at most 1 for D).
-                    assert!((got[q] - d[q]).abs() < 1e-12 * scale, "cascade {c} field {q} at ({i}, {j}): {} vs {}", got[q], d[q]);
+                    assert!(
+                        (got[q] - d[q]).abs() < 1e-12 * scale,
+                        "cascade {c} field {q} at ({i}, {j}): {} vs {}",
+                        got[q],
+                        d[q]
+                    );
                 }
             }
         }

@@ -137,7 +137,12 @@ impl FftOptions {
         for pair in self.tile_sizes.windows(2) {
             let r = pair[0] / pair[1];
             check("tile_ratio", r, (1.5..=max_ratio).contains(&r), "L_c/L_(c+1) in [1.5, (N/2 − 1/2)/4]")?;
-            check("tile_ratio", r, !commensurate(r), "not within 1e-3 of a fraction p/q with q ≤ 8 (tiles would realign)")?;
+            check(
+                "tile_ratio",
+                r,
+                !commensurate(r),
+                "not within 1e-3 of a fraction p/q with q ≤ 8 (tiles would realign)",
+            )?;
         }
         check("choppiness", self.choppiness, (0.0..=FFT_MAX_CHOPPINESS).contains(&self.choppiness), "[0, 4]")?;
         if let Some(t) = self.loop_period {

@@ -48,7 +48,8 @@ fn displaced_gradient(f: &FftRestFields, idx: usize, lambda: f64, jac: f64) -> (
         return (0.0, 0.0);
     }
     let slope = norm / jac.abs();
-    let scale = if slope.is_finite() && slope <= FFT_MAX_SHADING_SLOPE { 1.0 / jac } else { FFT_MAX_SHADING_SLOPE / norm };
+    let scale =
+        if slope.is_finite() && slope <= FFT_MAX_SHADING_SLOPE { 1.0 / jac } else { FFT_MAX_SHADING_SLOPE / norm };
     (px * scale, pz * scale)
 }
 

@@ -62,14 +62,7 @@ fn polar_band_integral(s: &dyn Spectrum, d: &dyn Spreading, wind: f64, lo: f64, 
 }
 
 fn options(n: usize, tiles: &[f64], choppiness: f64, seed: u64) -> FftOptions {
-    FftOptions {
-        resolution: n,
-        tile_sizes: tiles.to_vec(),
-        choppiness,
-        loop_period: None,
-        seed,
-        wind_direction: 0.3,
-    }
+    FftOptions { resolution: n, tile_sizes: tiles.to_vec(), choppiness, loop_period: None, seed, wind_direction: 0.3 }
 }
 
 /// `count` cascades from `l0` down by the default ratio.
@@ -386,7 +379,8 @@ fn the_upper_envelope_covers_every_point_of_a_folding_sea() {
     let rest = ocean.rest_fields(4.0);
     let folded: Vec<usize> =
         rest.iter().map(|f| (0..f.height.len()).filter(|&i| f.jacobian(i, 4.0) < 0.0).count()).collect();
-    let jmin: Vec<f64> = rest.iter().map(|f| (0..f.height.len()).map(|i| f.jacobian(i, 4.0)).fold(9.0, f64::min)).collect();
+    let jmin: Vec<f64> =
+        rest.iter().map(|f| (0..f.height.len()).map(|i| f.jacobian(i, 4.0)).fold(9.0, f64::min)).collect();
     assert!(folded.iter().sum::<usize>() > 0, "the test needs folds: {folded:?} {jmin:?}");
     let frame = ocean.at_time(4.0);
     for c in frame.cascades() {
@@ -401,7 +395,6 @@ fn the_upper_envelope_covers_every_point_of_a_folding_sea() {
     assert!(hi <= rest_max + 1e-6, "{hi} > {rest_max}");
     assert!(hi > 0.5 * rest_max, "{hi} vs {rest_max}");
 }
-
 
 #[test]
 fn without_choppiness_the_traced_spline_converges_to_the_trig_polynomial_at_fourth_order() {

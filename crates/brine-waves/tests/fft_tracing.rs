@@ -177,7 +177,9 @@ fn check(frame: &FftFrame, ray: &Ray, method: Method, footprint: f64) -> Result<
         }
         (None, None) => {}
         (Some(h), None) => prop_assert!(real(h.t), "{method:?}: hit {} the march did not see is not real", h.t),
-        (None, Some(r)) => prop_assert!(false, "{method:?}: missed the crossing at {r} (steps exhausted: {})", stats.exhausted),
+        (None, Some(r)) => {
+            prop_assert!(false, "{method:?}: missed the crossing at {r} (steps exhausted: {})", stats.exhausted)
+        }
     }
     Ok(())
 }

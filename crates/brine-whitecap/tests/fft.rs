@@ -49,7 +49,10 @@ fn pyramid_levels_are_block_means_of_k_and_k_squared() {
                 }
                 let area = (b * b) as f64;
                 // The texel's centre, read at exactly level l (box width 2ˡΔ = √12 s).
-                let (x, z) = ((bi * b) as f64 * dx + 0.5 * (b as f64 - 1.0) * dx, (bj * b) as f64 * dx + 0.5 * (b as f64 - 1.0) * dx);
+                let (x, z) = (
+                    (bi * b) as f64 * dx + 0.5 * (b as f64 - 1.0) * dx,
+                    (bj * b) as f64 * dx + 0.5 * (b as f64 - 1.0) * dx,
+                );
                 let (gm, gm2) = stats.cascade_moments(c, x, z, b as f64 * dx / BOX);
                 // Sums of up to 4096 f32-rounded values in f64: 10⁻¹² relative.
                 assert!((gm - m / area).abs() < 1e-12 && (gm2 - m2 / area).abs() < 1e-12, "cascade {c} level {l}");
@@ -116,7 +119,8 @@ fn calibrated_coverage_holds_on_fresh_points_at_every_footprint() {
     let fresh = 65_536;
     let mut rng = ChaCha8Rng::seed_from_u64(77);
     let tile = stats.largest_tile();
-    let points: Vec<(f64, f64)> = (0..fresh).map(|_| (rng.random::<f64>() * tile, rng.random::<f64>() * tile)).collect();
+    let points: Vec<(f64, f64)> =
+        (0..fresh).map(|_| (rng.random::<f64>() * tile, rng.random::<f64>() * tile)).collect();
     let table: Vec<(f64, f64)> = cal.table().collect();
     // The pointwise coverage is a Bernoulli mean; footprint coverages vary less. Both samples
     // err: σ = √(W(1 − W)(1/M + 1/M')).
@@ -134,7 +138,8 @@ fn calibrated_coverage_holds_on_fresh_points_at_every_footprint() {
     let quantile = sea.mu + (2.0 * sea.sigma2).sqrt() * brine_whitecap::erf_inv(2.0 * target - 1.0);
     assert!((cal.alpha_for_footprint(1e9) - quantile).abs() < 1e-6, "{} vs {quantile}", cal.alpha_for_footprint(1e9));
     // Degenerate targets.
-    let none = FftCalibration::new(stats, 0.0, &CalibrationOptions { samples: Some(256), ..Default::default() }).unwrap();
+    let none =
+        FftCalibration::new(stats, 0.0, &CalibrationOptions { samples: Some(256), ..Default::default() }).unwrap();
     assert!(none.coverage(sea, 1.0, ErfMethod::Fast).abs() < 1e-15);
     assert!(FftCalibration::new(stats, 1.5, &CalibrationOptions::default()).is_err());
 }
