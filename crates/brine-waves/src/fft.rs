@@ -144,6 +144,26 @@ impl FftRestFields {
 /// wave vector and four complex `N × N` inverse FFTs per cascade (the eight real fields packed
 /// two by two), in parallel over the cascades (rayon); see `docs/benchmarks.md`.
 ///
+/// # Example
+///
+/// ```
+/// use brine_trace::{Method, Ray, TraceOptions, TraceStats, trace};
+/// use brine_waves::{Directions, Elfouhaily, FftOcean, FftOptions};
+/// use glam::DVec3;
+///
+/// let sea = Elfouhaily::from_fetch(10.0, 1e5)?;
+/// let options = FftOptions { resolution: 64, ..FftOptions::for_spectrum(&sea, 2) };
+/// let ocean = FftOcean::new(&sea, &sea.spreading(Directions::Downwind), &options)?;
+/// let frame = ocean.at_time(12.5);
+/// let (lo, hi) = frame.height_bounds();
+/// assert!(lo <= frame.height(3.0, -2.0) && frame.height(3.0, -2.0) <= hi);
+/// // The frame is a brine_trace::LipschitzSum: trace it like any other sea.
+/// let ray = Ray::new(DVec3::new(0.0, 10.0, 0.0), DVec3::new(1.0, -0.2, 0.3)).unwrap();
+/// let hit = trace(&frame, &ray, &TraceOptions { method: Method::Tiered, ..TraceOptions::default() }, &mut TraceStats::default());
+/// assert!(hit.is_some());
+/// # Ok::<(), brine_waves::WaveError>(())
+/// ```
+///
 /// # References
 /// Tessendorf J. 2001, "Simulating Ocean Water", SIGGRAPH course notes, §3.3–4.6; Li Ying et al.
 /// 2018, §2.2; Dupuy J., Bruneton E. 2012 (cascades, Jacobian); equation sheet §4, §10.

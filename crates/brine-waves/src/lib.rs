@@ -21,6 +21,12 @@
 //!   inversion of the horizontal displacement), [`SineSet`] (Chen et al.'s sinusoids with
 //!   perturbed normals). Their time-frozen fields [`TrochoidField`], [`GerstnerField`] and
 //!   [`SineField`] implement [`brine_trace::LipschitzSum`] for the sphere tracer.
+//! - **FFT ocean** ([`FftOcean`]; Tessendorf 2001, as Li Ying et al. 2018 §2.2 synthesise it): random
+//!   amplitudes of any spectrum and spreading on periodic cascades of tiles (seeded by wave vector,
+//!   so a finer grid keeps the large waves; exact looping), inverse FFTs of heights, slopes, choppy
+//!   displacement and its Jacobian; its frames [`FftFrame`] (each cascade's displaced surface
+//!   resampled on its grid and traced as a cubic B-spline with certified bounds) implement
+//!   [`brine_trace::LipschitzSum`].
 //!
 //! ## Notation
 //!
