@@ -39,6 +39,11 @@ const BENCHES: &[(&str, &str, &[&str])] = &[
         &["bench", "-p", "brine-whitecap", "--bench", "whitecap", "--", "whitecap/"],
     ),
     (
+        "whitecap-fft",
+        "FFT ocean whitecaps: mip pyramids per frame, footprint moments per pixel, calibration of α (example)",
+        &["run", "--release", "-p", "brine-whitecap", "--example", "fft_whitecap_cost"],
+    ),
+    (
         "foam",
         "per-pixel foam amount, foam history, spray ray segments, spray medium construction (criterion)",
         &["bench", "-p", "brine-foam", "--bench", "foam"],
