@@ -9,6 +9,8 @@
 //!   choppiness 1; medians of 9 frames at successive times, with 1 and 2 rayon threads. "FFT
 //!   only" is `rest_fields` (sincos per wave vector and 4 complex inverse FFTs per cascade);
 //!   "frame" is `at_time` (the same, then the choppy resampling and the certified bounds).
+//! - Shading lookups: the traced height (4 splines), the shading gradient (4 bilinear lookups),
+//!   and the mip-mapped slope moments over a footprint, per call, one thread.
 //! - Tracing: cameras at 2 m (grazing), 10 m toward the horizon and 50 m looking down 50°,
 //!   640×480 pixels of 50° vertical field, every 4th pixel in x and y (19 200 rays), one thread,
 //!   the renderer's trace options. Matched detail: the trochoid fit covers `0.5–12 ω_p`
@@ -21,7 +23,8 @@ use std::time::Instant;
 
 use brine_trace::{LipschitzSum, Method, Ray, TraceOptions, TraceStats, trace};
 use brine_waves::{
-    Directions, Elfouhaily, FftFrame, FftOcean, FftOptions, FitOptions, Spectrum, TracedTrochoids, fit_trochoids,
+    Directions, Elfouhaily, FftFrame, FftOcean, FftOptions, FftSlopeFilter, FitOptions, Spectrum, TracedTrochoids,
+    fit_trochoids,
 };
 use glam::DVec3;
 
@@ -172,8 +175,59 @@ fn main() {
     }
     println!();
 
-    // ---------------------------------------------------------------- tracing
+    // ---------------------------------------------------------------- shading lookups
+    println!("## Shading lookups (one thread)");
+    println!();
+    println!("| N | `FftSlopeFilter::new` (per frame) | `height` | `gradient` | `filtered`, s = 0 | s = 1 m |");
+    println!("|---|---|---|---|---|---|");
     let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("thread pool");
+    for &n in sizes {
+        pool.install(|| {
+            let o = FftOptions { resolution: n, ..base.clone() };
+            let frame = FftOcean::new(&elf, &spreading, &o).expect("valid ocean").at_time(1.0);
+            let build = median(
+                (0..FRAMES)
+                    .map(|_| {
+                        let s = Instant::now();
+                        std::hint::black_box(FftSlopeFilter::new(&frame));
+                        s.elapsed().as_secs_f64()
+                    })
+                    .collect(),
+            );
+            let filter = FftSlopeFilter::new(&frame);
+            let points: Vec<(f64, f64)> =
+                (0..4096).map(|i| (i as f64 * 0.731 - 500.0, i as f64 * -0.377 + 80.0)).collect();
+            let per_call = |f: &dyn Fn(f64, f64)| {
+                1e9 * median(
+                    (0..FRAMES)
+                        .map(|_| {
+                            let s = Instant::now();
+                            for &(x, z) in &points {
+                                f(x, z);
+                            }
+                            s.elapsed().as_secs_f64()
+                        })
+                        .collect(),
+                ) / points.len() as f64
+            };
+            let h = per_call(&|x, z| {
+                std::hint::black_box(frame.height(x, z));
+            });
+            let g = per_call(&|x, z| {
+                std::hint::black_box(frame.gradient(x, z));
+            });
+            let f0 = per_call(&|x, z| {
+                std::hint::black_box(filter.filtered(x, z, 0.0));
+            });
+            let f1 = per_call(&|x, z| {
+                std::hint::black_box(filter.filtered(x, z, 1.0));
+            });
+            println!("| {n}² | {} | {h:.0} ns | {g:.0} ns | {f0:.0} ns | {f1:.0} ns |", ms(build));
+        });
+    }
+    println!();
+
+    // ---------------------------------------------------------------- tracing
     let fft_full = pool.install(|| {
         FftOcean::new(&elf, &spreading, &FftOptions { resolution: 256, ..base.clone() }).expect("ocean").at_time(10.0)
     });

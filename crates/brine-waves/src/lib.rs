@@ -108,7 +108,9 @@ mod fft;
 mod fft_frame;
 mod fft_lipschitz;
 mod fft_options;
+mod fft_pyramid;
 mod fft_resample;
+mod fft_slopes;
 mod fft_spectrum;
 mod fft_spline;
 mod fit;
@@ -140,7 +142,9 @@ pub use fft_options::{
     FFT_CASCADE_CUT_INDEX, FFT_DEFAULT_TILE_RATIO, FFT_MAX_CASCADES, FFT_MAX_CHOPPINESS, FFT_MAX_LOOP_PERIOD_S,
     FFT_MAX_RESOLUTION, FFT_MIN_RESOLUTION, FFT_PEAK_WAVELENGTHS_PER_TILE, FftOptions,
 };
+pub use fft_pyramid::{BOX_WIDTH_PER_SIGMA, FftPyramid};
 pub use fft_resample::FFT_MAX_SHADING_SLOPE;
+pub use fft_slopes::{FftSlopeFilter, FilteredSlopes};
 pub use fft_spectrum::directional_spectrum;
 pub use fit::{AmplitudeRule, FrequencyBin, SeaComponent, SteepnessLimit, fit_sea_state, frequency_bins};
 pub use fit::{FitOptions, FrequencyPartition, fit_trochoids};

@@ -7,7 +7,7 @@ use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
 
 use brine_waves::{
     CosineSquared, CosineTwoS, Directions, Elfouhaily, FFT_DEFAULT_TILE_RATIO, FftOcean, FftOptions, FftRestFields,
-    Jonswap, Phillips, Spectrum, Spreading, directional_spectrum,
+    FftSlopeFilter, Jonswap, Phillips, Spectrum, Spreading, directional_spectrum,
 };
 
 /// Simpson pairs per angular segment and along `ln k` of the polar reference quadrature: a step
@@ -420,4 +420,40 @@ fn without_choppiness_the_traced_spline_converges_to_the_trig_polynomial_at_four
     }
     assert!(errors[1] / errors[0] < 0.1, "errors {errors:?}");
     assert!(errors[1] < 1e-3 * range, "errors {errors:?}, range {range}");
+}
+
+/// Spread of one realisation's mean-square slope around its expectation: `Σ k²|h̃|²` over the
+/// thousands of wave vectors of the short cascades, which carry most of it (measured 0.5 %).
+const MSS_REL: f64 = 0.05;
+
+#[test]
+fn filtered_slopes_span_the_gradient_and_the_whole_sea_mean_square_slope() {
+    let elf = Elfouhaily::from_fetch(10.0, 1e5).unwrap();
+    let d = elf.spreading(Directions::Downwind);
+    let o = FftOptions { resolution: 64, choppiness: 0.0, ..FftOptions::for_spectrum(&elf, 3) };
+    let ocean = FftOcean::new(&elf, &d, &o).unwrap();
+    let frame = ocean.at_time(2.0);
+    let filter = FftSlopeFilter::new(&frame);
+    // No footprint, at a grid point of every cascade: the gradient, no hidden slope.
+    let f0 = filter.filtered(0.0, 0.0, 0.0);
+    assert!((f0.gradient - frame.gradient(0.0, 0.0)).length() < 1e-12 && f0.covariance.length() < 1e-15);
+    // Beyond the largest tile: zero mean (no k = 0 term) and the sea's mean-square slope, which
+    // a single realisation draws around Σ E(k) k² (the cascades' expected covariances).
+    let all = filter.filtered(5.0, -3.0, 1e6);
+    assert!(all.gradient.length() < 1e-6, "{}", all.gradient);
+    let expected: f64 = (0..3).map(|c| ocean.expected_slope_covariance(c)).map(|v| v[0] + v[2]).sum();
+    let got = all.covariance.x + all.covariance.z;
+    assert!((got / expected - 1.0).abs() < MSS_REL, "mss {got} vs expected {expected}");
+    // Positive semi-definite everywhere, and non-decreasing in the footprint on average.
+    let (mut small, mut large) = (0.0, 0.0);
+    for i in 0..200 {
+        let (x, z) = (i as f64 * 3.17 - 90.0, i as f64 * -1.91 + 40.0);
+        for s in [0.0, 0.05, 0.3, 2.0, 20.0] {
+            let c = filter.filtered(x, z, s).covariance;
+            assert!(c.x >= 0.0 && c.z >= 0.0 && c.x * c.z - c.y * c.y >= -1e-15, "{c} at s = {s}");
+        }
+        small += filter.filtered(x, z, 0.05).covariance.x;
+        large += filter.filtered(x, z, 2.0).covariance.x;
+    }
+    assert!(large > small, "{large} vs {small}");
 }
