@@ -142,7 +142,8 @@ mod tests {
         let mean = base.iter().map(|v| v[0]).sum::<f64>() / (n * n) as f64;
         assert!((p.mean()[0] - mean).abs() < 1e-12);
         // Level 2 texel (1, 2): block i ∈ [4, 8), j ∈ [8, 12), centred at ((4 + 1.5)Δ, (8 + 1.5)Δ).
-        let block: f64 = (8..12).flat_map(|j| (4..8).map(move |i| base[j * n + i][0])).sum::<f64>() / 16.0;
+        let b = &base;
+        let block: f64 = (8..12).flat_map(|j| (4..8).map(move |i| b[j * n + i][0])).sum::<f64>() / 16.0;
         let got = p.box_mean(5.5 * 0.5, 9.5 * 0.5, 4.0 * 0.5);
         assert!((got[0] - block).abs() < 1e-12, "{} vs {block}", got[0]);
         // Level 0 at a grid point is the grid value; beyond the tile, the mean.
