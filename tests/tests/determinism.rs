@@ -1,10 +1,19 @@
 //! The same scene gives the same bytes whatever the number of threads.
 
+use brine_render::scene::SurfaceKind;
 use brine_render::{RenderOptions, Scene, render, write_image};
 
 #[test]
 fn one_and_two_threads_write_identical_files() {
+    for surface in [SurfaceKind::Trochoids, SurfaceKind::Fft] {
+        same_bytes_at_one_and_two_threads(surface);
+    }
+}
+
+fn same_bytes_at_one_and_two_threads(surface: SurfaceKind) {
     let mut scene = Scene::default_scene();
+    scene.sea.surface = surface;
+    scene.sea.fft.resolution = 64;
     scene.camera.width = 64;
     scene.camera.height = 36;
     scene.camera.spp = 2;
@@ -19,6 +28,6 @@ fn one_and_two_threads_write_identical_files() {
             bytes.push(std::fs::read(path).unwrap());
         }
     }
-    assert!(bytes[0] == bytes[2], "PNG bytes differ between 1 and 2 threads");
-    assert!(bytes[1] == bytes[3], "EXR bytes differ between 1 and 2 threads");
+    assert!(bytes[0] == bytes[2], "{surface:?}: PNG bytes differ between 1 and 2 threads");
+    assert!(bytes[1] == bytes[3], "{surface:?}: EXR bytes differ between 1 and 2 threads");
 }

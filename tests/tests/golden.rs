@@ -97,3 +97,9 @@ fn default_scene_160x90() {
     scene.camera.height = 90;
     check_golden("default-160x90", &scene);
 }
+
+/// The FFT ocean (`surface = "fft"`): Li Ying et al.'s morning still.
+#[test]
+fn li_ying_morning_fft_160x90() {
+    check_golden("li-ying-morning-160x90", &gallery_scene("li-ying-morning"));
+}

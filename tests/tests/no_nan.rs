@@ -1,8 +1,8 @@
 //! No NaN or infinite pixel over a sweep of random valid scenes (wind 0–40 m/s, sun −20°–90°,
-//! camera height −5–500 m, 1–500 waves, every spectrum, swell, water type, floor), rendered at a
-//! tiny size.
+//! camera height −5–500 m, 1–500 waves, every spectrum, swell, water type, floor, trochoid and FFT
+//! surfaces), rendered at a tiny size.
 
-use brine_render::scene::{SpectrumKind, SwellConfig};
+use brine_render::scene::{SpectrumKind, SurfaceKind, SwellConfig};
 use brine_render::{RenderOptions, Scene, render};
 use proptest::prelude::*;
 
@@ -26,6 +26,7 @@ proptest! {
         ]),
         swell in prop::option::of((0.2f64..6.0, 5.0f64..25.0)),
         sun_below in prop::bool::ANY,
+        fft in prop::bool::ANY,
     ) {
         let mut scene = Scene::default_scene();
         scene.camera.position = [0.0, camera_y, 0.0];
@@ -35,6 +36,10 @@ proptest! {
         scene.sea.wind_speed_m_s = wind;
         scene.sea.waves = waves;
         scene.sea.seed = seed;
+        if fft {
+            scene.sea.surface = SurfaceKind::Fft;
+            scene.sea.fft.resolution = 64;
+        }
         // Half the cases put the sun below the horizon (twilight and night, −20° to 0°).
         scene.place = None;
         scene.sky.sun_elevation_deg = Some(if sun_below { -sun_elevation / 4.5 } else { sun_elevation });

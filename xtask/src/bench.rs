@@ -24,6 +24,11 @@ const BENCHES: &[(&str, &str, &[&str])] = &[
         &["bench", "-p", "brine-waves", "--bench", "surface_eval"],
     ),
     (
+        "fft",
+        "brine-waves FFT ocean: synthesis per frame at 256² and 512², trace cost per ray against trochoids (custom)",
+        &["bench", "-p", "brine-waves", "--bench", "fft"],
+    ),
+    (
         "whitecap-erf",
         "erf side by side: the slides' Winitzki (a = 0.147) vs Abramowitz–Stegun 7.1.26 vs libm::erf (criterion)",
         &["bench", "-p", "brine-whitecap", "--bench", "whitecap", "--", "erf/"],
@@ -32,6 +37,11 @@ const BENCHES: &[(&str, &str, &[&str])] = &[
         "whitecap",
         "per-pixel footprint moments of J and the calibration of α, 50 and 100 waves (criterion)",
         &["bench", "-p", "brine-whitecap", "--bench", "whitecap", "--", "whitecap/"],
+    ),
+    (
+        "whitecap-fft",
+        "FFT ocean whitecaps: mip pyramids per frame, footprint moments per pixel, calibration of α (example)",
+        &["run", "--release", "-p", "brine-whitecap", "--example", "fft_whitecap_cost"],
     ),
     (
         "foam",

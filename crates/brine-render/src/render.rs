@@ -615,6 +615,8 @@ pub(crate) enum SeaField<'a> {
     Gerstner(GerstnerField<'a>, &'a brine_waves::GerstnerSurface),
     /// Sine waves by directional sphere tracing.
     Sine(SineField<'a>, &'a brine_waves::SineSet),
+    /// FFT cascades by the tiered tracer (one tier per cascade) with footprint fading.
+    Fft(&'a brine_waves::FftFrame),
 }
 
 impl<'a> SeaField<'a> {
@@ -623,6 +625,7 @@ impl<'a> SeaField<'a> {
             Sea::Trochoids(t) => SeaField::Traced(t),
             Sea::Gerstner(g) => SeaField::Gerstner(g.at_time(world.time), g),
             Sea::Sine(s) => SeaField::Sine(s.at_time(world.time), s),
+            Sea::Fft(f) => SeaField::Fft(f),
         }
     }
 
@@ -636,6 +639,11 @@ impl<'a> SeaField<'a> {
             }
             SeaField::Gerstner(f, _) => trace(f, ray, &world.trace, stats),
             SeaField::Sine(f, _) => trace(f, ray, &world.trace, stats),
+            SeaField::Fft(f) => {
+                let angle = if footprint { world.camera.pixel_angle() } else { 0.0 };
+                let options = TraceOptions { method: Method::Tiered, footprint_angle: angle, ..world.trace };
+                trace(*f, ray, &options, stats)
+            }
         }
     }
 
@@ -646,6 +654,7 @@ impl<'a> SeaField<'a> {
             SeaField::Traced(t) => trace(*t, ray, &TraceOptions { method: Method::Tiered, ..options }, stats),
             SeaField::Gerstner(f, _) => trace(f, ray, &options, stats),
             SeaField::Sine(f, _) => trace(f, ray, &options, stats),
+            SeaField::Fft(f) => trace(*f, ray, &TraceOptions { method: Method::Tiered, ..options }, stats),
         }
     }
 
@@ -659,6 +668,10 @@ impl<'a> SeaField<'a> {
             }
             SeaField::Gerstner(_, s) => s.gradient(p.x, p.z, world.time),
             SeaField::Sine(_, s) => return s.normal(p.x, p.z, world.time),
+            SeaField::Fft(f) => {
+                let angle = if t > 0.0 { world.camera.pixel_angle() } else { 0.0 };
+                f.faded_gradient(p.x, p.z, d, angle, t)
+            }
         };
         DVec3::new(-g.x, 1.0, -g.y).normalize()
     }
@@ -666,8 +679,11 @@ impl<'a> SeaField<'a> {
     /// The BRDF slope variances at a hit `t` along `d`: the unresolved waves' plus those the tracer
     /// faded (Bruneton et al. 2010's seamless transition), in the wind frame.
     fn faded_variance(&self, world: &World, d: DVec3, t: f64) -> SlopeVariance {
-        let SeaField::Traced(s) = self else { return world.variance_unresolved };
-        let c = s.faded_slope_covariance(d, world.camera.pixel_angle(), t);
+        let c = match self {
+            SeaField::Traced(s) => s.faded_slope_covariance(d, world.camera.pixel_angle(), t),
+            SeaField::Fft(f) => f.faded_slope_covariance(d, world.camera.pixel_angle(), t),
+            _ => return world.variance_unresolved,
+        };
         if c == DVec3::ZERO {
             return world.variance_unresolved;
         }

@@ -281,6 +281,9 @@ pub enum SurfaceKind {
     Gerstner,
     /// Chen et al. 2007 sine waves with normal-perturbing detail waves.
     Sine,
+    /// Tessendorf's inverse-FFT height field (Li Ying et al. 2018 §2.2, Dupuy & Bruneton 2012):
+    /// periodic cascades of the spectrum, traced as certified cubic B-splines (`[sea.fft]`).
+    Fft,
 }
 
 /// `[sea]`: the wind sea.
@@ -317,6 +320,31 @@ pub struct SeaConfig {
     pub trace_distance_m: f64,
     /// A swell from a distant storm, added to the wind sea.
     pub swell: Option<SwellConfig>,
+    /// Grid and cascades of `surface = "fft"`.
+    pub fft: FftConfig,
+}
+
+/// `[sea.fft]`: the FFT ocean of `surface = "fft"` (brine-waves `FftOcean`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct FftConfig {
+    /// Grid resolution `N` of every cascade (a power of two in `[64, 2048]`, default 256; below 64
+    /// the default tile ratio leaves a cascade too few grid points per wavelength).
+    pub resolution: u32,
+    /// Number of cascades (`[1, 8]`, default 4): tiles from 8 peak wavelengths down by a
+    /// non-commensurate ratio.
+    pub cascades: u32,
+    /// Choppiness `λ` of the horizontal displacement (`[0, 4]`, default 1; 0 is the plain height
+    /// field).
+    pub choppiness: f64,
+    /// Loop period (s, `(0, 10⁶]`): when given, the sea repeats exactly after it.
+    pub loop_period_s: Option<f64>,
+}
+
+impl Default for FftConfig {
+    fn default() -> Self {
+        Self { resolution: 256, cascades: 4, choppiness: 1.0, loop_period_s: None }
+    }
 }
 
 impl Default for SeaConfig {
@@ -336,6 +364,7 @@ impl Default for SeaConfig {
             time_s: 0.0,
             trace_distance_m: 3000.0,
             swell: None,
+            fft: FftConfig::default(),
         }
     }
 }
@@ -559,6 +588,19 @@ impl Scene {
             (10.0..=1e6).contains(&s.trace_distance_m),
             "[10, 10⁶] m",
         )?;
+        let f = &s.fft;
+        range(
+            "sea.fft",
+            "resolution",
+            f64::from(f.resolution),
+            f.resolution.is_power_of_two() && (64..=2048).contains(&f.resolution),
+            "a power of two in [64, 2048]",
+        )?;
+        range("sea.fft", "cascades", f64::from(f.cascades), (1..=8).contains(&f.cascades), "[1, 8]")?;
+        range("sea.fft", "choppiness", f.choppiness, (0.0..=4.0).contains(&f.choppiness), "[0, 4]")?;
+        if let Some(t) = f.loop_period_s {
+            range("sea.fft", "loop_period_s", t, t > 0.0 && t <= 1e6, "(0, 10⁶] s")?;
+        }
         let k = &self.sky;
         range("sky", "turbidity", k.turbidity, (1.7..=10.0).contains(&k.turbidity), "[1.7, 10]")?;
         if let Some(e) = k.sun_elevation_deg {

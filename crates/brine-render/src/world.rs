@@ -12,12 +12,13 @@ use brine_optics::{
 use brine_sky::{CloudParams, MoonParams, Sky, SkyParams};
 use brine_trace::{Method, TraceOptions};
 use brine_waves::{
-    CosineSquared, CosineTwoS, Directions, DonelanBanner, Elfouhaily, FitOptions, GerstnerSurface, Jonswap, Phillips,
-    PiersonMoskowitz, SeaComponent, SineSet, Spectrum, Spreading, SteepnessLimit, Tma, TracedTrochoids, Trochoid,
-    TrochoidSet, TrochoidSum, WaveSurface, fit_sea_state,
+    CosineSquared, CosineTwoS, Directions, Dispersion, DonelanBanner, Elfouhaily, FftFrame, FftOcean, FftOptions,
+    FitOptions, GerstnerSurface, Jonswap, Phillips, PiersonMoskowitz, SeaComponent, SineSet, Spectrum, Spreading,
+    SteepnessLimit, Tma, TracedTrochoids, Trochoid, TrochoidSet, TrochoidSum, WaveSurface, fit_sea_state,
 };
 use brine_whitecap::{
-    Calibration, CalibrationOptions, ErfMethod, FootprintFilter, JacobianStatistics, whitecap_coverage,
+    Calibration, CalibrationOptions, ErfMethod, FftCalibration, FftJacobianStatistics, FootprintFilter,
+    JacobianStatistics, whitecap_coverage,
 };
 use glam::{DVec2, DVec3};
 use rand::{Rng, SeedableRng};
@@ -145,6 +146,8 @@ pub enum Sea {
     Gerstner(GerstnerSurface),
     /// Chen et al.'s sine waves with normal-perturbing detail waves.
     Sine(SineSet),
+    /// Tessendorf's FFT cascades at the frame's time (traced as certified cubic B-splines).
+    Fft(Box<FftFrame>),
 }
 
 impl Sea {
@@ -154,6 +157,7 @@ impl Sea {
             Sea::Trochoids(s) => s.height(x, z),
             Sea::Gerstner(s) => s.height(x, z, t),
             Sea::Sine(s) => s.height(x, z, t),
+            Sea::Fft(f) => f.height(x, z),
         }
     }
 }
@@ -173,24 +177,47 @@ pub struct Foam {
     pub reflectance: f64,
 }
 
-/// Active whitecaps: the Jacobian statistics of the set and the calibrated (or raw) threshold.
-pub struct Whitecaps {
-    /// Statistics of the set's displacement Jacobian.
-    pub stats: JacobianStatistics,
-    /// Calibrated threshold, or `None` for the raw `α`.
-    pub calibration: Option<Calibration>,
-    /// Raw `α` when not calibrated.
-    pub alpha: f64,
+/// Active whitecaps: the Jacobian statistics of the sea and the calibrated (or raw) threshold.
+pub enum Whitecaps {
+    /// Of a trochoid (or Gerstner, or sine) set: analytic footprint moments.
+    Trochoids {
+        /// Statistics of the set's displacement Jacobian.
+        stats: JacobianStatistics,
+        /// Calibrated threshold, or `None` for the raw `alpha`.
+        calibration: Option<Calibration>,
+        /// Raw `α` when not calibrated.
+        alpha: f64,
+    },
+    /// Of an FFT frame: mip-mapped moments of the Jacobian grids (Dupuy & Bruneton 2012).
+    Fft {
+        /// Pyramids of `J` and `J²` per cascade.
+        stats: Box<FftJacobianStatistics>,
+        /// Calibrated threshold per footprint size, or `None` for the raw `alpha`.
+        calibration: Option<FftCalibration>,
+        /// Raw `α` when not calibrated.
+        alpha: f64,
+    },
 }
 
 impl Whitecaps {
-    /// Coverage `W` over a Gaussian footprint of standard deviation `sigma_m` centred at the rest
-    /// position `u` (the hit point's horizontal position).
+    /// Coverage `W` over a Gaussian footprint of standard deviation `sigma_m` centred at `u`, the
+    /// hit point's horizontal position (for trochoids, taken as the rest position).
     pub fn coverage(&self, u: DVec2, t: f64, sigma_m: f64) -> f64 {
-        let m = self.stats.moments_at(u, t, sigma_m, FootprintFilter::Gaussian);
-        match &self.calibration {
-            Some(c) => c.coverage(m, sigma_m, ErfMethod::AbramowitzStegun),
-            None => whitecap_coverage(m, self.alpha, ErfMethod::AbramowitzStegun),
+        match self {
+            Whitecaps::Trochoids { stats, calibration, alpha } => {
+                let m = stats.moments_at(u, t, sigma_m, FootprintFilter::Gaussian);
+                match calibration {
+                    Some(c) => c.coverage(m, sigma_m, ErfMethod::AbramowitzStegun),
+                    None => whitecap_coverage(m, *alpha, ErfMethod::AbramowitzStegun),
+                }
+            }
+            Whitecaps::Fft { stats, calibration, alpha } => {
+                let m = stats.moments_at(u.x, u.y, sigma_m);
+                match calibration {
+                    Some(c) => c.coverage(m, sigma_m, ErfMethod::AbramowitzStegun),
+                    None => whitecap_coverage(m, *alpha, ErfMethod::AbramowitzStegun),
+                }
+            }
         }
     }
 }
@@ -312,9 +339,17 @@ fn sea_spectrum(s: &SeaConfig) -> Result<Box<dyn Spectrum>, brine_waves::WaveErr
     })
 }
 
-/// The wind sea (and swell) of `[sea]` as one trochoid set, fitted under one steepness cap
-/// (Thon & Ghazanfarpour 2002 as in Darles et al. 2007 §3; brine-waves `fit_sea_state`).
-fn fit_sea(s: &SeaConfig) -> Result<TrochoidSet, WorldError> {
+/// The spectra of `[sea]`: the wind sea's (when `U₁₀ > 0` and it has waves) and the swell's, each
+/// with its spreading, wave count and fit options (wave direction included).
+struct SeaSpectra {
+    spectra: Vec<Box<dyn Spectrum>>,
+    spreadings: Vec<Box<dyn Spreading>>,
+    counts: Vec<usize>,
+    options: Vec<FitOptions>,
+}
+
+/// `any_count`: include the wind sea whatever its wave count (the FFT ocean has no count).
+fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, WorldError> {
     let err = |e: brine_waves::WaveError| WorldError::Model(e.to_string());
     let wind_angle = s.wind_direction_deg.to_radians();
     let sea_options = FitOptions { wind_direction: wind_angle, choppiness: s.choppiness, ..FitOptions::default() };
@@ -322,7 +357,7 @@ fn fit_sea(s: &SeaConfig) -> Result<TrochoidSet, WorldError> {
     let mut spreadings: Vec<Box<dyn Spreading>> = Vec::new();
     let mut counts = Vec::new();
     let mut options = Vec::new();
-    if s.wind_speed_m_s > 0.0 && s.waves > 0 {
+    if s.wind_speed_m_s > 0.0 && (any_count || s.waves > 0) {
         let spectrum = sea_spectrum(s).map_err(err)?;
         let wp = spectrum.peak_omega();
         let spreading: Box<dyn Spreading> = match (s.spreading, s.spectrum) {
@@ -351,9 +386,18 @@ fn fit_sea(s: &SeaConfig) -> Result<TrochoidSet, WorldError> {
         counts.push(w.waves as usize);
         options.push(FitOptions { wind_direction: w.direction_deg.to_radians(), ..sea_options });
     }
+    Ok(SeaSpectra { spectra, spreadings, counts, options })
+}
+
+/// The wind sea (and swell) of `[sea]` as one trochoid set, fitted under one steepness cap
+/// (Thon & Ghazanfarpour 2002 as in Darles et al. 2007 §3; brine-waves `fit_sea_state`).
+fn fit_sea(s: &SeaConfig) -> Result<TrochoidSet, WorldError> {
+    let err = |e: brine_waves::WaveError| WorldError::Model(e.to_string());
+    let SeaSpectra { spectra, spreadings, counts, options } = sea_spectra(s, false)?;
     if spectra.is_empty() {
         return Ok(TrochoidSet::default());
     }
+    let sea_options = options[0];
     let components: Vec<SeaComponent<'_>> = (0..spectra.len())
         .map(|i| SeaComponent {
             spectrum: spectra[i].as_ref(),
@@ -365,6 +409,75 @@ fn fit_sea(s: &SeaConfig) -> Result<TrochoidSet, WorldError> {
     fit_sea_state(&components, s.seed, sea_options.max_total_steepness, SteepnessLimit::ScaleAll).map_err(err)
 }
 
+/// The directional spectrum of a wind sea and a swell as one spectrum and one spreading, for the
+/// FFT ocean: `S(ω) = Σᵢ Sᵢ(ω)` and `D(θ; ω) = Σᵢ Sᵢ(ω) Dᵢ(θ − Δᵢ; ω) / S(ω)`, `Δᵢ` the direction of
+/// component `i` relative to the first (the wind), so that `S(ω) D(θ; ω)` is the sum of the
+/// components' directional spectra exactly. The dispersion relation is the first component's.
+struct SummedSpectrum<'a> {
+    spectra: &'a [Box<dyn Spectrum>],
+    spreadings: &'a [Box<dyn Spreading>],
+    offsets: Vec<f64>,
+}
+
+impl Spectrum for SummedSpectrum<'_> {
+    fn s_omega(&self, omega: f64) -> f64 {
+        self.spectra.iter().map(|s| s.s_omega(omega)).sum()
+    }
+
+    /// The lowest peak (the swell's, usually): the largest FFT tile is sized on it.
+    fn peak_omega(&self) -> f64 {
+        self.spectra.iter().map(|s| s.peak_omega()).fold(f64::INFINITY, f64::min)
+    }
+
+    fn dispersion(&self) -> Dispersion {
+        self.spectra[0].dispersion()
+    }
+}
+
+impl Spreading for SummedSpectrum<'_> {
+    fn density(&self, theta: f64, omega: f64) -> f64 {
+        let (mut num, mut den) = (0.0, 0.0);
+        for ((s, d), off) in self.spectra.iter().zip(self.spreadings).zip(&self.offsets) {
+            let si = s.s_omega(omega);
+            if si > 0.0 {
+                // θ − Δ wrapped to (−π, π].
+                let rel =
+                    std::f64::consts::PI - (std::f64::consts::PI - (theta - off)).rem_euclid(std::f64::consts::TAU);
+                num += si * d.density(rel, omega);
+                den += si;
+            }
+        }
+        if den > 0.0 { num / den } else { self.spreadings[0].density(theta, omega) }
+    }
+}
+
+/// The sea (and swell) of `[sea]` as Tessendorf's FFT cascades at the frame's time, or `None` for
+/// a flat calm (brine-waves `FftOcean`).
+fn fft_sea(s: &SeaConfig) -> Result<Option<FftFrame>, WorldError> {
+    let err = |e: brine_waves::WaveError| WorldError::Model(e.to_string());
+    let SeaSpectra { spectra, spreadings, options, .. } = sea_spectra(s, true)?;
+    if spectra.is_empty() {
+        return Ok(None);
+    }
+    let wind = options[0].wind_direction;
+    let summed = SummedSpectrum {
+        spectra: &spectra,
+        spreadings: &spreadings,
+        offsets: options.iter().map(|o| o.wind_direction - wind).collect(),
+    };
+    let f = &s.fft;
+    let fft_options = FftOptions {
+        resolution: f.resolution as usize,
+        choppiness: f.choppiness,
+        loop_period: f.loop_period_s,
+        seed: s.seed,
+        wind_direction: wind,
+        ..FftOptions::for_spectrum(&summed, f.cascades as usize)
+    };
+    let ocean = FftOcean::new(&summed, &summed, &fft_options).map_err(err)?;
+    Ok(Some(ocean.at_time(s.time_s)))
+}
+
 /// A swell: JONSWAP of peak `ω_p = 2π/T_p` and enhancement `γ`, with the Phillips constant
 /// chosen so that `4√m₀ = H_s`, and a constant-`s` cos-2s spreading.
 fn swell_spectrum(w: &SwellConfig) -> Result<(Jonswap, CosineTwoS), brine_waves::WaveError> {
@@ -374,6 +487,57 @@ fn swell_spectrum(w: &SwellConfig) -> Result<(Jonswap, CosineTwoS), brine_waves:
     let alpha = (1e-3 * target_m0 / unit.m0()).clamp(1e-9, 0.99);
     let spectrum = Jonswap::new(alpha, omega_p)?.with_peak_shape(w.gamma, 0.07, 0.09)?;
     Ok((spectrum, CosineTwoS::constant(w.spreading_s)?))
+}
+
+/// Height and slope statistics of the traced sea, for the BRDF's unresolved variance and the foam.
+struct SeaStatistics {
+    /// No waves at all (a flat calm).
+    flat: bool,
+    /// Slope variance of the traced waves along the wind (dimensionless).
+    slope_along: f64,
+    /// Slope variance across the wind (dimensionless).
+    slope_across: f64,
+    /// Height range, height deviation and slope variances along the world axes, for the foam.
+    surface: SurfaceStatistics,
+}
+
+/// Statistics of the sea: of the trochoid set, or the expected ones of the FFT cascades
+/// (`½ Σ |a|²` of the drawn spectrum), with the frame's exact height bounds.
+fn sea_statistics(set: &TrochoidSet, sea: &Sea, wind_angle: f64) -> SeaStatistics {
+    if let Sea::Fft(frame) = sea {
+        let c: DVec3 = frame.cascades().iter().map(|c| c.expected_slope_covariance()).sum();
+        let variance: f64 = frame.cascades().iter().map(|c| c.expected_variance()).sum();
+        let (wx, wz) = (wind_angle.cos(), wind_angle.sin());
+        let along = c.x * wx * wx + 2.0 * c.y * wx * wz + c.z * wz * wz;
+        let across = c.x * wz * wz - 2.0 * c.y * wx * wz + c.z * wx * wx;
+        let (y_min, y_max) = frame.height_bounds();
+        return SeaStatistics {
+            flat: !(variance > 0.0),
+            slope_along: along.max(0.0),
+            slope_across: across.max(0.0),
+            surface: SurfaceStatistics {
+                y_min,
+                y_max: y_max.max(y_min + 1e-9),
+                height_std: variance.sqrt(),
+                slope_variance_x: c.x.clamp(0.0, 10.0),
+                slope_variance_z: c.z.clamp(0.0, 10.0),
+            },
+        };
+    }
+    let (rx, ry) = set.slope_variances(wind_angle);
+    let (sx, sz) = set.slope_variances(0.0);
+    SeaStatistics {
+        flat: set.is_empty(),
+        slope_along: rx,
+        slope_across: ry,
+        surface: SurfaceStatistics {
+            y_min: -set.total_amplitude(),
+            y_max: set.total_amplitude(),
+            height_std: set.variance().sqrt(),
+            slope_variance_x: sx.min(10.0),
+            slope_variance_z: sz.min(10.0),
+        },
+    }
 }
 
 /// Wind speed 12.5 m above the sea from `U₁₀` by the neutral logarithmic profile with roughness
@@ -393,12 +557,18 @@ impl World {
         let s = &scene.sea;
         let wind_angle = s.wind_direction_deg.to_radians();
         let wind = DVec3::new(wind_angle.cos(), 0.0, wind_angle.sin());
-        let set = fit_sea(s)?;
+        // The FFT ocean has no trochoid set: its statistics come from the frame.
+        let set = if s.surface == SurfaceKind::Fft { TrochoidSet::default() } else { fit_sea(s)? };
         let sea = match s.surface {
             SurfaceKind::Trochoids => Sea::Trochoids(TracedTrochoids::new(&set, s.time_s)),
             SurfaceKind::Gerstner => Sea::Gerstner(GerstnerSurface::new(&set).map_err(|e| model(&e))?),
             SurfaceKind::Sine => Sea::Sine(SineSet::split_at_wavelength(&set, SINE_DETAIL_WAVELENGTH_M)),
+            SurfaceKind::Fft => match fft_sea(s)? {
+                Some(frame) => Sea::Fft(Box::new(frame)),
+                None => Sea::Trochoids(TracedTrochoids::new(&set, s.time_s)),
+            },
         };
+        let stats = sea_statistics(&set, &sea, wind_angle);
 
         let k = &scene.sky;
         let (sun_dir, sun_distance_au, moon) = sun_and_moon(scene)?;
@@ -424,8 +594,7 @@ impl World {
 
         let variance_total =
             SlopeVariance::cox_munk_clean(u12_5_from_u10(s.wind_speed_m_s).min(60.0)).map_err(|e| model(&e))?;
-        let (rx, ry) = set.slope_variances(wind_angle);
-        let variance_unresolved = variance_total.minus(rx, ry);
+        let variance_unresolved = variance_total.minus(stats.slope_along, stats.slope_across);
 
         // Downwelling irradiance just below a flat surface: the sun's and the moon's share
         // through Fresnel, the sky's through the hemispherical Fresnel reflectance of a uniform
@@ -461,18 +630,12 @@ impl World {
             (true, true) => (1.0 - ACTIVE_WHITECAP_SHARE, ACTIVE_WHITECAP_SHARE),
             (f, w) => (f64::from(u8::from(f)), f64::from(u8::from(w))),
         };
-        let foam = if ph.foam && monahan > 0.0 && !set.is_empty() {
-            let (sx, sz) = set.slope_variances(0.0);
-            let stats = SurfaceStatistics {
-                y_min: -set.total_amplitude(),
-                y_max: set.total_amplitude(),
-                height_std: set.variance().sqrt(),
-                slope_variance_x: sx.min(10.0),
-                slope_variance_z: sz.min(10.0),
-            };
-            let extension =
-                FoamExtension::new(&FoamExtensionParams { seed: s.seed, ..FoamExtensionParams::default() }, &stats)
-                    .map_err(|e| model(&e))?;
+        let foam = if ph.foam && monahan > 0.0 && !stats.flat {
+            let extension = FoamExtension::new(
+                &FoamExtensionParams { seed: s.seed, ..FoamExtensionParams::default() },
+                &stats.surface,
+            )
+            .map_err(|e| model(&e))?;
             Some(Foam {
                 extension,
                 coverage: monahan * foam_share,
@@ -481,16 +644,28 @@ impl World {
         } else {
             None
         };
-        let whitecaps = if ph.whitecaps && !set.is_empty() && (ph.whitecap_alpha.is_some() || monahan > 0.0) {
-            let stats = JacobianStatistics::new(&set).map_err(|e| model(&e))?;
-            let calibration = match ph.whitecap_alpha {
-                Some(_) => None,
-                None => Some(
-                    Calibration::new(&stats, monahan * whitecap_share, &CalibrationOptions::default())
-                        .map_err(|e| model(&e))?,
-                ),
-            };
-            Some(Whitecaps { stats, calibration, alpha: ph.whitecap_alpha.unwrap_or(0.0) })
+        let whitecaps = if ph.whitecaps && !stats.flat && (ph.whitecap_alpha.is_some() || monahan > 0.0) {
+            let alpha = ph.whitecap_alpha.unwrap_or(0.0);
+            let target = monahan * whitecap_share;
+            let calibrate = ph.whitecap_alpha.is_none();
+            Some(match &sea {
+                Sea::Fft(frame) => {
+                    let stats = Box::new(FftJacobianStatistics::new(frame));
+                    let calibration = calibrate
+                        .then(|| FftCalibration::new(&stats, target, &CalibrationOptions::default()))
+                        .transpose()
+                        .map_err(|e| model(&e))?;
+                    Whitecaps::Fft { stats, calibration, alpha }
+                }
+                _ => {
+                    let stats = JacobianStatistics::new(&set).map_err(|e| model(&e))?;
+                    let calibration = calibrate
+                        .then(|| Calibration::new(&stats, target, &CalibrationOptions::default()))
+                        .transpose()
+                        .map_err(|e| model(&e))?;
+                    Whitecaps::Trochoids { stats, calibration, alpha }
+                }
+            })
         } else {
             None
         };

@@ -58,6 +58,8 @@ fn out_of_range_values() {
         ("[camera]\nfov_deg = 180.0\n", "camera.fov_deg = 180 is out of range", 2),
         ("[camera]\nwidth = 0\n", "camera.width = 0 is out of range", 2),
         ("[camera]\nheight = 0\n", "camera.height = 0 is out of range", 2),
+        ("[sea]\nsurface = \"fft\"\n\n[sea.fft]\nresolution = 100\n", "sea.fft.resolution = 100 is out of range", 5),
+        ("[sea.fft]\ncascades = 9\n", "sea.fft.cascades = 9 is out of range", 2),
     ] {
         let (dir, code, err) = render_scene(scene);
         assert_eq!(code, Some(2), "{scene}");

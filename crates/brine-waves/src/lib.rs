@@ -21,6 +21,12 @@
 //!   inversion of the horizontal displacement), [`SineSet`] (Chen et al.'s sinusoids with
 //!   perturbed normals). Their time-frozen fields [`TrochoidField`], [`GerstnerField`] and
 //!   [`SineField`] implement [`brine_trace::LipschitzSum`] for the sphere tracer.
+//! - **FFT ocean** ([`FftOcean`]; Tessendorf 2001, as Li Ying et al. 2018 §2.2 synthesise it): random
+//!   amplitudes of any spectrum and spreading on periodic cascades of tiles (seeded by wave vector,
+//!   so a finer grid keeps the large waves; exact looping), inverse FFTs of heights, slopes, choppy
+//!   displacement and its Jacobian; its frames [`FftFrame`] (each cascade's displaced surface
+//!   resampled on its grid and traced as a cubic B-spline with certified bounds) implement
+//!   [`brine_trace::LipschitzSum`].
 //!
 //! ## Notation
 //!
@@ -98,6 +104,15 @@ mod dispersion;
 mod elfouhaily;
 mod error;
 mod fast_profile;
+mod fft;
+mod fft_frame;
+mod fft_lipschitz;
+mod fft_options;
+mod fft_pyramid;
+mod fft_resample;
+mod fft_slopes;
+mod fft_spectrum;
+mod fft_spline;
 mod fit;
 mod gerstner;
 mod gerstner_lipschitz;
@@ -121,6 +136,16 @@ pub use dispersion::{Dispersion, ELFOUHAILY_K_M, SEA_WATER_DENSITY, SEA_WATER_SU
 pub use dispersion::{G, omega_deep_water, wavenumber_deep_water};
 pub use elfouhaily::{Elfouhaily, ElfouhailySpreading};
 pub use error::WaveError;
+pub use fft::{FftOcean, FftRestFields};
+pub use fft_frame::{FftCascade, FftFrame};
+pub use fft_options::{
+    FFT_CASCADE_CUT_INDEX, FFT_DEFAULT_TILE_RATIO, FFT_MAX_CASCADES, FFT_MAX_CHOPPINESS, FFT_MAX_LOOP_PERIOD_S,
+    FFT_MAX_RESOLUTION, FFT_MIN_RESOLUTION, FFT_PEAK_WAVELENGTHS_PER_TILE, FftOptions,
+};
+pub use fft_pyramid::{BOX_WIDTH_PER_SIGMA, FftPyramid};
+pub use fft_resample::FFT_MAX_SHADING_SLOPE;
+pub use fft_slopes::{FftSlopeFilter, FilteredSlopes};
+pub use fft_spectrum::directional_spectrum;
 pub use fit::{AmplitudeRule, FrequencyBin, SeaComponent, SteepnessLimit, fit_sea_state, frequency_bins};
 pub use fit::{FitOptions, FrequencyPartition, fit_trochoids};
 pub use gerstner::{GERSTNER_MAX_ITERATIONS, GERSTNER_TOLERANCE_M, GerstnerField, GerstnerSurface, Inversion};

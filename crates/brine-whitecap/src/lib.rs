@@ -62,6 +62,8 @@ mod calibration;
 mod coverage;
 mod erf;
 mod error;
+mod fft_calibration;
+mod fft_statistics;
 mod statistics;
 
 pub use calibration::{Calibration, CalibrationOptions, CoverageEstimate, surface_coverage};
@@ -71,4 +73,6 @@ pub use erf::{
     erf_inv, erf_winitzki,
 };
 pub use error::WhitecapError;
+pub use fft_calibration::{FFT_CALIBRATION_SAMPLES, FftCalibration};
+pub use fft_statistics::FftJacobianStatistics;
 pub use statistics::{FootprintFilter, JacobianStatistics, Moments};

@@ -1,14 +1,15 @@
 //! Plots of brine-waves: the five spectra, a fitted set over its spectrum, trochoid profiles,
 //! spreading functions, dispersion curves, Elfouhaily's curvature spectra and its mean-square
-//! slope against Cox & Munk.
+//! slope against Cox & Munk, and the FFT ocean (its cascades' spectra, choppy profiles, the
+//! distribution of its Jacobian).
 
 use std::f64::consts::PI;
 use std::path::Path;
 
 use brine_waves::{
-    CosineSquared, CosineTwoS, Directions, Dispersion, DonelanBanner, Elfouhaily, FitOptions, FrequencyPartition,
-    Jonswap, Phillips, PiersonMoskowitz, SEA_WATER_DENSITY, SEA_WATER_SURFACE_TENSION, Spectrum, Spreading, Tma,
-    Trochoid, fit_trochoids, frequency_bins,
+    CosineSquared, CosineTwoS, Directions, Dispersion, DonelanBanner, Elfouhaily, FftOcean, FftOptions, FitOptions,
+    FrequencyPartition, Jonswap, Phillips, PiersonMoskowitz, SEA_WATER_DENSITY, SEA_WATER_SURFACE_TENSION, Spectrum,
+    Spreading, Tma, Trochoid, fit_trochoids, frequency_bins,
 };
 
 use super::{LineChart, Scale};
@@ -52,7 +53,8 @@ pub fn plot(dir: &Path) -> Result<(), String> {
     profiles(dir)?;
     spreading(dir)?;
     dispersion(dir)?;
-    elfouhaily(dir)
+    elfouhaily(dir)?;
+    fft(dir)
 }
 
 fn spectra(dir: &Path) -> Result<(), String> {
@@ -279,4 +281,104 @@ fn elfouhaily(dir: &Path) -> Result<(), String> {
         ],
     }
     .write(&dir.join("waves-mss-cox-munk.svg"))
+}
+
+/// The FFT ocean: one realisation's spectrum per cascade against `S(k)`, transects of the traced
+/// surface at three choppinesses, and the distribution of the Jacobian.
+fn fft(dir: &Path) -> Result<(), String> {
+    let elf = Elfouhaily::from_fetch(10.0, 1e5).map_err(err)?;
+    let spreading = elf.spreading(Directions::Downwind);
+    let base = FftOptions::for_spectrum(&elf, 4);
+    let ocean = FftOcean::new(&elf, &spreading, &base).map_err(err)?;
+
+    // Radially binned |h̃(k)|² per unit k, 10 bins per decade.
+    let (k_lo, k_hi): (f64, f64) = (1e-3, 2e3);
+    let bins = (10.0 * (k_hi / k_lo).log10()).round() as usize;
+    let bin_of = |k: f64| ((k / k_lo).log10() * 10.0).floor() as usize;
+    let centre = |b: usize| k_lo * 10f64.powf((b as f64 + 0.5) / 10.0);
+    let width = |b: usize| k_lo * (10f64.powf((b as f64 + 1.0) / 10.0) - 10f64.powf(b as f64 / 10.0));
+    let mut series = vec![(
+        "S(k), Elfouhaily U10 = 10 m/s, fetch 100 km".to_string(),
+        logspace(0.02, k_hi, 400).map(|k| (k, elf.s_k(k))).filter(|p| p.1 > 1e-14).collect::<Vec<_>>(),
+    )];
+    let mut total = vec![0.0; bins];
+    for c in 0..ocean.cascade_count() {
+        let mut acc = vec![0.0; bins];
+        for ((kx, kz), (re, im)) in ocean.amplitudes_at(c, 0.0) {
+            let b = bin_of(kx.hypot(kz));
+            if b < bins {
+                acc[b] += re * re + im * im;
+            }
+        }
+        for (t, a) in total.iter_mut().zip(&acc) {
+            *t += a;
+        }
+        let pts = (0..bins).filter(|&b| acc[b] > 0.0).map(|b| (centre(b), acc[b] / width(b))).collect();
+        series.push((format!("cascade {c}, L = {:.3} m, one seed", base.tile_sizes[c]), pts));
+    }
+    series.push((
+        "sum of the cascades".into(),
+        (0..bins).filter(|&b| total[b] > 0.0).map(|b| (centre(b), total[b] / width(b))).collect(),
+    ));
+    LineChart {
+        title: "FFT ocean, 4 cascades of 256²: Σ|h̃|² per unit k (binned) against S(k)",
+        x_label: "k (rad/m)",
+        y_label: "S(k) (m³/rad)",
+        x_scale: Scale::Log,
+        y_scale: Scale::Log,
+        series,
+    }
+    .write(&dir.join("waves-fft-spectrum.svg"))?;
+
+    // Transects along the wind at three choppinesses (same seed).
+    let mut transects = Vec::new();
+    let mut jacobians = Vec::new();
+    for lambda in [0.0, 1.0, 2.0] {
+        let frame = FftOcean::new(&elf, &spreading, &FftOptions { choppiness: lambda, ..base.clone() })
+            .map_err(err)?
+            .at_time(0.0);
+        transects.push((
+            format!("choppiness λ = {lambda}"),
+            (0..1200).map(|i| i as f64 * 0.1).map(|x| (x, frame.height(x, 7.0))).collect(),
+        ));
+        if lambda > 0.0 {
+            // Density of J = 1 + Σ(Jᵢ − 1) on a 512² grid over the largest tile, 80 bins.
+            let (j_lo, j_hi, nb) = (-0.5, 2.5, 80usize);
+            let mut hist = vec![0.0; nb];
+            let m = 512;
+            let l = base.tile_sizes[0];
+            for a in 0..m {
+                for b in 0..m {
+                    let j = frame.jacobian(a as f64 * l / m as f64, b as f64 * l / m as f64);
+                    let bin = ((j - j_lo) / (j_hi - j_lo) * nb as f64).floor();
+                    if bin >= 0.0 && (bin as usize) < nb {
+                        hist[bin as usize] += 1.0;
+                    }
+                }
+            }
+            let scale = nb as f64 / ((j_hi - j_lo) * (m * m) as f64);
+            jacobians.push((
+                format!("λ = {lambda}"),
+                (0..nb).map(|b| (j_lo + (b as f64 + 0.5) * (j_hi - j_lo) / nb as f64, hist[b] * scale)).collect(),
+            ));
+        }
+    }
+    LineChart {
+        title: "FFT ocean: traced height along the wind (x from 0 to 120 m, z = 7 m), t = 0",
+        x_label: "x (m)",
+        y_label: "height (m)",
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+        series: transects,
+    }
+    .write(&dir.join("waves-fft-profile.svg"))?;
+    LineChart {
+        title: "FFT ocean: distribution of the Jacobian J = 1 + Σ(Jᵢ − 1) over the sea",
+        x_label: "J",
+        y_label: "probability density",
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+        series: jacobians,
+    }
+    .write(&dir.join("waves-fft-jacobian.svg"))
 }

@@ -1,0 +1,235 @@
+//! The FFT ocean frame as a [`brine_trace::LipschitzSum`], with one tier per cascade for the
+//! tiered method.
+//!
+//! `F(p) = y − Σ_c s_c(x, z)`: component 0 is `n₀ = y` (`L₀ = 1`, directional `|d_y|`, no
+//! curvature), component `c + 1` is `−s_c(x, z)`, cascade `c`'s cubic B-spline, with the certified
+//! bounds of [`crate::FftCascade`]: `L = √(a² + b²)`, directional `a|dₓ| + b|d_z|`, curvature
+//! `A dₓ² + 2C|dₓd_z| + B d_z²`, `−max c ≤ n ≤ −min c`, and its exact derivative along a ray.
+
+use std::cell::RefCell;
+
+use brine_trace::{
+    Aabb, FADE_CURVATURE, FADE_SLOPE, Hit, LipschitzSum, Ray, RayTiers, Step, TierBounds, TierSample, TierScratch,
+    TraceOptions, TraceStats, certify_cone_with, footprint_weight, footprint_weight_slope, trace_tiers_with,
+};
+use glam::DVec3;
+
+use crate::FftFrame;
+
+/// Relative bound of the rounding of one f64 bilinear evaluation (a few ulps of the heights).
+const EVALUATION_ROUNDING: f64 = 1e-14;
+
+impl LipschitzSum for FftFrame {
+    fn component_count(&self) -> usize {
+        self.cascade_count() + 1
+    }
+
+    fn component(&self, i: usize, p: DVec3) -> f64 {
+        if i == 0 { p.y } else { -self.cascade(i - 1).height(p.x, p.z) }
+    }
+
+    fn component_lipschitz(&self, i: usize) -> f64 {
+        if i == 0 { 1.0 } else { self.cascade(i - 1).max_slope() }
+    }
+
+    /// `|d_y|` for `y`; `a|dₓ| + b|d_z|` for a cascade.
+    fn component_directional_lipschitz(&self, i: usize, d: DVec3) -> f64 {
+        if i == 0 { d.y.abs() } else { self.cascade(i - 1).directional_max_slope(d.x, d.z) }
+    }
+
+    /// `d_y` for `y`; `−∇s·(dₓ, d_z)` for a cascade (the spline's exact derivative).
+    fn component_directional_derivative(&self, i: usize, p: DVec3, d: DVec3) -> Option<f64> {
+        if i == 0 {
+            return Some(d.y);
+        }
+        Some(-self.cascade(i - 1).height_and_derivative(p.x, p.z, d.x, d.z).1)
+    }
+
+    /// 0 for `y`; `A dₓ² + 2C|dₓd_z| + B d_z²` for a cascade.
+    fn component_directional_curvature(&self, i: usize, d: DVec3) -> f64 {
+        if i == 0 { 0.0 } else { self.cascade(i - 1).directional_curvature(d.x, d.z) }
+    }
+
+    fn component_min(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
+        if i == 0 { a.y.min(b.y) } else { -self.cascade(i - 1).height_bounds().1 }
+    }
+
+    fn component_max(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
+        if i == 0 { a.y.max(b.y) } else { -self.cascade(i - 1).height_bounds().0 }
+    }
+
+    /// The longest wavelength of the cascade; `y` has none.
+    fn component_feature_size(&self, i: usize) -> f64 {
+        if i == 0 { f64::INFINITY } else { self.cascade(i - 1).longest_wavelength() }
+    }
+
+    fn component_fade_distance(&self, i: usize, direction: DVec3, footprint_angle: f64) -> f64 {
+        if i == 0 { f64::INFINITY } else { self.cascade(i - 1).fade_distance(direction, footprint_angle) }
+    }
+
+    #[inline]
+    fn value(&self, p: DVec3) -> f64 {
+        p.y - self.height(p.x, p.z)
+    }
+
+    fn zero_set_bounds(&self) -> Aabb {
+        let (lo, hi) = self.height_bounds();
+        Aabb::slab_y(lo, hi)
+    }
+
+    fn trace_tiered(
+        &self,
+        ray: &Ray,
+        t_enter: f64,
+        t_exit: f64,
+        options: &TraceOptions,
+        stats: &mut TraceStats,
+        log: Option<&mut Vec<Step>>,
+    ) -> Option<Hit> {
+        SCRATCH.with(|cell| {
+            let mut guard = cell.borrow_mut();
+            let (scratch, state) = &mut *guard;
+            let mut tiers = CascadeTiers::new(self, state, ray, t_exit, options.footprint_angle);
+            trace_tiers_with(scratch, &mut tiers, ray, t_enter, t_exit, options, stats, log)
+        })
+    }
+
+    /// Cones need every ray of the cone to see the same surface: with footprint fading (weights
+    /// that differ from ray to ray) the cone gives up, as the generic default does.
+    fn certify_cone(
+        &self,
+        ray: &Ray,
+        half_angle: f64,
+        t_enter: f64,
+        t_exit: f64,
+        options: &TraceOptions,
+        stats: &mut TraceStats,
+    ) -> f64 {
+        if options.footprint_angle > 0.0 {
+            return t_enter;
+        }
+        SCRATCH.with(|cell| {
+            let mut guard = cell.borrow_mut();
+            let (scratch, state) = &mut *guard;
+            let mut tiers = CascadeTiers::new(self, state, ray, t_exit, 0.0);
+            certify_cone_with(scratch, &mut tiers, ray, half_angle, t_enter, t_exit, options, stats)
+        })
+    }
+}
+
+thread_local! {
+    static SCRATCH: RefCell<(TierScratch, Vec<CascadeOnRay>)> = RefCell::new((TierScratch::default(), Vec::new()));
+}
+
+/// One cascade along one ray.
+#[derive(Debug, Clone, Copy)]
+struct CascadeOnRay {
+    cascade: usize,
+    /// `−max H`, `−min H`.
+    min: f64,
+    max: f64,
+    /// Directional slope bound along the ray.
+    lipschitz: f64,
+    /// Directional curvature bound along the ray.
+    curvature: f64,
+    /// 3-D slope bound (cones).
+    spread: f64,
+    /// Fade distance `T` (m), `+∞` without fading.
+    fade: f64,
+}
+
+/// [`RayTiers`] of an [`FftFrame`] along one ray: tier 0 is `y`, then one tier per cascade, in
+/// decreasing order of `(max − min)/L(d̂)` (the longest cascades first: far from the surface only
+/// they are evaluated).
+struct CascadeTiers<'a> {
+    frame: &'a FftFrame,
+    cascades: &'a [CascadeOnRay],
+    origin: DVec3,
+    direction: DVec3,
+    t_exit: f64,
+    error: f64,
+}
+
+impl<'a> CascadeTiers<'a> {
+    fn new(
+        frame: &'a FftFrame,
+        state: &'a mut Vec<CascadeOnRay>,
+        ray: &Ray,
+        t_exit: f64,
+        footprint_angle: f64,
+    ) -> Self {
+        let d = ray.direction();
+        state.clear();
+        let mut size = 0.0f64;
+        for (c, cascade) in frame.cascades().iter().enumerate() {
+            let (lo, hi) = cascade.height_bounds();
+            size += lo.abs().max(hi.abs());
+            state.push(CascadeOnRay {
+                cascade: c,
+                min: -hi,
+                max: -lo,
+                lipschitz: cascade.directional_max_slope(d.x, d.z),
+                curvature: cascade.directional_curvature(d.x, d.z),
+                spread: cascade.max_slope(),
+                fade: if footprint_angle > 0.0 { cascade.fade_distance(d, footprint_angle) } else { f64::INFINITY },
+            });
+        }
+        let key = |c: &CascadeOnRay| if c.lipschitz > 0.0 { (c.max - c.min) / c.lipschitz } else { f64::INFINITY };
+        state.sort_by(|a, b| key(b).total_cmp(&key(a)));
+        Self { frame, cascades: state, origin: ray.origin(), direction: d, t_exit, error: EVALUATION_ROUNDING * size }
+    }
+}
+
+impl RayTiers for CascadeTiers<'_> {
+    fn tier_count(&self) -> usize {
+        self.cascades.len() + 1
+    }
+
+    fn bounds(&mut self, tier: usize, t: f64) -> TierBounds {
+        if tier == 0 {
+            let (y0, y1) = (self.origin.y + self.direction.y * t, self.origin.y + self.direction.y * self.t_exit);
+            return TierBounds { min: y0.min(y1), max: y0.max(y1), lipschitz: self.direction.y.abs(), curvature: 0.0 };
+        }
+        let c = self.cascades[tier - 1];
+        if c.fade <= t {
+            return TierBounds::ZERO; // faded out for good
+        }
+        if c.fade >= 1.5 * self.t_exit {
+            return TierBounds { min: c.min, max: c.max, lipschitz: c.lipschitz, curvature: c.curvature };
+        }
+        // w·n with w ∈ [0, 1] non-increasing (brine-trace footprint.rs): |(wn)'| ≤ L + |w'| size,
+        // |(wn)''| ≤ K + 2|w'| L + |w''| size, |w'| ≤ 4.5/t and |w''| ≤ 63/t² while fading.
+        let size = c.min.abs().max(c.max.abs());
+        let tt = t.max(c.fade / 1.5);
+        TierBounds {
+            min: c.min.min(0.0),
+            max: c.max.max(0.0),
+            lipschitz: c.lipschitz + FADE_SLOPE * size / tt,
+            curvature: c.curvature + 2.0 * FADE_SLOPE * c.lipschitz / tt + FADE_CURVATURE * size / (tt * tt),
+        }
+    }
+
+    fn sample(&mut self, tier: usize, t: f64) -> TierSample {
+        if tier == 0 {
+            return TierSample { value: self.origin.y + self.direction.y * t, slope: self.direction.y, terms: 0 };
+        }
+        let c = self.cascades[tier - 1];
+        let w = footprint_weight(c.fade, t);
+        if w == 0.0 {
+            return TierSample { value: 0.0, slope: 0.0, terms: 0 };
+        }
+        let p = self.origin + t * self.direction;
+        let d = self.direction;
+        let (h, dh) = self.frame.cascade(c.cascade).height_and_derivative(p.x, p.z, d.x, d.z);
+        // n = −w h;  dn/dt = −(w' h + w dh/dt).
+        TierSample { value: -w * h, slope: -(footprint_weight_slope(c.fade, t) * h + w * dh), terms: 1 }
+    }
+
+    fn spread_lipschitz(&self, tier: usize) -> f64 {
+        if tier == 0 { 1.0 } else { self.cascades[tier - 1].spread }
+    }
+
+    fn error_bound(&self) -> f64 {
+        self.error
+    }
+}

@@ -1,0 +1,82 @@
+//! Mip-mapped slope statistics of an FFT ocean frame: the mean shading gradient over a pixel
+//! footprint and the slope covariance the footprint hides, for the BRDF.
+
+use glam::{DVec2, DVec3};
+
+use crate::{FftFrame, FftPyramid};
+
+/// The slopes of an FFT sea over a pixel footprint.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FilteredSlopes {
+    /// Mean shading gradient `⟨∇h⟩ = Σ_c ⟨∇h_c⟩` over the footprint (dimensionless); the upward
+    /// normal is `(−gₓ, 1, −g_z)/‖·‖`.
+    pub gradient: DVec2,
+    /// Covariance `(⟨ζₓ²⟩ − ⟨ζₓ⟩², ⟨ζₓζ_z⟩ − ⟨ζₓ⟩⟨ζ_z⟩, ⟨ζ_z²⟩ − ⟨ζ_z⟩²)` of the slopes inside the
+    /// footprint, summed over the cascades (dimensionless, world axes): the roughness the
+    /// footprint averages away, for the BRDF.
+    pub covariance: DVec3,
+}
+
+/// Mip-mapped slope moments of an [`FftFrame`] (LEAN mapping on the FFT grids): per cascade a
+/// pyramid of `(ζₓ, ζ_z, ζₓ², ζₓζ_z, ζ_z²)`, `ζ` the shading gradient at the grid points.
+///
+/// Over a footprint the mean gradient shades the pixel and the covariance
+/// `⟨ζζᵀ⟩ − ⟨ζ⟩⟨ζ⟩ᵀ` (positive semi-definite: each texel and each trilinear weight is a mean) is the
+/// slope variance the footprint resolves no more: adding it to the BRDF's unresolved variance
+/// keeps the mean reflectance of a distant sea (Bruneton et al. 2010's seamless transition from
+/// geometry to BRDF). The cascades are independent, so their means and covariances add. A
+/// footprint is a Gaussian of standard deviation `s`, read at box width `√12 s` (see
+/// [`FftPyramid`]); at `s = 0` the gradient is [`FftFrame::gradient`] and the covariance that of
+/// the bilinear interpolation (0 at a grid point); beyond the largest tile it is the whole sea's.
+///
+/// # References
+/// Olano M., Baker D. 2010, "LEAN mapping", I3D; Bruneton E., Neyret F., Holzschuch N. 2010,
+/// CGF 29(2) (geometry-to-BRDF transition); equation sheet §11.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FftSlopeFilter {
+    cascades: Vec<FftPyramid<5>>,
+}
+
+impl FftSlopeFilter {
+    /// Builds the pyramids of every cascade of `frame` (`O(N²)` per cascade; once per frame).
+    pub fn new(frame: &FftFrame) -> Self {
+        let cascades = frame
+            .cascades()
+            .iter()
+            .map(|c| {
+                let base = c
+                    .gradients()
+                    .iter()
+                    .map(|g| {
+                        let (x, z) = (f64::from(g[0]), f64::from(g[1]));
+                        [x, z, x * x, x * z, z * z]
+                    })
+                    .collect();
+                FftPyramid::new(c.resolution(), c.spacing(), base)
+            })
+            .collect();
+        Self { cascades }
+    }
+
+    /// Mean gradient and slope covariance over a Gaussian footprint.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: footprint centre on the sea (m).
+    /// - `footprint_m`: standard deviation `s` (m), `≥ 0` (a square pixel of side `ℓ` on the sea:
+    ///   `s ≈ ℓ/√12`).
+    ///
+    /// # Returns
+    /// [`FilteredSlopes`].
+    pub fn filtered(&self, x: f64, z: f64, footprint_m: f64) -> FilteredSlopes {
+        debug_assert!(footprint_m >= 0.0);
+        let (mut g, mut cov) = (DVec2::ZERO, DVec3::ZERO);
+        for p in &self.cascades {
+            let m = p.footprint_mean(x, z, footprint_m);
+            g += DVec2::new(m[0], m[1]);
+            let (xx, zz) = ((m[2] - m[0] * m[0]).max(0.0), (m[4] - m[1] * m[1]).max(0.0));
+            let xz = (m[3] - m[0] * m[1]).clamp(-(xx * zz).sqrt(), (xx * zz).sqrt());
+            cov += DVec3::new(xx, xz, zz);
+        }
+        FilteredSlopes { gradient: g, covariance: cov }
+    }
+}

@@ -1,0 +1,121 @@
+//! Mip-mapped statistics of the displacement Jacobian of an FFT ocean (Dupuy & Bruneton 2012):
+//! the mean and variance of `J` over a pixel footprint from per-cascade pyramids.
+
+use brine_waves::{FftFrame, FftPyramid};
+
+use crate::statistics::Moments;
+
+/// Whitecap statistics of an FFT ocean frame: per cascade, a mip-mapped pyramid of
+/// `kᵢ = Jᵢ − 1 + 1/n` and `kᵢ²` (Dupuy & Bruneton 2012; `jdupuy/whitecaps`, as in equation
+/// sheet §10), and the mean and variance of `J` over a pixel footprint:
+///
+/// `μ = Σᵢ ⟨kᵢ⟩`,   `σ² = Σᵢ (⟨kᵢ²⟩ − ⟨kᵢ⟩²)`.
+///
+/// `kᵢ = 1/n + aᵢ + bᵢ + aᵢbᵢ − cᵢ²` with `aᵢ = λ ∂Dₓ,ᵢ/∂x`, `bᵢ = λ ∂D_z,ᵢ/∂z`, `cᵢ = λ ∂Dₓ,ᵢ/∂z`
+/// is `Jᵢ − 1 + 1/n`, so `μ` is `1 + Σ (Jᵢ − 1)` averaged over the footprint: the Jacobian of the sum
+/// of the cascades' displacements without the cross-cascade products (the published
+/// approximation). The variance neglects the correlation between cascades — independent draws on
+/// non-commensurate tiles.
+///
+/// **Footprints.** Level 0 holds `kᵢ` at the grid points of cascade `i` (spacing `Δᵢ`); level `l`
+/// the means over `2ˡ × 2ˡ` blocks, which stand for a box filter of width `2ˡΔᵢ`. A Gaussian
+/// footprint of standard deviation `s` reads the level of width `√12 s` (same spread), linearly
+/// between levels and bilinearly within one (trilinear filtering, as a GPU does with the
+/// published mip-maps). The grid holds `Jᵢ` on the displaced surface (`brine-waves`' Eulerian
+/// resampling: the sheet seen from above each grid point), so a footprint's mean is over the
+/// surface's area, not over rest positions as in the published code.
+///
+/// # References
+/// Dupuy J., Bruneton E. 2012, "Real-time animation and rendering of ocean whitecaps", SIGGRAPH
+/// Asia Technical Briefs (mip-mapped `J` and `J²` per FFT cascade; `jdupuy/whitecaps`:
+/// `whitecap_precompute.glsl`, `ocean.glsl`); equation sheet §10.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FftJacobianStatistics {
+    /// Per cascade, the pyramid of `(kᵢ, kᵢ²)`.
+    cascades: Vec<FftPyramid<2>>,
+}
+
+impl FftJacobianStatistics {
+    /// Builds the pyramids of every cascade of `frame` (`O(N²)` per cascade; once per frame).
+    pub fn new(frame: &FftFrame) -> Self {
+        let share = 1.0 / frame.cascade_count() as f64;
+        let cascades = frame
+            .cascades()
+            .iter()
+            .map(|c| {
+                let base = c
+                    .jacobians()
+                    .iter()
+                    .map(|&j| {
+                        let k = f64::from(j) - 1.0 + share;
+                        [k, k * k]
+                    })
+                    .collect();
+                FftPyramid::new(c.resolution(), c.spacing(), base)
+            })
+            .collect();
+        Self { cascades }
+    }
+
+    /// Number of cascades.
+    pub fn cascade_count(&self) -> usize {
+        self.cascades.len()
+    }
+
+    /// Grid spacing `Δᵢ` (m) of the finest cascade: footprints below `Δ/√12` read level 0 only.
+    pub fn finest_spacing(&self) -> f64 {
+        self.cascades.iter().map(FftPyramid::spacing).fold(f64::INFINITY, f64::min)
+    }
+
+    /// Tile size (m) of the largest cascade: footprints beyond it read every cascade's tile mean.
+    pub fn largest_tile(&self) -> f64 {
+        self.cascades.iter().map(|p| p.spacing() * p.resolution() as f64).fold(0.0, f64::max)
+    }
+
+    /// `(⟨kᵢ⟩, ⟨kᵢ²⟩)` of cascade `i` over a Gaussian footprint of standard deviation
+    /// `footprint_m` centred at `(x, z)`.
+    ///
+    /// # Panics
+    /// If `cascade ≥ cascade_count()`.
+    pub fn cascade_moments(&self, cascade: usize, x: f64, z: f64, footprint_m: f64) -> (f64, f64) {
+        let [m, m2] = self.cascades[cascade].footprint_mean(x, z, footprint_m);
+        (m, m2)
+    }
+
+    /// Mean and variance of `J` over a pixel footprint.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: centre of the footprint on the sea (m), the hit point's horizontal position.
+    /// - `footprint_m`: standard deviation `s` (m) of a Gaussian footprint, `≥ 0` (for a square
+    ///   pixel of side `ℓ` on the sea, `s ≈ ℓ/√12`, as for [`crate::JacobianStatistics::moments_at`]).
+    ///
+    /// # Returns
+    /// [`Moments`] `(μ, σ²)`; at `s = 0` `μ` is `1 + Σᵢ (Jᵢ − 1)` interpolated at the point and
+    /// `σ²` the spread of the bilinear interpolation (0 on a grid point); beyond the largest tile
+    /// both are the whole sea's.
+    ///
+    /// # References
+    /// Dupuy & Bruneton 2012; equation sheet §10 (`μ = Σ⟨kᵢ⟩`, `σ² = Σ⟨kᵢ²⟩ − Σ⟨kᵢ⟩²`).
+    #[inline]
+    pub fn moments_at(&self, x: f64, z: f64, footprint_m: f64) -> Moments {
+        debug_assert!(footprint_m >= 0.0);
+        let (mut mu, mut sigma2) = (0.0, 0.0);
+        for p in &self.cascades {
+            let [m, m2] = p.footprint_mean(x, z, footprint_m);
+            mu += m;
+            sigma2 += (m2 - m * m).max(0.0);
+        }
+        Moments { mu, sigma2 }
+    }
+
+    /// Mean and variance of `J` over the whole sea (every cascade's tile mean).
+    pub fn sea_moments(&self) -> Moments {
+        let (mut mu, mut sigma2) = (0.0, 0.0);
+        for p in &self.cascades {
+            let [m, m2] = p.mean();
+            mu += m;
+            sigma2 += (m2 - m * m).max(0.0);
+        }
+        Moments { mu, sigma2 }
+    }
+}
