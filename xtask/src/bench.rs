@@ -8,7 +8,7 @@
 const BENCHES: &[(&str, &str, &[&str])] = &[
     (
         "frame",
-        "one 640×480 frame, 100 waves, every phenomenon, 1 spp: median of 5 (brine-render)",
+        "one 640×480 frame, 100 waves (and the FFT sea), every phenomenon, 1 spp: median of 5 (brine-render)",
         &["bench", "-p", "brine-render", "--bench", "frame"],
     ),
     (

@@ -2,11 +2,59 @@
 //! phenomenon on (foam, whitecaps, spray, sub-surface crests, aerial perspective, clouds, glare),
 //! 1 sample per pixel: the median of 5 renders, then one profiled render for the share of each
 //! stage (the paper's Table 3; Darles et al. report about 3 minutes for a frame of 50 waves).
+//! The same scene on the FFT ocean (`surface = "fft"`, 4 cascades of 256²) is measured alongside,
+//! in the same process, and the ratio printed.
 
 use std::time::Instant;
 
-use brine_render::scene::CloudConfig;
+use brine_render::scene::{CloudConfig, SurfaceKind};
 use brine_render::{RenderOptions, Scene, World, render_world};
+
+/// Renders per variant; the median is reported.
+const RUNS: usize = 5;
+
+fn median(v: &mut [f64]) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// Median whole-frame and setup times (s) of `scene`, with its summary and stage shares printed.
+fn measure(label: &str, scene: &Scene) -> f64 {
+    let (mut setup, mut total) = (Vec::new(), Vec::new());
+    let mut last = None;
+    for _ in 0..RUNS {
+        let t0 = Instant::now();
+        let world = World::new(scene).expect("bench scene is valid");
+        let t1 = Instant::now();
+        let frame = render_world(scene, &world, &RenderOptions::default(), &|| {}).expect("renders");
+        let t2 = Instant::now();
+        setup.push((t1 - t0).as_secs_f64());
+        total.push((t2 - t0).as_secs_f64());
+        last = Some(frame);
+    }
+    let (s, f) = (median(&mut setup), median(&mut total));
+    let frame = last.expect("ran");
+    println!("\n{label}");
+    println!("whole frame (median)                   {f:>8.3} s   (target ≤ 0.5 s)");
+    println!("  scene setup (fit or FFT, sky, calibration)  {s:>8.3} s");
+    println!(
+        "evaluations of F per primary ray: {:.2}; secondary rays: {} ({:.2} evaluations each)",
+        frame.stats.evaluations_per_ray(),
+        frame.secondary_stats.rays,
+        frame.secondary_stats.evaluations_per_ray()
+    );
+    let world = World::new(scene).expect("bench scene is valid");
+    let profiled = render_world(scene, &world, &RenderOptions { profile: true, ..RenderOptions::default() }, &|| {})
+        .expect("renders");
+    let stages = profiled.stages.expect("profiled");
+    let named = stages.named();
+    let sum: f64 = named.iter().map(|(_, t)| t).sum();
+    println!("share of each stage (one profiled frame, thread time):");
+    for (name, t) in named {
+        println!("  {name:<36} {:>6.1} %  ({:.3} s)", 100.0 * t / sum, t);
+    }
+    f
+}
 
 fn main() {
     let mut scene = Scene::default_scene();
@@ -15,45 +63,12 @@ fn main() {
     scene.camera.spp = 1;
     scene.sea.waves = 100;
     scene.sky.clouds = Some(CloudConfig::default());
-    let runs = 5;
     println!(
-        "frame benchmark: 640×480, 100 waves, every phenomenon on, 1 spp, {} threads, median of {runs}",
+        "frame benchmark: 640×480, every phenomenon on, 1 spp, {} threads, median of {RUNS}",
         rayon::current_num_threads()
     );
-    let (mut setup, mut total) = (Vec::new(), Vec::new());
-    let mut last = None;
-    for _ in 0..runs {
-        let t0 = Instant::now();
-        let world = World::new(&scene).expect("bench scene is valid");
-        let t1 = Instant::now();
-        let frame = render_world(&scene, &world, &RenderOptions::default(), &|| {}).expect("renders");
-        let t2 = Instant::now();
-        setup.push((t1 - t0).as_secs_f64());
-        total.push((t2 - t0).as_secs_f64());
-        last = Some(frame);
-    }
-    let median = |v: &mut Vec<f64>| {
-        v.sort_by(f64::total_cmp);
-        v[v.len() / 2]
-    };
-    let (s, f) = (median(&mut setup), median(&mut total));
-    let frame = last.expect("ran");
-    println!("whole frame (median)          {f:>8.3} s   (target ≤ 0.5 s)");
-    println!("  scene setup (fit, sky, calibration)  {s:>8.3} s");
-    println!(
-        "evaluations of F per primary ray: {:.2}; secondary rays: {} ({:.2} evaluations each)",
-        frame.stats.evaluations_per_ray(),
-        frame.secondary_stats.rays,
-        frame.secondary_stats.evaluations_per_ray()
-    );
-    let world = World::new(&scene).expect("bench scene is valid");
-    let profiled = render_world(&scene, &world, &RenderOptions { profile: true, ..RenderOptions::default() }, &|| {})
-        .expect("renders");
-    let stages = profiled.stages.expect("profiled");
-    let named = stages.named();
-    let sum: f64 = named.iter().map(|(_, t)| t).sum();
-    println!("\nshare of each stage (one profiled frame, thread time):");
-    for (name, t) in named {
-        println!("  {name:<36} {:>6.1} %  ({:.3} s)", 100.0 * t / sum, t);
-    }
+    let trochoids = measure("trochoids, N = 100 (the issue's frame)", &scene);
+    scene.sea.surface = SurfaceKind::Fft;
+    let fft = measure("FFT ocean, 4 cascades × 256² (same scene, surface = \"fft\")", &scene);
+    println!("\nFFT / trochoids frame time: {:.2}×", fft / trochoids);
 }
