@@ -170,6 +170,8 @@ pub fn trace_temporal<S: LipschitzSum + ?Sized>(
     stats.evaluations += back_stats.evaluations;
     stats.component_evaluations += back_stats.component_evaluations;
     stats.refinement_evaluations += back_stats.refinement_evaluations;
+    stats.pruned_evaluations += back_stats.pruned_evaluations;
+    stats.probe_evaluations += back_stats.probe_evaluations;
     let forward = match found {
         None => TraceOptions { t_min: t_prev, ..*options },
         Some(b) => {

@@ -396,6 +396,9 @@ fn run<R: RayTiers + ?Sized>(
         if !(s >= 0.0) {
             s = 0.0;
         }
+        if k < n {
+            stats.pruned_evaluations += 1;
+        }
         if t + s >= t_exit {
             log_step(&mut log, t, t_exit, StepKind::Certified);
             return Outcome::Miss;
@@ -425,6 +428,7 @@ fn run<R: RayTiers + ?Sized>(
         let p = newton.clamp(s, h).min(t_exit - t);
         let tp = t + p;
         stats.evaluations += 1;
+        stats.probe_evaluations += 1;
         sample_range(scratch, tiers, stats, 0, n, tp);
         let gp: f64 = scratch.value.iter().sum();
         if gp <= 0.0 {
