@@ -44,6 +44,24 @@ fn main() {
     let set = fit_trochoids(&pm, &spreading, n, 1, &fit).expect("valid fit");
     let sea = TracedTrochoids::new(&set, 0.0);
     let footprint = 2.0 * (0.5 * FOV_DEG.to_radians()).tan() / HEIGHT as f64;
+    if let Some(pixel) = args.get(3).and_then(|a| a.parse::<usize>().ok()) {
+        // Debug: one ray of the default view (index into the subsampled grid).
+        let d = directions(-9.0, stride)[pixel];
+        let o = TraceOptions {
+            method: Method::Tiered,
+            t_max: 3000.0,
+            min_step: 1e-3,
+            min_step_relative: 1e-4,
+            tolerance: 1e-4,
+            tolerance_relative: 1e-6,
+            footprint_angle: footprint,
+            ..TraceOptions::default()
+        };
+        let mut s = TraceStats::default();
+        let hit = trace(&sea, &Ray::new(DVec3::new(0.0, 10.0, 0.0), d).expect("unit"), &o, &mut s);
+        println!("{hit:?} {s:?}");
+        return;
+    }
     println!("N = {n}, every {stride}th pixel, tiered + footprint");
     println!("| camera | tolerance | hits | mean | median | p99 | pruned | full certified | probe | refinement | time µs/ray |");
     println!("|---|---|---|---|---|---|---|---|---|---|---|");

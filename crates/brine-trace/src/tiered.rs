@@ -31,6 +31,9 @@ pub struct TierScratch {
     spread: Vec<f64>,
     /// Unoriented derivative of the first samples (while the side is unknown).
     raw_slope: Vec<f64>,
+    /// Whether the stored slope of each tier is its sampled derivative with a finite curvature
+    /// bound (`false`: the slope is the Lipschitz lower bound `−L`).
+    exact: Vec<bool>,
 }
 
 impl TierScratch {
@@ -47,6 +50,8 @@ impl TierScratch {
             v.clear();
             v.resize(n, 0.0);
         }
+        self.exact.clear();
+        self.exact.resize(n, false);
         self.lo_suffix.clear();
         self.lo_suffix.resize(n + 1, 0.0);
         self.bounds.clear();
@@ -85,7 +90,9 @@ impl TierScratch {
         if slope.is_finite() && b.curvature.is_finite() {
             self.slope[j] = (sign * slope).max(-b.lipschitz);
             self.curvature[j] = b.curvature;
+            self.exact[j] = true;
         } else {
+            self.exact[j] = false;
             // Unknown derivative or curvature: the tier can only fall at its Lipschitz rate.
             self.slope[j] = -b.lipschitz;
             self.curvature[j] = 0.0;
@@ -161,6 +168,102 @@ impl TierScratch {
         }
         k
     }
+}
+
+/// The Newton probe is tried when `K·p < NEWTON_REACH·(|D| − η)` (`p` the Newton step, `D` the
+/// derivative, `K` the curvature bound): for `NEWTON_REACH ≤ 1` the derivative provably stays
+/// negative up to the probe; above, the probe's own derivative must confirm it (else it is wasted).
+const NEWTON_REACH: f64 = 2.0;
+
+/// The oriented function `G` and its derivative `G'` sampled (every tier) at `t`.
+#[derive(Debug, Clone, Copy)]
+struct Sample {
+    t: f64,
+    g: f64,
+    d: f64,
+}
+
+impl Sample {
+    /// Offsets `(l, u)` from `t` of the interval that holds the crossing of a decreasing `G`:
+    /// with `|G − g| ≤ ε`, `|G' − d| ≤ η + K|s|` (`K` the curvature bound), `G` keeps the sign of
+    /// `g` over `|s| < l` (lower bound `|g| − ε − (|d| + η)|s| − K s²/2 > 0`), and has the
+    /// opposite sign at `|s| = u` (upper bound `|g| + ε − (|d| − η)|s| + K s²/2 < 0`); both in the
+    /// direction of the crossing (`+` for `g > 0`, `−` below). `u = ∞` when the upper bound never
+    /// certifies the sign change.
+    fn crossing_interval(&self, curvature: f64, eps: f64, eta: f64) -> (f64, f64) {
+        let a = self.g.abs();
+        let near = first_root(a - eps, self.d - eta, curvature);
+        let far = first_reach(a + eps, -(self.d + eta), curvature);
+        if self.g > 0.0 { (near, far) } else { (-far, -near) }
+    }
+}
+
+/// First root `s > 0` of `c + d s − k s²/2` (`k ≥ 0`; `0` if `c ≤ 0`, `∞` if none).
+fn first_root(c: f64, d: f64, k: f64) -> f64 {
+    if !(c > 0.0) || k == f64::INFINITY {
+        return 0.0;
+    }
+    if k > 0.0 {
+        let disc = (d * d + 2.0 * k * c).sqrt();
+        if d > 0.0 { (d + disc) / k } else { 2.0 * c / (disc - d) }
+    } else if d < 0.0 {
+        c / -d
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// First `s > 0` where `c − m s + k s²/2` reaches 0 (`c ≥ 0`, `k ≥ 0`), `∞` if it never does.
+fn first_reach(c: f64, m: f64, k: f64) -> f64 {
+    if !(m > 0.0) || !k.is_finite() {
+        return f64::INFINITY;
+    }
+    let disc = m * m - 2.0 * k * c;
+    if disc < 0.0 { f64::INFINITY } else { 2.0 * c / (m + disc.sqrt()) }
+}
+
+/// Refines the crossing of a `G` that provably decreases on `[a.t, b.t]` (`a.g > 0 ≥ b.g`):
+/// each point narrows the interval certified by [`Sample::crossing_interval`], the next point is
+/// Newton's estimate from the end nearer the surface, clamped into the interval; stops when the
+/// interval is no longer than `tolerance` and returns its midpoint.
+#[allow(clippy::too_many_arguments)]
+fn refine_monotone(
+    mut a: Sample,
+    mut b: Sample,
+    curvature: f64,
+    eps: f64,
+    eta: f64,
+    tolerance: f64,
+    mut sample: impl FnMut(f64) -> (f64, f64),
+) -> f64 {
+    let (la, ua) = a.crossing_interval(curvature, eps, eta);
+    let (lb, ub) = b.crossing_interval(curvature, eps, eta);
+    let mut lo = a.t.max(a.t + la).max(b.t + lb);
+    let mut hi = b.t.min(a.t + ua).min(b.t + ub);
+    for _ in 0..60 {
+        if !(hi - lo > tolerance) {
+            break;
+        }
+        let newton = if a.g.abs() * b.d.abs() <= b.g.abs() * a.d.abs() {
+            a.t + a.g / a.d.abs().max(f64::MIN_POSITIVE)
+        } else {
+            b.t - b.g / b.d.abs().max(f64::MIN_POSITIVE)
+        };
+        let x = if newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+        let (g, d) = sample(x);
+        let p = Sample { t: x, g, d };
+        let (l, u) = p.crossing_interval(curvature, eps, eta);
+        if g > 0.0 {
+            a = p;
+            lo = lo.max(x + l).max(x);
+            hi = hi.min(x + u);
+        } else {
+            b = p;
+            hi = hi.min(x + u).min(x);
+            lo = lo.max(x + l);
+        }
+    }
+    if lo <= hi { 0.5 * (lo + hi) } else { 0.5 * (a.t + b.t) }
 }
 
 /// How far one tier can fall over `s` by its quadratic bound: `−∫₀ˢ max(d − K u, −L) du`.
@@ -407,6 +510,68 @@ fn run<R: RayTiers + ?Sized>(
             // The cone is as wide as its step: its children take over from here.
             return Outcome::Free(t + s);
         }
+        // Every tier evaluated: the crossing may be certified from this point alone, or bracketed
+        // by a Newton probe on a stretch where `G` provably decreases.
+        let tol = options.tolerance_at(t);
+        let mut full = None;
+        if cone == 0.0 && k == n && scratch.exact.iter().all(|&e| e) {
+            let g: f64 = scratch.value.iter().sum();
+            let d: f64 = scratch.slope.iter().sum();
+            let curvature: f64 = scratch.bounds.iter().map(|b| b.curvature).sum();
+            full = Some((g, d));
+            let here = Sample { t, g, d };
+            let (lo, hi) = here.crossing_interval(curvature, eps, eta);
+            let lo = lo.max(s);
+            if lo <= hi && hi - lo <= tol && t + hi <= t_exit {
+                // The lower bound is positive up to t + lo, the upper bound negative at t + hi: the
+                // first crossing lies between, no further evaluation needed.
+                log_step(&mut log, t + lo, t + hi, StepKind::Bracket);
+                let t_hit = t + 0.5 * (lo + hi);
+                stats.hits += 1;
+                return Outcome::Hit(Hit { t: t_hit, point: ray.at(t_hit), entering: sign > 0.0, steps });
+            }
+            let newton = if d + eta < 0.0 && g > 0.0 { g / -d + 0.5 * tol } else { 0.0 };
+            if newton > s && t + newton < t_exit && curvature * newton < NEWTON_REACH * (-d - eta) {
+                let tp = t + newton;
+                stats.evaluations += 1;
+                stats.probe_evaluations += 1;
+                sample_range(scratch, tiers, stats, 0, n, tp);
+                let gp: f64 = scratch.value.iter().sum();
+                let dp: f64 = scratch.slope.iter().sum();
+                // G' ≤ min(d + η + K(u − t), dp + η + K(tp − u)) < 0 on [t, tp]: G decreases.
+                let monotone = d + dp + 2.0 * eta + curvature * newton < 0.0;
+                if monotone && gp > 0.0 {
+                    log_step(&mut log, t, tp, StepKind::Certified);
+                    t = tp;
+                    guess = newton;
+                    k = n;
+                    sampled = n;
+                    continue;
+                }
+                if monotone {
+                    log_step(&mut log, t, tp, StepKind::Bracket);
+                    let mut refinement = 0u64;
+                    let t_hit = refine_monotone(
+                        here,
+                        Sample { t: tp, g: gp, d: dp },
+                        curvature,
+                        eps,
+                        eta,
+                        tol,
+                        |x| {
+                            refinement += 1;
+                            sample_range(scratch, tiers, stats, 0, n, x);
+                            (scratch.value.iter().sum(), scratch.slope.iter().sum())
+                        },
+                    );
+                    stats.evaluations += refinement;
+                    stats.refinement_evaluations += refinement;
+                    stats.hits += 1;
+                    return Outcome::Hit(Hit { t: t_hit, point: ray.at(t_hit), entering: sign > 0.0, steps });
+                }
+                // Not provably monotone: the probe is wasted; go on from t.
+            }
+        }
         if s >= h {
             log_step(&mut log, t, t + s, StepKind::Certified);
             t += s;
@@ -421,9 +586,7 @@ fn run<R: RayTiers + ?Sized>(
         }
 
         // Every tier is evaluated and the certified step is shorter than h: probe.
-        let g: f64 = scratch.value.iter().sum();
-        let slope: f64 = scratch.slope.iter().sum();
-        let tol = options.tolerance_at(t);
+        let (g, slope) = full.unwrap_or_else(|| (scratch.value.iter().sum(), scratch.slope.iter().sum()));
         let newton = if slope < 0.0 { g / -slope + 0.5 * tol } else { h };
         let p = newton.clamp(s, h).min(t_exit - t);
         let tp = t + p;
