@@ -90,6 +90,8 @@ fn main() {
                     parts.merge(&s);
                 }
             }
+            let dbg: Vec<u64> = brine_trace::DBG.iter().map(|a| a.swap(0, std::sync::atomic::Ordering::Relaxed)).collect();
+            eprintln!("advance {} bracket {} wasted {} single-point {} old-probe {}", dbg[0], dbg[1], dbg[2], dbg[3], dbg[4]);
             let us = start.elapsed().as_secs_f64() * 1e6 / dirs.len() as f64;
             per_hit.sort_by(f64::total_cmp);
             let h = per_hit.len().max(1) as f64;

@@ -158,6 +158,20 @@ impl TierScratch {
         best
     }
 
+    /// The certified step *backward* (toward the ray origin) from the stored samples of the first
+    /// `k` tiers: [`step`](Self::step) with every derivative reversed. The bounds hold there too:
+    /// they were read at or before the start of the step.
+    fn backward_step(&mut self, k: usize, eps: f64, eta: f64, guess: f64) -> f64 {
+        for d in &mut self.slope[..k] {
+            *d = -*d;
+        }
+        let s = self.step(k, eps, eta, guess, (0.0, 0.0));
+        for d in &mut self.slope[..k] {
+            *d = -*d;
+        }
+        s
+    }
+
     /// Tiers to evaluate at the next point after a step `s`: those whose key is at least
     /// `DEPTH_KEEP·s`, stopping at the first that is not (at least one).
     fn next_depth(&self, s: f64) -> usize {
@@ -173,6 +187,11 @@ impl TierScratch {
 /// The Newton probe is tried when `K·p < NEWTON_REACH·(|D| − η)` (`p` the Newton step, `D` the
 /// derivative, `K` the curvature bound): for `NEWTON_REACH ≤ 1` the derivative provably stays
 /// negative up to the probe; above, the probe's own derivative must confirm it (else it is wasted).
+/// Over-relaxation factor `ω` of the tiered step.
+const RELAXATION: f64 = 1.4;
+
+/// debug
+pub static DBG: [std::sync::atomic::AtomicU64; 5] = [const { std::sync::atomic::AtomicU64::new(0) }; 5];
 const NEWTON_REACH: f64 = 2.0;
 
 /// The oriented function `G` and its derivative `G'` sampled (every tier) at `t`.
@@ -454,6 +473,7 @@ fn run<R: RayTiers + ?Sized>(
     }
     let mut sampled = k;
     let mut guess = f64::NAN;
+    let mut relax = RELAXATION > 1.0;
     let mut steps = 0u32;
 
     // Samples every tier of [from, to) at t (the caller counts the point).
@@ -525,6 +545,7 @@ fn run<R: RayTiers + ?Sized>(
             if lo <= hi && hi - lo <= tol && t + hi <= t_exit {
                 // The lower bound is positive up to t + lo, the upper bound negative at t + hi: the
                 // first crossing lies between, no further evaluation needed.
+                DBG[3].fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                 log_step(&mut log, t + lo, t + hi, StepKind::Bracket);
                 let t_hit = t + 0.5 * (lo + hi);
                 stats.hits += 1;
@@ -540,6 +561,7 @@ fn run<R: RayTiers + ?Sized>(
                 let dp: f64 = scratch.slope.iter().sum();
                 // G' ≤ min(d + η + K(u − t), dp + η + K(tp − u)) < 0 on [t, tp]: G decreases.
                 let monotone = d + dp + 2.0 * eta + curvature * newton < 0.0;
+                DBG[if monotone { if gp > 0.0 { 0 } else { 1 } } else { 2 }].fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                 if monotone && gp > 0.0 {
                     log_step(&mut log, t, tp, StepKind::Certified);
                     t = tp;
@@ -573,6 +595,33 @@ fn run<R: RayTiers + ?Sized>(
             }
         }
         if s >= h {
+            let relaxed = t + RELAXATION * s;
+            if relax && cone == 0.0 && relaxed < t_exit {
+                // Over-relaxed step (Keinert et al. 2014 with certified bounds): sample the same
+                // tiers at t + ωs; the step is kept if the certified step *backward* from there
+                // reaches t + s, so that [t, t + ωs] is free.
+                stats.evaluations += 1;
+                if k < n {
+                    stats.pruned_evaluations += 1;
+                }
+                sample_range(scratch, tiers, stats, 0, n, relaxed);
+                let back = scratch.backward_step(n, eps, eta, (RELAXATION - 1.0) * s);
+                if relaxed - back <= t + s {
+                    log_step(&mut log, t, relaxed, StepKind::Certified);
+                    stats.evaluations -= 1; // counted again as the next point
+                    if k < n {
+                        stats.pruned_evaluations -= 1;
+                    }
+                    t = relaxed;
+                    guess = RELAXATION * s;
+                    k = scratch.next_depth(s);
+                    sampled = n;
+                    stats.evaluations += 1;
+                    continue;
+                }
+                log_step(&mut log, t, relaxed, StepKind::Rejected);
+                relax = false;
+            }
             log_step(&mut log, t, t + s, StepKind::Certified);
             t += s;
             guess = s;
@@ -585,6 +634,7 @@ fn run<R: RayTiers + ?Sized>(
             continue;
         }
 
+        DBG[4].fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         // Every tier is evaluated and the certified step is shorter than h: probe.
         let (g, slope) = full.unwrap_or_else(|| (scratch.value.iter().sum(), scratch.slope.iter().sum()));
         let newton = if slope < 0.0 { g / -slope + 0.5 * tol } else { h };
