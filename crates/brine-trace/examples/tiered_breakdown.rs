@@ -46,7 +46,7 @@ fn main() {
     let footprint = 2.0 * (0.5 * FOV_DEG.to_radians()).tan() / HEIGHT as f64;
     if let Some(pixel) = args.get(3).and_then(|a| a.parse::<usize>().ok()) {
         // Debug: one ray of the default view (index into the subsampled grid).
-        let d = directions(-9.0, stride)[pixel];
+        let d = directions(-2.0, stride)[pixel];
         let o = TraceOptions {
             method: Method::Tiered,
             t_max: 3000.0,
@@ -58,7 +58,7 @@ fn main() {
             ..TraceOptions::default()
         };
         let mut s = TraceStats::default();
-        let hit = trace(&sea, &Ray::new(DVec3::new(0.0, 10.0, 0.0), d).expect("unit"), &o, &mut s);
+        let hit = trace(&sea, &Ray::new(DVec3::new(0.0, 2.0, 0.0), d).expect("unit"), &o, &mut s);
         println!("{hit:?} {s:?}");
         return;
     }
@@ -82,16 +82,20 @@ fn main() {
             let mut per_hit = Vec::new();
             let mut parts = TraceStats::default();
             let start = std::time::Instant::now();
-            for d in &dirs {
+            let mut worst = Vec::new();
+            for (i, d) in dirs.iter().enumerate() {
                 let ray = Ray::new(DVec3::new(0.0, height, 0.0), *d).expect("unit direction");
                 let mut s = TraceStats::default();
                 if trace(&sea, &ray, &o, &mut s).is_some() {
                     per_hit.push(s.evaluations as f64);
+                    worst.push((s.evaluations, i));
                     parts.merge(&s);
                 }
             }
             let dbg: Vec<u64> = brine_trace::DBG.iter().map(|a| a.swap(0, std::sync::atomic::Ordering::Relaxed)).collect();
             eprintln!("advance {} bracket {} wasted {} single-point {} old-probe {}", dbg[0], dbg[1], dbg[2], dbg[3], dbg[4]);
+            worst.sort();
+            eprintln!("worst {:?}", &worst[worst.len().saturating_sub(8)..]);
             let us = start.elapsed().as_secs_f64() * 1e6 / dirs.len() as f64;
             per_hit.sort_by(f64::total_cmp);
             let h = per_hit.len().max(1) as f64;

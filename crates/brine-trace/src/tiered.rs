@@ -617,10 +617,16 @@ fn run<R: RayTiers + ?Sized>(
                     k = scratch.next_depth(s);
                     sampled = n;
                     stats.evaluations += 1;
+                    if options.footprint_angle > 0.0 && t >= REFRESH_GROWTH * t_refresh {
+                        scratch.refresh(tiers, t, sign, false);
+                        t_refresh = t;
+                    }
                     continue;
                 }
                 log_step(&mut log, t, relaxed, StepKind::Rejected);
                 relax = false;
+            } else {
+                relax = RELAXATION > 1.0;
             }
             log_step(&mut log, t, t + s, StepKind::Certified);
             t += s;
