@@ -44,24 +44,6 @@ fn main() {
     let set = fit_trochoids(&pm, &spreading, n, 1, &fit).expect("valid fit");
     let sea = TracedTrochoids::new(&set, 0.0);
     let footprint = 2.0 * (0.5 * FOV_DEG.to_radians()).tan() / HEIGHT as f64;
-    if let Some(pixel) = args.get(3).and_then(|a| a.parse::<usize>().ok()) {
-        // Debug: one ray of the default view (index into the subsampled grid).
-        let d = directions(-2.0, stride)[pixel];
-        let o = TraceOptions {
-            method: Method::Tiered,
-            t_max: 3000.0,
-            min_step: 1e-3,
-            min_step_relative: 1e-4,
-            tolerance: 1e-4,
-            tolerance_relative: 1e-6,
-            footprint_angle: footprint,
-            ..TraceOptions::default()
-        };
-        let mut s = TraceStats::default();
-        let hit = trace(&sea, &Ray::new(DVec3::new(0.0, 2.0, 0.0), d).expect("unit"), &o, &mut s);
-        println!("{hit:?} {s:?}");
-        return;
-    }
     println!("N = {n}, every {stride}th pixel, tiered + footprint");
     println!("| camera | tolerance | hits | mean | median | p99 | pruned | full certified | probe | refinement | time µs/ray |");
     println!("|---|---|---|---|---|---|---|---|---|---|---|");
@@ -82,20 +64,14 @@ fn main() {
             let mut per_hit = Vec::new();
             let mut parts = TraceStats::default();
             let start = std::time::Instant::now();
-            let mut worst = Vec::new();
-            for (i, d) in dirs.iter().enumerate() {
+            for d in &dirs {
                 let ray = Ray::new(DVec3::new(0.0, height, 0.0), *d).expect("unit direction");
                 let mut s = TraceStats::default();
                 if trace(&sea, &ray, &o, &mut s).is_some() {
                     per_hit.push(s.evaluations as f64);
-                    worst.push((s.evaluations, i));
                     parts.merge(&s);
                 }
             }
-            let dbg: Vec<u64> = brine_trace::DBG.iter().map(|a| a.swap(0, std::sync::atomic::Ordering::Relaxed)).collect();
-            eprintln!("advance {} bracket {} wasted {} single-point {} old-probe {}", dbg[0], dbg[1], dbg[2], dbg[3], dbg[4]);
-            worst.sort();
-            eprintln!("worst {:?}", &worst[worst.len().saturating_sub(8)..]);
             let us = start.elapsed().as_secs_f64() * 1e6 / dirs.len() as f64;
             per_hit.sort_by(f64::total_cmp);
             let h = per_hit.len().max(1) as f64;

@@ -176,7 +176,10 @@ pub fn trace_temporal<S: LipschitzSum + ?Sized>(
         None => TraceOptions { t_min: t_prev, ..*options },
         Some(b) => {
             let t_b = t_prev - b.t;
-            TraceOptions { t_max: (t_b + options.tolerance_at(t_b)).min(options.t_max), ..*options }
+            // The backward hit is within the tolerance of a crossing of the exact F; the sampled
+            // F̃ (within ε of F) may change sign slightly later: one minimum step of margin.
+            let margin = options.tolerance_at(t_b) + options.min_step_at(t_b);
+            TraceOptions { t_max: (t_b + margin).min(options.t_max), ..*options }
         }
     };
     trace(surface, ray, &forward, stats)

@@ -120,7 +120,7 @@ pub use refine::{bisect_crossing, refine_crossing};
 pub use stats::TraceStats;
 pub use step::{StepBound, efficient_lipschitz_step, printed_darles_step};
 pub use sum::LipschitzSum;
-pub use tiered::{DBG, TierScratch, certify_cone_with, trace_tiers, trace_tiers_with};
+pub use tiered::{TierScratch, certify_cone_with, trace_tiers, trace_tiers_with};
 pub use tiers::{COMPONENTS_PER_TIER, ComponentTiers, RayTiers, TierBounds, TierSample};
 pub use trace::{trace, trace_logged};
 

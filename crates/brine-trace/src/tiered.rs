@@ -187,11 +187,10 @@ impl TierScratch {
 /// The Newton probe is tried when `K·p < NEWTON_REACH·(|D| − η)` (`p` the Newton step, `D` the
 /// derivative, `K` the curvature bound): for `NEWTON_REACH ≤ 1` the derivative provably stays
 /// negative up to the probe; above, the probe's own derivative must confirm it (else it is wasted).
-/// Over-relaxation factor `ω` of the tiered step.
+/// Over-relaxation factor `ω` of the tiered step (measured: 1.25 → 8.2, 1.4 → 7.5, 1.6 → 8.6,
+/// 2 → 11.1 evaluations per hitting ray on the benchmark's default view).
 const RELAXATION: f64 = 1.4;
 
-/// debug
-pub static DBG: [std::sync::atomic::AtomicU64; 5] = [const { std::sync::atomic::AtomicU64::new(0) }; 5];
 const NEWTON_REACH: f64 = 2.0;
 
 /// The oriented function `G` and its derivative `G'` sampled (every tier) at `t`.
@@ -545,7 +544,6 @@ fn run<R: RayTiers + ?Sized>(
             if lo <= hi && hi - lo <= tol && t + hi <= t_exit {
                 // The lower bound is positive up to t + lo, the upper bound negative at t + hi: the
                 // first crossing lies between, no further evaluation needed.
-                DBG[3].fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                 log_step(&mut log, t + lo, t + hi, StepKind::Bracket);
                 let t_hit = t + 0.5 * (lo + hi);
                 stats.hits += 1;
@@ -561,7 +559,6 @@ fn run<R: RayTiers + ?Sized>(
                 let dp: f64 = scratch.slope.iter().sum();
                 // G' ≤ min(d + η + K(u − t), dp + η + K(tp − u)) < 0 on [t, tp]: G decreases.
                 let monotone = d + dp + 2.0 * eta + curvature * newton < 0.0;
-                DBG[if monotone { if gp > 0.0 { 0 } else { 1 } } else { 2 }].fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                 if monotone && gp > 0.0 {
                     log_step(&mut log, t, tp, StepKind::Certified);
                     t = tp;
@@ -597,26 +594,19 @@ fn run<R: RayTiers + ?Sized>(
         if s >= h {
             let relaxed = t + RELAXATION * s;
             if relax && cone == 0.0 && relaxed < t_exit {
-                // Over-relaxed step (Keinert et al. 2014 with certified bounds): sample the same
-                // tiers at t + ωs; the step is kept if the certified step *backward* from there
-                // reaches t + s, so that [t, t + ωs] is free.
+                // Over-relaxed step (Keinert et al. 2014, with certified bounds): sample every tier
+                // at t + ωs; the step is kept if the certified step *backward* from there reaches
+                // t + s, so that [t, t + ωs] is free; otherwise the sample is wasted and the next
+                // step is not relaxed.
                 stats.evaluations += 1;
-                if k < n {
-                    stats.pruned_evaluations += 1;
-                }
                 sample_range(scratch, tiers, stats, 0, n, relaxed);
                 let back = scratch.backward_step(n, eps, eta, (RELAXATION - 1.0) * s);
                 if relaxed - back <= t + s {
                     log_step(&mut log, t, relaxed, StepKind::Certified);
-                    stats.evaluations -= 1; // counted again as the next point
-                    if k < n {
-                        stats.pruned_evaluations -= 1;
-                    }
                     t = relaxed;
                     guess = RELAXATION * s;
                     k = scratch.next_depth(s);
                     sampled = n;
-                    stats.evaluations += 1;
                     if options.footprint_angle > 0.0 && t >= REFRESH_GROWTH * t_refresh {
                         scratch.refresh(tiers, t, sign, false);
                         t_refresh = t;
@@ -640,7 +630,6 @@ fn run<R: RayTiers + ?Sized>(
             continue;
         }
 
-        DBG[4].fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         // Every tier is evaluated and the certified step is shorter than h: probe.
         let (g, slope) = full.unwrap_or_else(|| (scratch.value.iter().sum(), scratch.slope.iter().sum()));
         let newton = if slope < 0.0 { g / -slope + 0.5 * tol } else { h };
