@@ -202,17 +202,25 @@ struct Sample {
 }
 
 impl Sample {
-    /// Offsets `(l, u)` from `t` of the interval that holds the crossing of a decreasing `G`:
-    /// with `|G − g| ≤ ε`, `|G' − d| ≤ η + K|s|` (`K` the curvature bound), `G` keeps the sign of
-    /// `g` over `|s| < l` (lower bound `|g| − ε − (|d| + η)|s| − K s²/2 > 0`), and has the
-    /// opposite sign at `|s| = u` (upper bound `|g| + ε − (|d| − η)|s| + K s²/2 < 0`); both in the
-    /// direction of the crossing (`+` for `g > 0`, `−` below). `u = ∞` when the upper bound never
-    /// certifies the sign change.
+    /// Offsets `(l, u)` from `t` of the interval that holds the crossing of a decreasing `G`,
+    /// given `|G − g| ≤ ε` and `G'(t + s) ∈ [d − η − K|s|, d + η + K|s|]` (`K` the curvature
+    /// bound): `G > 0` is certified up to `t + l` by the lower bound `g − ε + (d − η)s − Ks²/2`
+    /// (or, when `g ≤ ε`, backward from `t` by the upper-bound form), and `G < 0` from `t + u` on
+    /// by the upper bound `g + ε + (d + η)s + Ks²/2` (or, when `g < −ε`, backward by the lower
+    /// one). `l = −∞` or `u = ∞` when a side cannot be certified.
     fn crossing_interval(&self, curvature: f64, eps: f64, eta: f64) -> (f64, f64) {
-        let a = self.g.abs();
-        let near = first_root(a - eps, self.d - eta, curvature);
-        let far = first_reach(a + eps, -(self.d + eta), curvature);
-        if self.g > 0.0 { (near, far) } else { (-far, -near) }
+        let (g, d) = (self.g, self.d);
+        let l = if g - eps > 0.0 {
+            first_root(g - eps, d - eta, curvature)
+        } else {
+            -first_reach(eps - g, -(d + eta), curvature)
+        };
+        let u = if -g - eps > 0.0 {
+            -first_root(-g - eps, d - eta, curvature)
+        } else {
+            first_reach(g + eps, -(d + eta), curvature)
+        };
+        (l, u)
     }
 }
 
@@ -241,25 +249,33 @@ fn first_reach(c: f64, m: f64, k: f64) -> f64 {
 }
 
 /// Refines the crossing of a `G` that provably decreases on `[a.t, b.t]` (`a.g > 0 ≥ b.g`):
-/// each point narrows the interval certified by [`Sample::crossing_interval`], the next point is
-/// Newton's estimate from the end nearer the surface, clamped into the interval; stops when the
-/// interval is no longer than `tolerance` and returns its midpoint.
+/// each point narrows the interval certified by [`Sample::crossing_interval`] and the sign-change
+/// bracket `[a, b]`; the next point is Newton's estimate from the end nearer the surface (a
+/// bisection of the bracket when it lies outside, or when the last point did not halve it).
+/// Stops when either is no longer than `tolerance` and returns its midpoint.
 #[allow(clippy::too_many_arguments)]
 fn refine_monotone(
     mut a: Sample,
     mut b: Sample,
     curvature: f64,
-    eps: f64,
+    error: f64,
     eta: f64,
     tolerance: f64,
     mut sample: impl FnMut(f64) -> (f64, f64),
 ) -> f64 {
-    let (la, ua) = a.crossing_interval(curvature, eps, eta);
-    let (lb, ub) = b.crossing_interval(curvature, eps, eta);
-    let mut lo = a.t.max(a.t + la).max(b.t + lb);
-    let mut hi = b.t.min(a.t + ua).min(b.t + ub);
-    for _ in 0..60 {
-        if !(hi - lo > tolerance) {
+    let (la, ua) = a.crossing_interval(curvature, error, eta);
+    let (lb, ub) = b.crossing_interval(curvature, error, eta);
+    let mut lo = (a.t + la).max(b.t + lb);
+    let mut hi = (a.t + ua).min(b.t + ub);
+    let mut width = f64::INFINITY;
+    for _ in 0..200 {
+        if !(hi - lo > tolerance) && lo <= hi {
+            // Certified for the exact F.
+            return 0.5 * (lo + hi);
+        }
+        if b.t - a.t <= tolerance {
+            // The sampled F̃ changes sign within the tolerance (the certified interval cannot
+            // be narrower than about 2ε/|G'|).
             break;
         }
         let newton = if a.g.abs() * b.d.abs() <= b.g.abs() * a.d.abs() {
@@ -267,21 +283,35 @@ fn refine_monotone(
         } else {
             b.t - b.g / b.d.abs().max(f64::MIN_POSITIVE)
         };
-        let x = if newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+        // Newton inside the bracket, unless the last point did not halve it; an estimate within
+        // half the tolerance of an end is pushed 0.9 tolerance past that end, so that the next
+        // sign change closes the bracket.
+        let slow = b.t - a.t > 0.5 * width;
+        width = b.t - a.t;
+        let mid = 0.5 * (a.t + b.t);
+        let x = if slow || !(newton > a.t && newton < b.t) {
+            mid
+        } else if newton - a.t < 0.5 * tolerance {
+            (a.t + 0.9 * tolerance).min(mid)
+        } else if b.t - newton < 0.5 * tolerance {
+            (b.t - 0.9 * tolerance).max(mid)
+        } else {
+            newton
+        };
         let (g, d) = sample(x);
         let p = Sample { t: x, g, d };
-        let (l, u) = p.crossing_interval(curvature, eps, eta);
+        let (l, u) = p.crossing_interval(curvature, error, eta);
         if g > 0.0 {
             a = p;
-            lo = lo.max(x + l).max(x);
+            lo = lo.max(x + l);
             hi = hi.min(x + u);
         } else {
             b = p;
-            hi = hi.min(x + u).min(x);
+            hi = hi.min(x + u);
             lo = lo.max(x + l);
         }
     }
-    if lo <= hi { 0.5 * (lo + hi) } else { 0.5 * (a.t + b.t) }
+    0.5 * (a.t + b.t)
 }
 
 /// How far one tier can fall over `s` by its quadratic bound: `−∫₀ˢ max(d − K u, −L) du`.
@@ -539,7 +569,8 @@ fn run<R: RayTiers + ?Sized>(
             let curvature: f64 = scratch.bounds.iter().map(|b| b.curvature).sum();
             full = Some((g, d));
             let here = Sample { t, g, d };
-            let (lo, hi) = here.crossing_interval(curvature, eps, eta);
+            // The exact F is within ε/2 of the samples (eps = 2ε guards the sampled F̃ too).
+            let (lo, hi) = here.crossing_interval(curvature, 0.5 * eps, eta);
             let lo = lo.max(s);
             if lo <= hi && hi - lo <= tol && t + hi <= t_exit {
                 // The lower bound is positive up to t + lo, the upper bound negative at t + hi: the
@@ -574,7 +605,7 @@ fn run<R: RayTiers + ?Sized>(
                         here,
                         Sample { t: tp, g: gp, d: dp },
                         curvature,
-                        eps,
+                        0.5 * eps,
                         eta,
                         tol,
                         |x| {
