@@ -64,14 +64,17 @@ fn main() {
             let mut per_hit = Vec::new();
             let mut parts = TraceStats::default();
             let start = std::time::Instant::now();
+            let mut histo = [0u32; 8];
             for d in &dirs {
                 let ray = Ray::new(DVec3::new(0.0, height, 0.0), *d).expect("unit direction");
                 let mut s = TraceStats::default();
                 if trace(&sea, &ray, &o, &mut s).is_some() {
                     per_hit.push(s.evaluations as f64);
                     parts.merge(&s);
+                    histo[(s.refinement_evaluations as usize).min(7)] += 1;
                 }
             }
+            eprintln!("refinement histogram {histo:?}");
             let us = start.elapsed().as_secs_f64() * 1e6 / dirs.len() as f64;
             per_hit.sort_by(f64::total_cmp);
             let h = per_hit.len().max(1) as f64;

@@ -268,6 +268,7 @@ fn refine_monotone(
     let mut lo = (a.t + la).max(b.t + lb);
     let mut hi = (a.t + ua).min(b.t + ub);
     let mut width = f64::INFINITY;
+    let mut stalled = 0;
     for _ in 0..200 {
         if !(hi - lo > tolerance) && lo <= hi {
             // Certified for the exact F.
@@ -281,12 +282,13 @@ fn refine_monotone(
         let newton = if a.g.abs() * b.d.abs() <= b.g.abs() * a.d.abs() {
             a.t + a.g / a.d.abs().max(f64::MIN_POSITIVE)
         } else {
-            b.t - b.g / b.d.abs().max(f64::MIN_POSITIVE)
+            b.t + b.g / b.d.abs().max(f64::MIN_POSITIVE)
         };
-        // Newton inside the bracket, unless the last point did not halve it; an estimate within
+        // Newton inside the bracket, unless the last two points did not halve it; an estimate within
         // half the tolerance of an end is pushed 0.9 tolerance past that end, so that the next
         // sign change closes the bracket.
-        let slow = b.t - a.t > 0.5 * width;
+        stalled = if b.t - a.t > 0.5 * width { stalled + 1 } else { 0 };
+        let slow = stalled >= 2;
         width = b.t - a.t;
         let mid = 0.5 * (a.t + b.t);
         let x = if slow || !(newton > a.t && newton < b.t) {
