@@ -137,7 +137,8 @@ impl<S: LipschitzSum + ?Sized> Tile<'_, '_, S> {
 /// 2. if that finds no crossing, `[t_min, previous]` holds none either (up to skims) and the ray
 ///    is traced forward from `previous` (the surface moved away: paper step 4);
 /// 3. if it finds one at `t_b`, the first crossing is at most `t_b`: the ray is traced forward
-///    on `[t_min, t_b]` (paper step 3 stops at `t_b`, which need not be the first crossing).
+///    on `[t_min, t_b + tolerance + h]` (paper step 3 stops at `t_b`, which need not be the first
+///    crossing; the margin covers the tolerance of `t_b` and the evaluator's error).
 ///
 /// With `previous = None`, or with footprint fading (the backward ray would fade its components
 /// by its own distance, not the forward ray's: another surface), it is [`trace`].
