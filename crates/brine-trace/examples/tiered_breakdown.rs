@@ -45,9 +45,12 @@ fn main() {
     let sea = TracedTrochoids::new(&set, 0.0);
     let footprint = 2.0 * (0.5 * FOV_DEG.to_radians()).tan() / HEIGHT as f64;
     println!("N = {n}, every {stride}th pixel, tiered + footprint");
-    println!("| camera | tolerance | hits | mean | median | p99 | pruned | full certified | probe | refinement | time µs/ray |");
+    println!(
+        "| camera | tolerance | hits | mean | median | p99 | pruned | full certified | probe | refinement | time µs/ray |"
+    );
     println!("|---|---|---|---|---|---|---|---|---|---|---|");
-    for (name, height, pitch) in [("2 m grazing", 2.0, -2.0), ("10 m horizon", 10.0, -9.0), ("50 m down", 50.0, -50.0)] {
+    for (name, height, pitch) in [("2 m grazing", 2.0, -2.0), ("10 m horizon", 10.0, -9.0), ("50 m down", 50.0, -50.0)]
+    {
         let dirs = directions(pitch, stride);
         for (tol_name, tol, tol_rel) in [("0.1 mm + 1e-6 t", 1e-4, 1e-6), ("1 mm + 1e-5 t", 1e-3, 1e-5)] {
             let o = TraceOptions {
@@ -78,8 +81,10 @@ fn main() {
             let us = start.elapsed().as_secs_f64() * 1e6 / dirs.len() as f64;
             per_hit.sort_by(f64::total_cmp);
             let h = per_hit.len().max(1) as f64;
-            let q = |p: f64| per_hit.get(((per_hit.len().max(1) - 1) as f64 * p).round() as usize).copied().unwrap_or(0.0);
-            let full = parts.evaluations - parts.pruned_evaluations - parts.probe_evaluations - parts.refinement_evaluations;
+            let q =
+                |p: f64| per_hit.get(((per_hit.len().max(1) - 1) as f64 * p).round() as usize).copied().unwrap_or(0.0);
+            let full =
+                parts.evaluations - parts.pruned_evaluations - parts.probe_evaluations - parts.refinement_evaluations;
             println!(
                 "| {name} | {tol_name} | {} | {:.2} | {:.0} | {:.0} | {:.2} | {:.2} | {:.2} | {:.2} | {us:.2} |",
                 per_hit.len(),

@@ -604,19 +604,12 @@ fn run<R: RayTiers + ?Sized>(
                 if monotone {
                     log_step(&mut log, t, tp, StepKind::Bracket);
                     let mut refinement = 0u64;
-                    let t_hit = refine_monotone(
-                        here,
-                        Sample { t: tp, g: gp, d: dp },
-                        curvature,
-                        0.5 * eps,
-                        eta,
-                        tol,
-                        |x| {
+                    let t_hit =
+                        refine_monotone(here, Sample { t: tp, g: gp, d: dp }, curvature, 0.5 * eps, eta, tol, |x| {
                             refinement += 1;
                             sample_range(scratch, tiers, stats, 0, n, x);
                             (scratch.value.iter().sum(), scratch.slope.iter().sum())
-                        },
-                    );
+                        });
                     stats.evaluations += refinement;
                     stats.refinement_evaluations += refinement;
                     stats.hits += 1;

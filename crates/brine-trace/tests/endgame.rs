@@ -49,7 +49,14 @@ fn shortcuts_never_skip_a_short_crest_before_the_swell_crossing() {
         let hit = trace_logged(&fast, &ray, &options, &mut TraceStats::default(), &mut log);
         let skim = 2.0 * eps + lambda * options.min_step;
         check_first_crossing(&f, &crossings, hit.map(|h| h.t), eps + lambda * options.tolerance + 1e-12, skim)
-            .unwrap_or_else(|e| { let th = hit.unwrap().t; for j in -4..=4 { let x = th + f64::from(j) * 2e-5; eprintln!("x {x} F {:e} F~ {:e}", f(x), fast.value(ray.at(x))); } panic!("ray {i}: {e} {:?} eps {eps:e}", &log[log.len().saturating_sub(4)..]) });
+            .unwrap_or_else(|e| {
+                let th = hit.unwrap().t;
+                for j in -4..=4 {
+                    let x = th + f64::from(j) * 2e-5;
+                    eprintln!("x {x} F {:e} F~ {:e}", f(x), fast.value(ray.at(x)));
+                }
+                panic!("ray {i}: {e} {:?} eps {eps:e}", &log[log.len().saturating_sub(4)..])
+            });
         check_steps(&f, &log, &options, 2.0 * eps + 1e-12, true).unwrap_or_else(|e| panic!("ray {i}: {e}"));
         hits += usize::from(hit.is_some());
     }
