@@ -3,7 +3,8 @@
 //! at the benchmark's tolerance (0.1 mm + 10⁻⁶ t) and the renderer's (1 mm + 10⁻⁵ t).
 //!
 //! Per hitting ray: evaluations (mean / median / p99), split into pruned points (only the long
-//! tiers evaluated), full certified points, probes (≤ h) and refinement.
+//! tiers evaluated), full certified points, probes (Newton probes and probes ≤ h) and refinement;
+//! on stderr, the histogram of refinement evaluations per hitting ray.
 //!
 //! Run: `cargo run --release -p brine-trace --example tiered_breakdown [N] [STRIDE]`.
 
@@ -15,7 +16,7 @@ const WIDTH: usize = 640;
 const HEIGHT: usize = 480;
 const FOV_DEG: f64 = 50.0;
 
-/// A camera of the benchmark: height (m), bearing and pitch (degrees).
+/// Directions of every `stride`-th pixel of a benchmark camera (bearing 100°, pitch in degrees).
 fn directions(pitch_deg: f64, stride: usize) -> Vec<DVec3> {
     let (b, e) = (100f64.to_radians(), pitch_deg.to_radians());
     let forward = DVec3::new(b.sin() * e.cos(), e.sin(), -b.cos() * e.cos());
