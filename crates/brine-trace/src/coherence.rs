@@ -137,7 +137,8 @@ impl<S: LipschitzSum + ?Sized> Tile<'_, '_, S> {
 /// 2. if that finds no crossing, `[t_min, previous]` holds none either (up to skims) and the ray
 ///    is traced forward from `previous` (the surface moved away: paper step 4);
 /// 3. if it finds one at `t_b`, the first crossing is at most `t_b`: the ray is traced forward
-///    on `[t_min, t_b]` (paper step 3 stops at `t_b`, which need not be the first crossing).
+///    on `[t_min, t_b + tolerance + h]` (paper step 3 stops at `t_b`, which need not be the first
+///    crossing; the margin covers the tolerance of `t_b` and the evaluator's error).
 ///
 /// With `previous = None`, or with footprint fading (the backward ray would fade its components
 /// by its own distance, not the forward ray's: another surface), it is [`trace`].
@@ -170,11 +171,16 @@ pub fn trace_temporal<S: LipschitzSum + ?Sized>(
     stats.evaluations += back_stats.evaluations;
     stats.component_evaluations += back_stats.component_evaluations;
     stats.refinement_evaluations += back_stats.refinement_evaluations;
+    stats.pruned_evaluations += back_stats.pruned_evaluations;
+    stats.probe_evaluations += back_stats.probe_evaluations;
     let forward = match found {
         None => TraceOptions { t_min: t_prev, ..*options },
         Some(b) => {
             let t_b = t_prev - b.t;
-            TraceOptions { t_max: (t_b + options.tolerance_at(t_b)).min(options.t_max), ..*options }
+            // The backward hit is within the tolerance of a crossing of the exact F; the sampled
+            // F̃ (within ε of F) may change sign slightly later: one minimum step of margin.
+            let margin = options.tolerance_at(t_b) + options.min_step_at(t_b);
+            TraceOptions { t_max: (t_b + margin).min(options.t_max), ..*options }
         }
     };
     trace(surface, ray, &forward, stats)

@@ -19,7 +19,7 @@
 //! | [`Method::Directional`] | `|F|/Σ Lᵢ(d̂)` | Hart 1996 along the ray |
 //! | [`Method::Relaxed`] | `ω|F|/Σ Lᵢ(d̂)`, undone if the spheres do not overlap | Keinert et al. 2014 |
 //! | [`Method::Darles`] | [`efficient_lipschitz_step`] over components sorted by stale estimates | Darles et al. 2007 Alg. 1, equation sheet §2 |
-//! | [`Method::Tiered`] | first root of the certified bound [`StepBound`] over tiers of decreasing scale, the short ones pruned | Brine ([`trace_tiers`]) |
+//! | [`Method::Tiered`] | first root of the certified bound [`StepBound`] over tiers of decreasing scale, the short ones pruned; over-relaxed steps checked backward, Newton probes on certified-monotone stretches | Brine ([`trace_tiers`]) |
 //!
 //! plus image coherence ([`trace_tile`]: a quadtree of cones certified by
 //! [`LipschitzSum::certify_cone`]), temporal coherence ([`trace_temporal`]) and footprint fading
@@ -44,8 +44,10 @@
 //! ## What a hit is
 //!
 //! A hit is a *sign change* of `F` along the ray, bracketed and then refined by the Illinois
-//! variant of regula falsi (bisection for brute force) until the bracket is shorter than the
-//! stated tolerance. A ray that only comes within `ε` of the surface without crossing it is not a
+//! variant of regula falsi (bisection for brute force; Newton's method inside a certified
+//! interval for the tiered method) until the bracket is shorter than the stated tolerance, or
+//! (tiered method) a crossing of the exact `F` enclosed within the tolerance by certified lower
+//! and upper bounds. A ray that only comes within `ε` of the surface without crossing it is not a
 //! hit. Every step is either certified free of zeros by a bound (Lipschitz, efficient or
 //! second-order) or, when that distance is smaller than the minimum step `h`, a probe step no
 //! longer than `h` whose end is tested for a sign change. The only crossings that can be missed are

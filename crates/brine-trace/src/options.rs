@@ -27,8 +27,10 @@ pub enum Method {
     /// Brine's method: components in tiers of decreasing length scale; far from the surface only
     /// the long tiers are evaluated and the rest enter through their bounds (frequency pruning);
     /// the step is the first root of a certified piecewise-quadratic lower bound that uses the
-    /// derivative along the ray and a curvature bound (it becomes Newton's step near the surface);
-    /// optional footprint fading. See [`crate::trace_tiers`].
+    /// derivative along the ray and a curvature bound, over-relaxed when a certified backward step
+    /// confirms it; near the surface, Newton probes on stretches where `F` provably decreases and
+    /// a crossing enclosed by certified bounds; optional footprint fading. See
+    /// [`crate::trace_tiers`].
     Tiered,
 }
 

@@ -17,6 +17,12 @@ pub struct TraceStats {
     pub component_evaluations: u64,
     /// Evaluations spent in root refinement (a subset of `evaluations`).
     pub refinement_evaluations: u64,
+    /// [`crate::Method::Tiered`]: points where only the long tiers were evaluated, the others
+    /// entering through their bounds (frequency pruning; a subset of `evaluations`).
+    pub pruned_evaluations: u64,
+    /// [`crate::Method::Tiered`]: probe points (a step of at most the minimum step `h`, or the
+    /// Newton probe near the surface, checked at its end; a subset of `evaluations`).
+    pub probe_evaluations: u64,
 }
 
 impl TraceStats {
@@ -29,6 +35,8 @@ impl TraceStats {
         self.evaluations += other.evaluations;
         self.component_evaluations += other.component_evaluations;
         self.refinement_evaluations += other.refinement_evaluations;
+        self.pruned_evaluations += other.pruned_evaluations;
+        self.probe_evaluations += other.probe_evaluations;
     }
 
     /// Mean evaluations of `F` per ray (0 when no ray was traced).
