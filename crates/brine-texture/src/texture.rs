@@ -102,7 +102,6 @@ impl Texture {
             return Err(decode("unsupported image format (expected PNG or JPEG)".to_owned()));
         }
         let img = reader.decode().map_err(|e| match e {
-            image::ImageError::IoError(e) => io(e),
             image::ImageError::Unsupported(u) => decode(format!("unsupported image: {u} (expected PNG or JPEG)")),
             other => decode(format!("cannot decode: {other}")),
         })?;
