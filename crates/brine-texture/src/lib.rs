@@ -115,7 +115,9 @@ pub use morph::{MAX_DISPLACEMENT, MeshCorrespondence};
 pub use ocean::{OceanFrame, OceanParams, PhotoOcean, Progress, SmallFrame};
 pub use project::{ProjectionOptions, ProjectionView, render_projection};
 pub use relight::{RelightRule, Relighting, pow_three_quarters, relight_intensity};
-pub use synthesis::{Sources, SynthesisParams, seam_differences, synthesize_tileable};
+pub use synthesis::{
+    Sources, SynthesisParams, border_differences, seam_differences, seam_z_score, synthesize_tileable,
+};
 pub use temporal::{BasisSequence, synthesize_sequence};
 pub use texture::{Grid, LUMA_WEIGHTS, Texture, intensity};
 pub use traced::{ComposedSurface, TracedImage, TracedParams, TracedScene, render_traced};

@@ -82,14 +82,17 @@ pub struct ProjectionView {
 }
 
 impl ProjectionView {
-    /// The view of `camera` with brine-sky's sky behind the sea: its radiance scaled so that the
-    /// zenith luminance maps to ½ (clipped at 1), sRGB-encoded (a display choice: the paper shows
-    /// no sky model).
+    /// The view of `camera` with brine-sky's sky behind the sea: its radiance `L` scaled by the
+    /// zenith luminance `Y_z` and mapped per channel by `x/(1 + x)`, `x = L/Y_z` (the zenith at
+    /// ½), sRGB-encoded (a display choice: the paper shows no sky model).
     pub fn new(camera: &Pinhole, sky: &Sky) -> Self {
         let zenith = sky.radiance_rgb(DVec3::Y);
         let y = 0.2126 * zenith.x + 0.7152 * zenith.y + 0.0722 * zenith.z;
-        let k = if y > 0.0 { 0.5 / y } else { 0.0 };
-        Self::build(camera, &|d| encode(sky.background_rgb(d) * k))
+        let k = if y > 0.0 { 1.0 / y } else { 0.0 };
+        Self::build(camera, &|d| {
+            let x = sky.background_rgb(d) * k;
+            encode(x / (DVec3::ONE + x))
+        })
     }
 
     /// The view of `camera` with a uniform colour behind the sea.
@@ -141,7 +144,6 @@ impl ProjectionView {
 pub fn render_projection(frame: &OceanFrame<'_>, view: &ProjectionView, options: &ProjectionOptions) -> image::RgbImage {
     let camera = &view.camera;
     let (w, h) = (camera.width, camera.height);
-    let o = camera.position;
     let bed = frame.ocean().bed().is_some();
     let fast = FastFrame::new(frame);
     let mut bytes = vec![0u8; (w * h * 3) as usize];

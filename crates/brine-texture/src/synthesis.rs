@@ -390,3 +390,58 @@ pub fn seam_differences(texture: &Texture) -> (f64, f64) {
     }
     (wrap / nw as f64, inside / ni as f64)
 }
+
+/// The mean absolute channel difference across the interior cell borders of a chessboard-filled
+/// texture: between texels `k·step − 1` and `k·step` for `k = 1, 2, …` in both directions. The
+/// wrap of a seamless tile is one more such border (see [`seam_differences`]).
+///
+/// # Returns
+/// The mean difference (levels), `0` if the texture has no interior border.
+pub fn border_differences(texture: &Texture, step: usize) -> f64 {
+    let (w, h) = (texture.width(), texture.height());
+    let diff = |a: [f32; 3], b: [f32; 3]| -> f64 { (0..3).map(|k| f64::from((a[k] - b[k]).abs())).sum::<f64>() / 3.0 };
+    let (mut sum, mut n) = (0.0, 0usize);
+    for x in (step..w).step_by(step.max(1)) {
+        for j in 0..h {
+            sum += diff(texture.get(x - 1, j), texture.get(x, j));
+            n += 1;
+        }
+    }
+    for y in (step..h).step_by(step.max(1)) {
+        for i in 0..w {
+            sum += diff(texture.get(i, y - 1), texture.get(i, y));
+            n += 1;
+        }
+    }
+    if n == 0 { 0.0 } else { sum / n as f64 }
+}
+
+/// How far a texture's wrap lines stand out from its other lines: for the vertical lines `x`
+/// (texels `x − 1` and `x`, line 0 the wrap) and likewise the horizontal ones, the mean absolute
+/// channel difference across each line; returns the larger over the two directions of
+/// `|wrap − mean(interior)|/sd(interior)`. A seamless tile scores like any of its lines (below
+/// about 3); a photo's wrap is typically far beyond.
+///
+/// # Returns
+/// The z-score (dimensionless); `0` for textures narrower than 3 texels.
+pub fn seam_z_score(texture: &Texture) -> f64 {
+    let (w, h) = (texture.width(), texture.height());
+    if w < 3 || h < 3 {
+        return 0.0;
+    }
+    let d = |a: [f32; 3], b: [f32; 3]| (0..3).map(|k| f64::from((a[k] - b[k]).abs())).sum::<f64>() / 3.0;
+    let vertical: Vec<f64> =
+        (0..w).map(|x| (0..h).map(|j| d(texture.get((x + w - 1) % w, j), texture.get(x, j))).sum::<f64>() / h as f64).collect();
+    let horizontal: Vec<f64> =
+        (0..h).map(|y| (0..w).map(|i| d(texture.get(i, (y + h - 1) % h), texture.get(i, y))).sum::<f64>() / w as f64).collect();
+    [vertical, horizontal]
+        .iter()
+        .map(|lines| {
+            let inner = &lines[1..];
+            let n = inner.len() as f64;
+            let mean = inner.iter().sum::<f64>() / n;
+            let sd = (inner.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
+            if sd > 0.0 { (lines[0] - mean).abs() / sd } else if lines[0] == mean { 0.0 } else { f64::INFINITY }
+        })
+        .fold(0.0, f64::max)
+}
