@@ -79,7 +79,9 @@ fn main() {
         t[t.len() / 2]
     };
     let both = |f: &(dyn Fn(u64) + Sync)| (one.install(|| per_frame(f)), per_frame(f));
-    println!("| per frame at 384×384 (median of {n} frames) | 1 thread | {threads} threads | vs paper (0.187 / 0.281 s) |");
+    println!(
+        "| per frame at 384×384 (median of {n} frames) | 1 thread | {threads} threads | vs paper (0.187 / 0.281 s) |"
+    );
     println!("|---|---|---|---|");
     let (a, b) = both(&|k| drop(black_box(ocean.frame(k))));
     row("frame state: walk, morph in-between, mip levels", a, b);
@@ -94,7 +96,8 @@ fn main() {
     row("projection with bed refraction, whole frame", a, b);
     let (a, b) = both(&|_| drop(black_box(ProjectionView::new(&camera, &sky))));
     row("projection view (per camera: plane hits, sky)", a, b);
-    let scene = TracedScene::new(&TracedParams { sun_direction: sun, ..TracedParams::default() }, &ocean_bed).expect("scene");
+    let scene =
+        TracedScene::new(&TracedParams { sun_direction: sun, ..TracedParams::default() }, &ocean_bed).expect("scene");
     let f = ocean_bed.frame(3);
     let traced_one = one.install(|| median(3, || drop(black_box(render_traced(&f, &camera, &scene).expect("traced")))));
     let traced_all = median(3, || drop(black_box(render_traced(&f, &camera, &scene).expect("traced"))));

@@ -24,7 +24,9 @@ pub enum TextureError {
         message: String,
     },
     /// An image is smaller than a synthesis patch.
-    #[error("{what} is {width}×{height} px, smaller than the patch size {patch} px (give a larger image or a smaller --patch)")]
+    #[error(
+        "{what} is {width}×{height} px, smaller than the patch size {patch} px (give a larger image or a smaller --patch)"
+    )]
     TooSmall {
         /// Which image.
         what: String,
@@ -36,7 +38,9 @@ pub enum TextureError {
         patch: usize,
     },
     /// A uniform image: Eq. 1 divides by `I_max − I_min`.
-    #[error("{what} has a uniform intensity (I_max = I_min = {level:.3}): the height of Eq. 1 divides by I_max − I_min")]
+    #[error(
+        "{what} has a uniform intensity (I_max = I_min = {level:.3}): the height of Eq. 1 divides by I_max − I_min"
+    )]
     Flat {
         /// Which image.
         what: String,

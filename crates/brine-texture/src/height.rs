@@ -106,7 +106,8 @@ impl HeightField {
         if !(i_max - i_min > MIN_INTENSITY_RANGE) {
             return Err(TextureError::Flat { what: what.to_owned(), level: i_min });
         }
-        let values = intensity.values().iter().map(|&i| height_from_intensity(f64::from(i), i_min, i_max, hf) as f32).collect();
+        let values =
+            intensity.values().iter().map(|&i| height_from_intensity(f64::from(i), i_min, i_max, hf) as f32).collect();
         Ok(Self::from_heights(Grid::from_values_unchecked(intensity.width(), intensity.height(), values)))
     }
 

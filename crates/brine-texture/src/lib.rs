@@ -108,9 +108,7 @@ mod walk;
 
 pub use camera::Pinhole;
 pub use error::TextureError;
-pub use height::{
-    HeightField, MIN_INTENSITY_RANGE, height_from_intensity, intensity_change, intensity_from_height,
-};
+pub use height::{HeightField, MIN_INTENSITY_RANGE, height_from_intensity, intensity_change, intensity_from_height};
 pub use morph::{MAX_DISPLACEMENT, MeshCorrespondence};
 pub use ocean::{OceanFrame, OceanParams, PhotoOcean, Progress, SmallFrame};
 pub use project::{ProjectionOptions, ProjectionView, render_projection};

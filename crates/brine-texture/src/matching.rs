@@ -173,9 +173,8 @@ impl Exemplar {
         }
         let rg_hat = self.forward(rg, p);
         let b_hat = self.forward(b, p);
-        let product: Vec<Complex64> = (0..w * h)
-            .map(|k| rg_hat[k].conj() * self.rg_hat[k] + b_hat[k].conj() * self.b_hat[k])
-            .collect();
+        let product: Vec<Complex64> =
+            (0..w * h).map(|k| rg_hat[k].conj() * self.rg_hat[k] + b_hat[k].conj() * self.b_hat[k]).collect();
         let corr = self.inverse_real(product);
         let area = mask.area(p) as f64 * 3.0;
         let mut out = Vec::with_capacity(nx * ny);

@@ -30,7 +30,10 @@ impl MeshCorrespondence {
     /// # Panics
     /// If `spacing` is zero or does not divide both sizes.
     pub fn identity(width: usize, height: usize, spacing: usize) -> Self {
-        assert!(spacing > 0 && width % spacing == 0 && height % spacing == 0, "mesh spacing {spacing} must divide {width}×{height}");
+        assert!(
+            spacing > 0 && width.is_multiple_of(spacing) && height.is_multiple_of(spacing),
+            "mesh spacing {spacing} must divide {width}×{height}"
+        );
         let (cols, rows) = (width / spacing, height / spacing);
         Self { spacing, cols, rows, displacement: vec![[0.0; 2]; cols * rows] }
     }
@@ -50,8 +53,10 @@ impl MeshCorrespondence {
         let g = spacing as isize;
         let radius = MAX_DISPLACEMENT * spacing as f64;
         let r = radius.floor() as isize;
-        let mut shifts: Vec<(isize, isize)> =
-            (-r..=r).flat_map(|dy| (-r..=r).map(move |dx| (dx, dy))).filter(|&(dx, dy)| ((dx * dx + dy * dy) as f64) <= radius * radius).collect();
+        let mut shifts: Vec<(isize, isize)> = (-r..=r)
+            .flat_map(|dy| (-r..=r).map(move |dx| (dx, dy)))
+            .filter(|&(dx, dy)| ((dx * dx + dy * dy) as f64) <= radius * radius)
+            .collect();
         shifts.sort_by_key(|&(dx, dy)| (dx * dx + dy * dy, dy, dx));
         let ssd = |vx: isize, vy: isize, dx: isize, dy: isize, ia: &Grid, ib: &Grid| -> f64 {
             let mut s = 0.0f64;
@@ -80,7 +85,13 @@ impl MeshCorrespondence {
         let (c, r) = (m.cols, m.rows);
         for k in 0..c * r {
             let (x, y) = (k % c, k / c);
-            let n = [raw[k], raw[y * c + (x + 1) % c], raw[y * c + (x + c - 1) % c], raw[((y + 1) % r) * c + x], raw[((y + r - 1) % r) * c + x]];
+            let n = [
+                raw[k],
+                raw[y * c + (x + 1) % c],
+                raw[y * c + (x + c - 1) % c],
+                raw[((y + 1) % r) * c + x],
+                raw[((y + r - 1) % r) * c + x],
+            ];
             m.displacement[k] = [n.iter().map(|d| d[0]).sum::<f64>() / 5.0, n.iter().map(|d| d[1]).sum::<f64>() / 5.0];
         }
         m
@@ -112,7 +123,7 @@ impl MeshCorrespondence {
     /// - `alpha`: morph parameter, `[0, 1]`.
     ///
     /// # References
-    /// Lai & Wu §III.A and Fig. 3 ("frame F_i and F_j are warped to each other by computing the
+    /// Lai & Wu §III.A and Fig. 3 ("frame `F_i` and `F_j` are warped to each other by computing the
     /// affine mesh mapping and both are blended together"); Wolberg G. 1990, *Digital Image
     /// Warping* (triangle-mesh warping).
     pub fn morph(&self, a: &Texture, b: &Texture, alpha: f64) -> Texture {
@@ -202,7 +213,12 @@ mod tests {
         let m = MeshCorrespondence::estimate(&a, &b, 16);
         for (alpha, f) in [(0.0, &a), (1.0, &b)] {
             let out = m.morph(&a, &b, alpha);
-            let err = out.texels().iter().zip(f.texels()).flat_map(|(x, y)| (0..3).map(move |k| (x[k] - y[k]).abs())).fold(0.0, f32::max);
+            let err = out
+                .texels()
+                .iter()
+                .zip(f.texels())
+                .flat_map(|(x, y)| (0..3).map(move |k| (x[k] - y[k]).abs()))
+                .fold(0.0, f32::max);
             assert!(err < EXACT, "alpha = {alpha}: max error {err}");
         }
     }

@@ -9,7 +9,7 @@ use rayon::prelude::*;
 
 use crate::error::check;
 use crate::matching::Exemplar;
-use crate::rng::Purpose;
+use crate::rng::{FrameStreams, Purpose};
 use crate::synthesis::{Chessboard, chessboard_fill};
 use crate::temporal::basis_sequence;
 use crate::{
@@ -86,6 +86,24 @@ impl Default for OceanParams {
 }
 
 impl OceanParams {
+    /// Checks that a small-wave or main-structure photo can be used: at least one patch in both
+    /// directions, and not uniform (Eq. 1 divides by `I_max − I_min`).
+    ///
+    /// # Arguments
+    /// - `what`: how the photo is named in the error (e.g. its flag and path).
+    /// - `photo`: the photo.
+    ///
+    /// # Errors
+    /// [`TextureError::TooSmall`] or [`TextureError::Flat`] naming `what`.
+    pub fn check_photo(&self, what: &str, photo: &Texture) -> Result<(), TextureError> {
+        self.synthesis.check_exemplar(what, photo)?;
+        let (lo, hi) = photo.intensity_range();
+        if !(f64::from(hi) - f64::from(lo) > crate::height::MIN_INTENSITY_RANGE) {
+            return Err(TextureError::Flat { what: what.to_owned(), level: f64::from(lo) });
+        }
+        Ok(())
+    }
+
     /// Checks every field.
     ///
     /// # Errors
@@ -108,7 +126,7 @@ impl OceanParams {
         check(
             "mesh_spacing",
             g as f64,
-            g >= 4 && 2 * g <= self.small_size && self.small_size % g == 0,
+            g >= 4 && 2 * g <= self.small_size && self.small_size.is_multiple_of(g),
             "[4, small_size/2] texels, dividing small_size",
         )?;
         let metres = |name, v: f64| check(name, v, v > 0.0 && v <= 100.0, "(0, 100] m");
@@ -282,16 +300,10 @@ impl PhotoOcean {
     ) -> Result<Self, TextureError> {
         params.validate()?;
         let sp = &params.synthesis;
-        sp.check_exemplar("small-wave image", small)?;
-        sp.check_exemplar("main-structure image", main)?;
+        params.check_photo("small-wave image", small)?;
+        params.check_photo("main-structure image", main)?;
         if let Some(b) = bed {
             sp.check_exemplar("bed image", b)?;
-        }
-        for (what, t) in [("small-wave image", small), ("main-structure image", main)] {
-            let (lo, hi) = t.intensity_range();
-            if !(f64::from(hi) - f64::from(lo) > crate::height::MIN_INTENSITY_RANGE) {
-                return Err(TextureError::Flat { what: what.to_owned(), level: f64::from(lo) });
-            }
         }
         let cells = |size: usize| ((size / sp.step()) * (size / sp.step())) as u64;
         let n_links_max = (params.frames * (params.links_per_frame + 2)) as u64;
@@ -310,16 +322,26 @@ impl PhotoOcean {
         // Main structure.
         let main_ex = Exemplar::new(main);
         let board = Chessboard::new(params.main_size, params.main_size, sp);
-        let (main_tex, _) = chessboard_fill(&main_ex, &board, sp, seed, Purpose::Main, 0, None, &tick);
-        let main_height = HeightField::from_texture(&main_tex, params.height_factor_main_m, "synthesised main-structure texture")?;
+        let (main_tex, _) =
+            chessboard_fill(&main_ex, &board, sp, FrameStreams { seed, purpose: Purpose::Main, frame: 0 }, None, &tick);
+        let main_height =
+            HeightField::from_texture(&main_tex, params.height_factor_main_m, "synthesised main-structure texture")?;
         tick();
         let main_grad = main_height.grid().central_gradients();
         let delta_height_max = (main_height.max() - main_height.mean()).max(main_height.mean() - main_height.min());
 
         // Small waves: basis sequence, heights, transitions, morph meshes.
         let small_ex = Exemplar::new(small);
-        let sequence =
-            basis_sequence(&small_ex, params.small_size, params.small_size, params.frames, sp, params.min_shift, seed, &tick);
+        let sequence = basis_sequence(
+            &small_ex,
+            params.small_size,
+            params.small_size,
+            params.frames,
+            sp,
+            params.min_shift,
+            seed,
+            &tick,
+        );
         let small_frames: Vec<SmallFrame> = sequence
             .frames
             .par_iter()
@@ -335,7 +357,8 @@ impl PhotoOcean {
             .links()
             .par_iter()
             .map(|l| {
-                let m = MeshCorrespondence::estimate(&sequence.frames[l.from], &sequence.frames[l.to], params.mesh_spacing);
+                let m =
+                    MeshCorrespondence::estimate(&sequence.frames[l.from], &sequence.frames[l.to], params.mesh_spacing);
                 tick();
                 m
             })
@@ -345,7 +368,7 @@ impl PhotoOcean {
         let bed = bed.map(|b| {
             let ex = Exemplar::new(b);
             let board = Chessboard::new(params.bed_size, params.bed_size, sp);
-            chessboard_fill(&ex, &board, sp, seed, Purpose::Bed, 0, None, &tick).0
+            chessboard_fill(&ex, &board, sp, FrameStreams { seed, purpose: Purpose::Bed, frame: 0 }, None, &tick).0
         });
         progress(Progress { done: total, total });
 

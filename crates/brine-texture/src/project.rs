@@ -8,10 +8,10 @@ use glam::DVec3;
 use palette::{LinSrgb, Srgb};
 use rayon::prelude::*;
 
-use crate::texture::lattice;
-use crate::ocean::mip_level;
-use crate::{OceanFrame, Pinhole, RelightRule, Texture, TextureError};
 use crate::error::check;
+use crate::ocean::mip_level;
+use crate::texture::lattice;
+use crate::{OceanFrame, Pinhole, RelightRule, Texture, TextureError};
 
 /// Options of [`render_projection`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -110,7 +110,9 @@ impl ProjectionView {
                 let d = camera.direction(f64::from(p % w) + 0.5, f64::from(p / w) + 0.5);
                 match plane_hit(o, d) {
                     // Footprint: t α across the view, t α/|d_y| along it; their geometric mean.
-                    Some(t) => ViewPixel::Sea { x: o.x + t * d.x, z: o.z + t * d.z, footprint_m: t * alpha / (-d.y).sqrt() },
+                    Some(t) => {
+                        ViewPixel::Sea { x: o.x + t * d.x, z: o.z + t * d.z, footprint_m: t * alpha / (-d.y).sqrt() }
+                    }
                     None => ViewPixel::Sky(sky(d)),
                 }
             })
@@ -141,7 +143,11 @@ impl ProjectionView {
 ///
 /// # References
 /// Lai & Wu §III.C (Fig. 5), §IV (Fig. 9: "refraction result with a rock texture as the bed").
-pub fn render_projection(frame: &OceanFrame<'_>, view: &ProjectionView, options: &ProjectionOptions) -> image::RgbImage {
+pub fn render_projection(
+    frame: &OceanFrame<'_>,
+    view: &ProjectionView,
+    options: &ProjectionOptions,
+) -> image::RgbImage {
     let camera = &view.camera;
     let (w, h) = (camera.width, camera.height);
     let bed = frame.ocean().bed().is_some();
@@ -198,7 +204,8 @@ impl Packed {
     fn sample(&self, u: f64, v: f64) -> [f32; 3] {
         let (x0, y0, x1, y1, fx, fy) = lattice(u, v, self.width, self.height);
         let w = self.width;
-        let (a, b, c, d) = (self.texels[y0 * w + x0], self.texels[y0 * w + x1], self.texels[y1 * w + x0], self.texels[y1 * w + x1]);
+        let (a, b, c, d) =
+            (self.texels[y0 * w + x0], self.texels[y0 * w + x1], self.texels[y1 * w + x0], self.texels[y1 * w + x1]);
         let (fx, fy) = (fx as f32, fy as f32);
         std::array::from_fn(|k| {
             let (a, b, c, d) = (f32::from(a[k]), f32::from(b[k]), f32::from(c[k]), f32::from(d[k]));
@@ -220,6 +227,11 @@ fn q8(v: f32) -> u8 {
 struct FastFrame {
     levels: Vec<Packed>,
     inv_delta_max: f32,
+    /// `Δheight_max^{−3/4}`: Eq. 9's `(room/Δh_max)^{3/4} = room^{3/4} Δh_max^{−3/4}`.
+    inv_delta_max_34: f32,
+    /// `k^{3/4}` for `k = 0, 1, …, 256`, interpolated linearly between levels (error below 0.1
+    /// level on `room^{3/4}`, at `room < 1`).
+    pow34_table: [f32; 257],
     rule: RelightRule,
 }
 
@@ -228,7 +240,8 @@ impl FastFrame {
         let levels = std::iter::once(&frame.small.colour).chain(&frame.small.mips).map(Packed::new).collect();
         let r = frame.ocean().relighting();
         let inv_delta_max = if r.delta_height_max > 0.0 { (1.0 / r.delta_height_max) as f32 } else { 0.0 };
-        Self { levels, inv_delta_max, rule: r.rule }
+        let pow34_table = std::array::from_fn(|k| pow34(k as f32));
+        Self { levels, inv_delta_max, inv_delta_max_34: pow34(inv_delta_max), pow34_table, rule: r.rule }
     }
 
     /// Relit colour at `(x, z)` over a footprint of `footprint_m` metres (0: no filtering).
@@ -252,17 +265,38 @@ impl FastFrame {
         }
         let dh = frame.delta_height(x, z) as f32;
         if self.inv_delta_max > 0.0 {
-            let n = (dh.abs() * self.inv_delta_max).min(1.0);
-            for v in &mut c {
-                let room = if dh >= 0.0 { 255.0 - *v } else { *v };
-                let delta = match self.rule {
-                    RelightRule::Paper => dh.abs() * pow34(room * self.inv_delta_max),
-                    RelightRule::Bounded => room * pow34(n),
-                };
-                *v = if dh >= 0.0 { *v + delta } else { *v - delta }.clamp(0.0, 255.0);
+            let up = dh >= 0.0;
+            let sign = if up { 1.0 } else { -1.0 };
+            match self.rule {
+                RelightRule::Paper => {
+                    let k = dh.abs() * self.inv_delta_max_34;
+                    for v in &mut c {
+                        let room = if up { 255.0 - *v } else { *v };
+                        *v = (*v + sign * k * self.pow34_lookup(room)).clamp(0.0, 255.0);
+                    }
+                }
+                RelightRule::Bounded => {
+                    let r = pow34((dh.abs() * self.inv_delta_max).min(1.0));
+                    for v in &mut c {
+                        let room = if up { 255.0 - *v } else { *v };
+                        *v = (*v + sign * room * r).clamp(0.0, 255.0);
+                    }
+                }
             }
         }
         c
+    }
+}
+
+impl FastFrame {
+    /// `x^{3/4}` for `x ∈ [0, 255]` from the table.
+    #[inline(always)]
+    fn pow34_lookup(&self, x: f32) -> f32 {
+        let x = x.clamp(0.0, 255.0);
+        let i = x as usize;
+        let f = x - i as f32;
+        let (a, b) = (self.pow34_table[i], self.pow34_table[i + 1]);
+        a + (b - a) * f
     }
 }
 
@@ -308,7 +342,10 @@ mod tests {
                 let reference = frame.colour_filtered(x, z, footprint);
                 let got = fast.colour(&frame, x, z, footprint);
                 for c in 0..3 {
-                    assert!((reference[c] - got[c]).abs() <= FAST_PATH_LEVELS, "{rule:?} at ({x}, {z}): {reference:?} vs {got:?}");
+                    assert!(
+                        (reference[c] - got[c]).abs() <= FAST_PATH_LEVELS,
+                        "{rule:?} at ({x}, {z}): {reference:?} vs {got:?}"
+                    );
                 }
             }
         }

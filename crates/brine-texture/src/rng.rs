@@ -24,3 +24,21 @@ pub(crate) fn stream(seed: u64, purpose: Purpose, frame: u64, cell: u64) -> ChaC
     rng.set_stream(((purpose as u64) << 48) | (frame << 24) | cell);
     rng
 }
+
+/// The streams of one synthesised frame: `seed`, `purpose` and `frame` of [`stream`].
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct FrameStreams {
+    /// The user's seed.
+    pub seed: u64,
+    /// What the frame is.
+    pub purpose: Purpose,
+    /// Frame number within the purpose.
+    pub frame: u64,
+}
+
+impl FrameStreams {
+    /// The stream of cell `cell`.
+    pub fn cell(self, cell: u64) -> ChaCha8Rng {
+        stream(self.seed, self.purpose, self.frame, cell)
+    }
+}

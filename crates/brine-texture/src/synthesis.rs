@@ -18,7 +18,7 @@ use rayon::prelude::*;
 
 use crate::error::check;
 use crate::matching::{Exemplar, Mask};
-use crate::rng::{Purpose, stream};
+use crate::rng::{FrameStreams, Purpose};
 use crate::{Texture, TextureError};
 
 /// Parameters of the patch-based synthesis.
@@ -71,7 +71,12 @@ impl SynthesisParams {
     pub fn check_output(&self, name: &'static str, width: usize, height: usize) -> Result<(), TextureError> {
         let two_s = 2 * self.step();
         for v in [width, height] {
-            check(name, v as f64, v >= two_s && v % two_s == 0 && v <= 8192, "a multiple of 2(patch − 2·boundary), ≤ 8192 texels")?;
+            check(
+                name,
+                v as f64,
+                v >= two_s && v % two_s == 0 && v <= 8192,
+                "a multiple of 2(patch − 2·boundary), ≤ 8192 texels",
+            )?;
         }
         Ok(())
     }
@@ -156,7 +161,12 @@ pub type Sources = Vec<(usize, usize)>;
 
 /// A uniformly random element of the candidate set `{q : d(q) ≤ (1 + ε) d_min}` over the
 /// positions `allowed` (indices into `d`); `None` if `allowed` is empty.
-fn choose_within_tolerance(d: &[f64], allowed: impl Iterator<Item = usize> + Clone, tolerance: f64, rng: &mut impl Rng) -> Option<usize> {
+fn choose_within_tolerance(
+    d: &[f64],
+    allowed: impl Iterator<Item = usize> + Clone,
+    tolerance: f64,
+    rng: &mut impl Rng,
+) -> Option<usize> {
     let d_min = allowed.clone().map(|q| d[q]).fold(f64::INFINITY, f64::min);
     if !d_min.is_finite() {
         return None;
@@ -210,9 +220,14 @@ fn pick_source(
             let q_prev = prev.sources[cell];
             let template = ex.patch(q_prev.0, q_prev.1, p);
             let d = ex.distances(&template, p, Mask::Full);
-            let q = choose_within_tolerance(&d, (0..n).filter(|&q| far_enough(q, nx, q_prev, prev.min_shift)), params.tolerance, rng)
-                .or_else(|| choose_within_tolerance(&d, 0..n, params.tolerance, rng))
-                .expect("at least one window");
+            let q = choose_within_tolerance(
+                &d,
+                (0..n).filter(|&q| far_enough(q, nx, q_prev, prev.min_shift)),
+                params.tolerance,
+                rng,
+            )
+            .or_else(|| choose_within_tolerance(&d, 0..n, params.tolerance, rng))
+            .expect("at least one window");
             at(q)
         }
         (false, _) => {
@@ -251,9 +266,7 @@ pub(crate) fn chessboard_fill(
     ex: &Exemplar,
     board: &Chessboard,
     params: &SynthesisParams,
-    seed: u64,
-    purpose: Purpose,
-    frame: u64,
+    streams: FrameStreams,
     previous: Option<Previous<'_>>,
     tick: &(dyn Fn() + Sync),
 ) -> (Texture, Sources) {
@@ -267,7 +280,7 @@ pub(crate) fn chessboard_fill(
     let picks: Vec<(usize, (usize, usize))> = black
         .par_iter()
         .map(|&cell| {
-            let mut rng = stream(seed, purpose, frame, cell as u64);
+            let mut rng = streams.cell(cell as u64);
             let q = pick_source(ex, board, &empty, cell, true, params, previous, &mut rng);
             tick();
             (cell, q)
@@ -290,14 +303,17 @@ pub(crate) fn chessboard_fill(
             }
         }
     }
-    let mut canvas: Vec<[f32; 3]> =
-        acc.iter().zip(&weight).map(|(a, &wt)| if wt > 0.0 { a.map(|v| (v / wt).clamp(0.0, 255.0)) } else { [0.0; 3] }).collect();
+    let mut canvas: Vec<[f32; 3]> = acc
+        .iter()
+        .zip(&weight)
+        .map(|(a, &wt)| if wt > 0.0 { a.map(|v| (v / wt).clamp(0.0, 255.0)) } else { [0.0; 3] })
+        .collect();
     // Pass 2: white cells, matched on their O-shaped zone, feathered across it.
     let white = board.cells_of(false);
     let picks: Vec<(usize, (usize, usize))> = white
         .par_iter()
         .map(|&cell| {
-            let mut rng = stream(seed, purpose, frame, cell as u64);
+            let mut rng = streams.cell(cell as u64);
             let q = pick_source(ex, board, &canvas, cell, false, params, previous, &mut rng);
             tick();
             (cell, q)
@@ -353,7 +369,7 @@ pub fn synthesize_tileable(
     params.check_exemplar("exemplar", exemplar)?;
     let ex = Exemplar::new(exemplar);
     let board = Chessboard::new(width, height, params);
-    Ok(chessboard_fill(&ex, &board, params, seed, Purpose::Main, 0, None, &|| {}).0)
+    Ok(chessboard_fill(&ex, &board, params, FrameStreams { seed, purpose: Purpose::Main, frame: 0 }, None, &|| {}).0)
 }
 
 /// Measures how well a texture tiles: the mean absolute channel difference between texels that
@@ -430,10 +446,12 @@ pub fn seam_z_score(texture: &Texture) -> f64 {
         return 0.0;
     }
     let d = |a: [f32; 3], b: [f32; 3]| (0..3).map(|k| f64::from((a[k] - b[k]).abs())).sum::<f64>() / 3.0;
-    let vertical: Vec<f64> =
-        (0..w).map(|x| (0..h).map(|j| d(texture.get((x + w - 1) % w, j), texture.get(x, j))).sum::<f64>() / h as f64).collect();
-    let horizontal: Vec<f64> =
-        (0..h).map(|y| (0..w).map(|i| d(texture.get(i, (y + h - 1) % h), texture.get(i, y))).sum::<f64>() / w as f64).collect();
+    let vertical: Vec<f64> = (0..w)
+        .map(|x| (0..h).map(|j| d(texture.get((x + w - 1) % w, j), texture.get(x, j))).sum::<f64>() / h as f64)
+        .collect();
+    let horizontal: Vec<f64> = (0..h)
+        .map(|y| (0..w).map(|i| d(texture.get(i, (y + h - 1) % h), texture.get(i, y))).sum::<f64>() / w as f64)
+        .collect();
     [vertical, horizontal]
         .iter()
         .map(|lines| {
@@ -441,7 +459,15 @@ pub fn seam_z_score(texture: &Texture) -> f64 {
             let n = inner.len() as f64;
             let mean = inner.iter().sum::<f64>() / n;
             let sd = (inner.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
-            if sd > 0.0 { (lines[0] - mean).abs() / sd } else if lines[0] == mean { 0.0 } else { f64::INFINITY }
+            let gap = (lines[0] - mean).abs();
+            // Identical lines (sd = 0): no seam if the wrap line is identical too.
+            if sd > 0.0 {
+                gap / sd
+            } else if gap > 0.0 {
+                f64::INFINITY
+            } else {
+                0.0
+            }
         })
         .fold(0.0, f64::max)
 }

@@ -5,7 +5,7 @@
 
 use crate::error::check;
 use crate::matching::Exemplar;
-use crate::rng::Purpose;
+use crate::rng::{FrameStreams, Purpose};
 use crate::synthesis::{Chessboard, Previous, Sources, chessboard_fill};
 use crate::{SynthesisParams, Texture, TextureError};
 
@@ -77,7 +77,14 @@ pub(crate) fn basis_sequence(
     let mut out = BasisSequence { frames: Vec::with_capacity(frames), sources: Vec::with_capacity(frames) };
     for k in 0..frames {
         let previous = (k > 0).then(|| Previous { sources: &out.sources[k - 1], min_shift });
-        let (frame, sources) = chessboard_fill(ex, &board, params, seed, Purpose::Small, k as u64, previous, tick);
+        let (frame, sources) = chessboard_fill(
+            ex,
+            &board,
+            params,
+            FrameStreams { seed, purpose: Purpose::Small, frame: k as u64 },
+            previous,
+            tick,
+        );
         out.frames.push(frame);
         out.sources.push(sources);
     }

@@ -75,7 +75,11 @@ impl<'a> ComposedSurface<'a> {
 
     #[inline]
     fn field(&self, i: usize) -> (&HeightField, f64, DVec2) {
-        if i == 1 { (self.small, self.inv_texel, self.small_offset) } else { (self.main, self.inv_main_texel, self.main_offset) }
+        if i == 1 {
+            (self.small, self.inv_texel, self.small_offset)
+        } else {
+            (self.main, self.inv_main_texel, self.main_offset)
+        }
     }
 }
 
@@ -218,13 +222,13 @@ impl TracedScene {
     /// messages are passed through).
     pub fn new(params: &TracedParams, ocean: &PhotoOcean) -> Result<Self, TextureError> {
         let bad = |name, value, range| TextureError::OutOfRange { name, value, range };
-        check("bed_depth_m", params.bed_depth_m, params.bed_depth_m > 0.0 && params.bed_depth_m <= 1000.0, "(0, 1000] m")?;
         check(
-            "max_distance_m",
-            params.max_distance_m,
-            (1.0..=1e6).contains(&params.max_distance_m),
-            "[1, 10⁶] m",
+            "bed_depth_m",
+            params.bed_depth_m,
+            params.bed_depth_m > 0.0 && params.bed_depth_m <= 1000.0,
+            "(0, 1000] m",
         )?;
+        check("max_distance_m", params.max_distance_m, (1.0..=1e6).contains(&params.max_distance_m), "[1, 10⁶] m")?;
         let sky = Sky::new(&SkyParams::new(params.turbidity, params.sun_direction))
             .map_err(|_| bad("turbidity", params.turbidity, "[1.7, 10], with a finite non-zero sun direction"))?;
         let variance_total = SlopeVariance::cox_munk_clean(params.wind_speed_m_s)
@@ -315,7 +319,11 @@ pub struct TracedImage {
 /// # References
 /// Lai & Wu §V (ray marching and specular named as future work), Fig. 9; Hart 1996 (sphere
 /// tracing); Bruneton, Neyret & Holzschuch 2010 (BRDF); Premoze & Ashikhmin 2001 (water).
-pub fn render_traced(frame: &OceanFrame<'_>, camera: &Pinhole, scene: &TracedScene) -> Result<TracedImage, TextureError> {
+pub fn render_traced(
+    frame: &OceanFrame<'_>,
+    camera: &Pinhole,
+    scene: &TracedScene,
+) -> Result<TracedImage, TextureError> {
     let surface = ComposedSurface::of(frame);
     let (_, hi) = surface.height_range();
     let o = camera.position;

@@ -106,7 +106,8 @@ impl TransitionGraph {
         debug_assert!(back(&targets).iter().all(|&r| r));
         let mut links = Vec::new();
         let mut first = Vec::with_capacity(n + 1);
-        let all: Vec<f64> = targets.iter().enumerate().flat_map(|(i, js)| js.iter().map(move |&j| d[i * n + j])).collect();
+        let all: Vec<f64> =
+            targets.iter().enumerate().flat_map(|(i, js)| js.iter().map(move |&j| d[i * n + j])).collect();
         let sigma = all.iter().sum::<f64>() / all.len() as f64;
         for (i, js) in targets.iter().enumerate() {
             first.push(links.len());
@@ -206,7 +207,13 @@ mod tests {
         let d: Vec<f64> = (0..n * n)
             .map(|k| {
                 let (i, j) = (k / n, k % n);
-                if i == j { 0.0 } else if (i < 3) == (j < 3) { 1.0 + (i + j) as f64 * 0.01 } else { 100.0 }
+                if i == j {
+                    0.0
+                } else if (i < 3) == (j < 3) {
+                    1.0 + (i + j) as f64 * 0.01
+                } else {
+                    100.0
+                }
             })
             .collect();
         let g = TransitionGraph::new(n, &d, 2);

@@ -4,8 +4,9 @@
 use std::path::{Path, PathBuf};
 
 use brine_texture::{
-    HeightField, OceanParams, PhotoOcean, border_differences, Pinhole, ProjectionOptions, ProjectionView, SynthesisParams, Texture,
-    TextureError, frame_distance, render_projection, seam_differences, seam_z_score, synthesize_tileable, walk_links,
+    HeightField, OceanParams, PhotoOcean, Pinhole, ProjectionOptions, ProjectionView, SynthesisParams, Texture,
+    TextureError, border_differences, frame_distance, render_projection, seam_differences, seam_z_score,
+    synthesize_tileable, walk_links,
 };
 use glam::DVec3;
 
@@ -64,7 +65,10 @@ fn tileable_synthesis_has_no_seam_and_the_photo_has_one() {
         let tile = synthesize_tileable(&photo, 96, 96, &params().synthesis, 5).unwrap();
         assert_seamless(&tile, name);
         let (wrap, inside) = seam_differences(&tile);
-        assert!((wrap - inside).abs() <= SEAM_TOLERANCE * inside, "{name}: across the wrap {wrap:.2}, inside {inside:.2}");
+        assert!(
+            (wrap - inside).abs() <= SEAM_TOLERANCE * inside,
+            "{name}: across the wrap {wrap:.2}, inside {inside:.2}"
+        );
         let borders = border_differences(&tile, params().synthesis.step());
         assert!(borders > 0.0);
         // The test can fail: the photo itself does not tile.
@@ -259,7 +263,8 @@ fn traced_frames_are_finite_show_the_bed_and_refuse_a_camera_under_the_waves() {
         let v = if (i / 8 + j / 8) % 2 == 0 { 200.0 } else { 40.0 };
         [v, v * 0.9, v * 0.7]
     });
-    let o = PhotoOcean::new(&crop("small-waves.png"), &crop("main-structure.png"), Some(&bed), &params(), 5, &|_| {}).unwrap();
+    let o = PhotoOcean::new(&crop("small-waves.png"), &crop("main-structure.png"), Some(&bed), &params(), 5, &|_| {})
+        .unwrap();
     let scene = TracedScene::new(&TracedParams::default(), &o).unwrap();
     let camera = Pinhole::from_angles(DVec3::new(0.0, 3.0, 0.0), 200.0, -50.0, 50.0, 32, 24).unwrap();
     let frame = o.frame(2);
@@ -269,7 +274,9 @@ fn traced_frames_are_finite_show_the_bed_and_refuse_a_camera_under_the_waves() {
     assert_eq!(img, render_traced(&frame, &camera, &scene).unwrap(), "deterministic");
     // The bed shows through: a uniform bed gives another image.
     let flat_bed = Texture::from_fn(96, 96, |i, _| [120.0, 110.0, 90.0 + (i % 2) as f32]);
-    let o2 = PhotoOcean::new(&crop("small-waves.png"), &crop("main-structure.png"), Some(&flat_bed), &params(), 5, &|_| {}).unwrap();
+    let o2 =
+        PhotoOcean::new(&crop("small-waves.png"), &crop("main-structure.png"), Some(&flat_bed), &params(), 5, &|_| {})
+            .unwrap();
     let img2 = render_traced(&o2.frame(2), &camera, &TracedScene::new(&TracedParams::default(), &o2).unwrap()).unwrap();
     assert!(img.pixels.iter().zip(&img2.pixels).any(|(a, b)| (*a - *b).length() > 1e-3 * a.length()));
     // A camera below the crests is refused.

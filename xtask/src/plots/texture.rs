@@ -68,7 +68,10 @@ fn pebbles(n: usize) -> Texture {
         let (mut d1, mut d2, mut id) = (f64::INFINITY, f64::INFINITY, (0, 0));
         for dj in -1i64..=1 {
             for di in -1i64..=1 {
-                let (cx, cy) = ((x.floor() as i64 + di).rem_euclid(cells as i64) as usize, (y.floor() as i64 + dj).rem_euclid(cells as i64) as usize);
+                let (cx, cy) = (
+                    (x.floor() as i64 + di).rem_euclid(cells as i64) as usize,
+                    (y.floor() as i64 + dj).rem_euclid(cells as i64) as usize,
+                );
                 let px = x.floor() + di as f64 + hash(cx, cy, 1);
                 let py = y.floor() + dj as f64 + hash(cx, cy, 2);
                 let d = (x - px).hypot(y - py);
@@ -122,7 +125,9 @@ pub fn plot(dir: &Path) -> Result<(), String> {
     let f = &ocean.sequence().frames;
     let morphs: Vec<image::RgbImage> = [0.0, 0.25, 0.5, 0.75, 1.0]
         .iter()
-        .map(|&a| resized(&ocean.morphs()[link].morph(&f[l.from], &f[l.to], a).window(0, 0, 128, 128).to_image(), 192, 192))
+        .map(|&a| {
+            resized(&ocean.morphs()[link].morph(&f[l.from], &f[l.to], a).window(0, 0, 128, 128).to_image(), 192, 192)
+        })
         .collect();
     save(&strip(&morphs, 4), &dir.join("texture-morph.png"))?;
 
@@ -135,13 +140,15 @@ pub fn plot(dir: &Path) -> Result<(), String> {
     // 5. Rendering: the paper's projection, with the bed (Fig. 9), and traced.
     let sun = DVec3::new(-0.28, 0.57, 0.77).normalize();
     let sky = Sky::new(&SkyParams::new(3.0, sun)).map_err(|e| e.to_string())?;
-    let camera = Pinhole::from_angles(DVec3::new(0.0, 8.0, 0.0), 225.0, -20.0, 60.0, 384, 384).map_err(|e| e.to_string())?;
+    let camera =
+        Pinhole::from_angles(DVec3::new(0.0, 8.0, 0.0), 225.0, -20.0, 60.0, 384, 384).map_err(|e| e.to_string())?;
     let plain = PhotoOcean::new(&small, &main, None, &params, SEED, &|_| {}).map_err(|e| e.to_string())?;
     let view = ProjectionView::new(&camera, &sky);
     let projected: Vec<image::RgbImage> =
         [0, 12].iter().map(|&n| render_projection(&plain.frame(n), &view, &ProjectionOptions::default())).collect();
     save(&strip(&projected, 8), &dir.join("texture-projection.png"))?;
-    let down = Pinhole::from_angles(DVec3::new(0.0, 4.0, 0.0), 225.0, -55.0, 60.0, 384, 384).map_err(|e| e.to_string())?;
+    let down =
+        Pinhole::from_angles(DVec3::new(0.0, 4.0, 0.0), 225.0, -55.0, 60.0, 384, 384).map_err(|e| e.to_string())?;
     let bed_view = ProjectionView::new(&down, &sky);
     let shallow = ProjectionOptions { bed_depth_m: 3.0, ..ProjectionOptions::default() };
     let with_bed = render_projection(&ocean.frame(0), &bed_view, &shallow);
@@ -153,7 +160,13 @@ pub fn plot(dir: &Path) -> Result<(), String> {
     let ev = brine_render::auto_exposure_ev(
         {
             let n = traced.pixels.len() as f64;
-            (traced.pixels.iter().map(|p| ((0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z).max(0.0) * 1000.0 + 1e-6).ln()).sum::<f64>() / n).exp()
+            (traced
+                .pixels
+                .iter()
+                .map(|p| ((0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z).max(0.0) * 1000.0 + 1e-6).ln())
+                .sum::<f64>()
+                / n)
+                .exp()
         },
         (scene.sky.horizontal_irradiance_rgb().y + scene.sky.sun().irradiance_rgb.y * sun.y) * 1000.0,
     );

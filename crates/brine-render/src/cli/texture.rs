@@ -99,6 +99,30 @@ pub struct TextureArgs {
     /// Atmospheric turbidity, [1.7, 10].
     #[arg(long, default_value_t = 3.0)]
     pub turbidity: f64,
+    /// Synthesis, height and animation parameters.
+    #[command(flatten)]
+    pub tuning: Box<TextureTuning>,
+    /// Depth of the bed below sea level (m).
+    #[arg(long, default_value_t = 2.0)]
+    pub bed_depth_m: f64,
+    /// No mip-mapping in projection mode (the paper's plain bilinear lookup).
+    #[arg(long)]
+    pub no_mipmaps: bool,
+    /// Wind speed for the sun's highlight in trace mode (m/s), [0, 60].
+    #[arg(long, default_value_t = 6.0)]
+    pub wind_m_s: f64,
+    /// Exposure EV100 in trace mode; automatic (metered on the first frame) when absent.
+    #[arg(long, allow_hyphen_values = true)]
+    pub exposure_ev: Option<f64>,
+    /// No progress bar and no summary.
+    #[arg(short, long)]
+    pub quiet: bool,
+}
+
+/// Synthesis, height and animation parameters of `brine texture` (boxed in [`TextureArgs`] to keep
+/// the command enum small).
+#[derive(Debug, Clone, clap::Args)]
+pub struct TextureTuning {
     /// Size of a small-wave texel on the sea (m).
     #[arg(long, default_value_t = OceanParams::default().texel_m)]
     pub texel_m: f64,
@@ -147,21 +171,6 @@ pub struct TextureArgs {
     /// Form of the relighting factor (Eq. 9).
     #[arg(long, value_enum, default_value = "paper")]
     pub relight: RelightArg,
-    /// Depth of the bed below sea level (m).
-    #[arg(long, default_value_t = 2.0)]
-    pub bed_depth_m: f64,
-    /// No mip-mapping in projection mode (the paper's plain bilinear lookup).
-    #[arg(long)]
-    pub no_mipmaps: bool,
-    /// Wind speed for the sun's highlight in trace mode (m/s), [0, 60].
-    #[arg(long, default_value_t = 6.0)]
-    pub wind_m_s: f64,
-    /// Exposure EV100 in trace mode; automatic (metered on the first frame) when absent.
-    #[arg(long, allow_hyphen_values = true)]
-    pub exposure_ev: Option<f64>,
-    /// No progress bar and no summary.
-    #[arg(short, long)]
-    pub quiet: bool,
 }
 
 /// Parses `A..B` with `A < B`.
@@ -202,7 +211,10 @@ fn input(e: TextureError) -> CliError {
 
 /// Writes a file atomically: to a temporary file in the destination folder, renamed over the
 /// destination once complete (as `brine_render::write_image` does).
-fn write_atomic(path: &Path, encode: impl FnOnce(&mut BufWriter<&mut std::fs::File>) -> Result<(), String>) -> Result<(), CliError> {
+fn write_atomic(
+    path: &Path,
+    encode: impl FnOnce(&mut BufWriter<&mut std::fs::File>) -> Result<(), String>,
+) -> Result<(), CliError> {
     let shown = path.display();
     let fail = |m: String| CliError::Failure(format!("cannot write {shown}: {m}"));
     let dir = match path.parent() {
@@ -227,7 +239,10 @@ fn write_atomic(path: &Path, encode: impl FnOnce(&mut BufWriter<&mut std::fs::Fi
 }
 
 /// Writes an 8-bit RGB or 16-bit grey image as PNG, atomically.
-fn write_png<P: image::PixelWithColorType>(path: &Path, img: &image::ImageBuffer<P, Vec<P::Subpixel>>) -> Result<(), CliError>
+fn write_png<P: image::PixelWithColorType>(
+    path: &Path,
+    img: &image::ImageBuffer<P, Vec<P::Subpixel>>,
+) -> Result<(), CliError>
 where
     [P::Subpixel]: image::EncodableLayout,
 {
@@ -239,31 +254,38 @@ where
     })
 }
 
-/// Loads a photo, naming its flag in errors.
-fn load(path: &Path, flag: &str) -> Result<Texture, CliError> {
-    Texture::load(path, flag).map_err(input)
+/// Loads a photo and checks it (`photo`: a small-wave or main-structure photo, at least one patch
+/// in size and not uniform; otherwise a bed, at least one patch in size), naming its flag and
+/// path in errors.
+fn load(path: &Path, flag: &str, params: &OceanParams, photo: bool) -> Result<Texture, CliError> {
+    let texture = Texture::load(path, flag).map_err(input)?;
+    let what = format!("{flag} {}", path.display());
+    if photo { params.check_photo(&what, &texture) } else { params.synthesis.check_exemplar(&what, &texture) }
+        .map_err(input)?;
+    Ok(texture)
 }
 
 /// The ocean parameters of the arguments.
 fn params_of(a: &TextureArgs) -> OceanParams {
     let d = OceanParams::default();
+    let t = &a.tuning;
     OceanParams {
-        synthesis: SynthesisParams { patch_size: a.patch, boundary_width: a.boundary, ..SynthesisParams::default() },
-        small_size: a.small_size,
-        main_size: a.main_size,
-        bed_size: a.small_size,
-        frames: a.basis_frames,
-        links_per_frame: a.links,
-        morph_steps: a.morph_steps,
-        height_factor_small_m: a.hf_small_m,
-        height_factor_main_m: a.hf_main_m,
-        scale: a.scale,
-        texel_m: a.texel_m,
-        bed_texel_m: a.bed_texel_m,
-        small_velocity_m_s: a.small_velocity_m_s.unwrap_or(d.small_velocity_m_s),
-        main_velocity_m_s: a.main_velocity_m_s.unwrap_or(d.main_velocity_m_s),
-        fps: a.fps,
-        relight: match a.relight {
+        synthesis: SynthesisParams { patch_size: t.patch, boundary_width: t.boundary, ..SynthesisParams::default() },
+        small_size: t.small_size,
+        main_size: t.main_size,
+        bed_size: t.small_size,
+        frames: t.basis_frames,
+        links_per_frame: t.links,
+        morph_steps: t.morph_steps,
+        height_factor_small_m: t.hf_small_m,
+        height_factor_main_m: t.hf_main_m,
+        scale: t.scale,
+        texel_m: t.texel_m,
+        bed_texel_m: t.bed_texel_m,
+        small_velocity_m_s: t.small_velocity_m_s.unwrap_or(d.small_velocity_m_s),
+        main_velocity_m_s: t.main_velocity_m_s.unwrap_or(d.main_velocity_m_s),
+        fps: t.fps,
+        relight: match t.relight {
             RelightArg::Paper => RelightRule::Paper,
             RelightArg::Bounded => RelightRule::Bounded,
         },
@@ -280,7 +302,10 @@ fn dump(ocean: &PhotoOcean, dir: &Path) -> Result<(), CliError> {
     write_png(&dir.join("main-height.png"), &m.grid().to_grey16(0.0, p.height_factor_main_m))?;
     for (k, f) in ocean.basis_frames().iter().enumerate() {
         write_png(&dir.join(format!("small-frame-{k:02}.png")), &f.colour.to_image())?;
-        write_png(&dir.join(format!("small-height-{k:02}.png")), &f.height().grid().to_grey16(0.0, p.height_factor_small_m))?;
+        write_png(
+            &dir.join(format!("small-height-{k:02}.png")),
+            &f.height().grid().to_grey16(0.0, p.height_factor_small_m),
+        )?;
     }
     if let Some(b) = ocean.bed() {
         write_png(&dir.join("bed-texture.png"), &b.to_image())?;
@@ -310,42 +335,64 @@ fn dump(ocean: &PhotoOcean, dir: &Path) -> Result<(), CliError> {
 pub fn run_texture(args: &TextureArgs) -> Result<(), CliError> {
     // Check everything cheap before the preprocessing.
     let pattern = &args.output;
-    let format = OutputFormat::from_path(pattern).map_err(|m| CliError::Input(m.replacen("output.path", "--output", 1)))?;
+    let format =
+        OutputFormat::from_path(pattern).map_err(|m| CliError::Input(m.replacen("output.path", "--output", 1)))?;
     if args.mode == TextureMode::Project && format != OutputFormat::Png {
-        return Err(CliError::Input(format!("--output {}: projection mode writes 8-bit PNG (use --mode trace for EXR)", pattern.display())));
+        return Err(CliError::Input(format!(
+            "--output {}: projection mode writes 8-bit PNG (use --mode trace for EXR)",
+            pattern.display()
+        )));
     }
     if let Some(dir) = pattern.parent().filter(|p| !p.as_os_str().is_empty())
         && !dir.is_dir()
     {
-        return Err(CliError::Input(format!("cannot write {}: folder {} does not exist", pattern.display(), dir.display())));
+        return Err(CliError::Input(format!(
+            "cannot write {}: folder {} does not exist",
+            pattern.display(),
+            dir.display()
+        )));
     }
     let frames: Vec<(u32, PathBuf)> = match args.frames {
         None => vec![(0, pattern.clone())],
-        Some((a, b)) => (a..b).map(|f| frame_path(pattern, f).map(|p| (f, p))).collect::<Result<_, _>>().map_err(CliError::Input)?,
+        Some((a, b)) => {
+            (a..b).map(|f| frame_path(pattern, f).map(|p| (f, p))).collect::<Result<_, _>>().map_err(CliError::Input)?
+        }
     };
-    let camera = Pinhole::from_angles(args.position, args.yaw_deg, args.pitch_deg, args.fov_deg, args.width, args.height)
-        .map_err(input)?;
+    let camera =
+        Pinhole::from_angles(args.position, args.yaw_deg, args.pitch_deg, args.fov_deg, args.width, args.height)
+            .map_err(input)?;
     if !(args.position.y > 0.0) {
-        return Err(CliError::Input(format!("--position: the camera must be above the sea (y > 0), got y = {}", args.position.y)));
+        return Err(CliError::Input(format!(
+            "--position: the camera must be above the sea (y > 0), got y = {}",
+            args.position.y
+        )));
     }
     if !(-90.0..=90.0).contains(&args.sun_elevation_deg) {
-        return Err(CliError::Input(format!("--sun-elevation-deg = {} is out of range: expected [-90, 90]°", args.sun_elevation_deg)));
+        return Err(CliError::Input(format!(
+            "--sun-elevation-deg = {} is out of range: expected [-90, 90]°",
+            args.sun_elevation_deg
+        )));
     }
     let params = params_of(args);
     params.validate().map_err(input)?;
     let sun = direction_from_bearing(args.sun_azimuth_deg, args.sun_elevation_deg);
     let sky = Sky::new(&SkyParams::new(args.turbidity, sun)).map_err(|e| CliError::Input(e.to_string()))?;
-    let projection = ProjectionOptions { mipmaps: !args.no_mipmaps, bed_depth_m: args.bed_depth_m, ..ProjectionOptions::default() };
+    let projection =
+        ProjectionOptions { mipmaps: !args.no_mipmaps, bed_depth_m: args.bed_depth_m, ..ProjectionOptions::default() };
     projection.validate().map_err(input)?;
-    let small = load(&args.small, "--small")?;
-    let main = load(&args.main, "--main")?;
-    let bed = args.bed.as_deref().map(|b| load(b, "--bed")).transpose()?;
+    let small = load(&args.small, "--small", &params, true)?;
+    let main = load(&args.main, "--main", &params, true)?;
+    let bed = args.bed.as_deref().map(|b| load(b, "--bed", &params, false)).transpose()?;
 
     // Preprocessing, with a progress bar.
     let show = !args.quiet && std::io::stderr().is_terminal();
-    let bar = ProgressBar::with_draw_target(None, if show { ProgressDrawTarget::stderr() } else { ProgressDrawTarget::hidden() });
+    let bar = ProgressBar::with_draw_target(
+        None,
+        if show { ProgressDrawTarget::stderr() } else { ProgressDrawTarget::hidden() },
+    );
     bar.set_style(
-        ProgressStyle::with_template("{spinner} preprocessing {bar:40.cyan/blue} {percent}%  ETA {eta}").expect("valid template"),
+        ProgressStyle::with_template("{spinner} preprocessing {bar:40.cyan/blue} {percent}%  ETA {eta}")
+            .expect("valid template"),
     );
     let start = Instant::now();
     let ocean = PhotoOcean::new(&small, &main, bed.as_ref(), &params, args.seed, &|p| {
@@ -364,7 +411,10 @@ pub fn run_texture(args: &TextureArgs) -> Result<(), CliError> {
         Some(frames.len() as u64),
         if show && frames.len() > 1 { ProgressDrawTarget::stderr() } else { ProgressDrawTarget::hidden() },
     );
-    bar.set_style(ProgressStyle::with_template("{spinner} frames {bar:40.cyan/blue} {pos}/{len}  ETA {eta}").expect("valid template"));
+    bar.set_style(
+        ProgressStyle::with_template("{spinner} frames {bar:40.cyan/blue} {pos}/{len}  ETA {eta}")
+            .expect("valid template"),
+    );
     let render_start = Instant::now();
     match args.mode {
         TextureMode::Project => {
@@ -393,7 +443,8 @@ pub fn run_texture(args: &TextureArgs) -> Result<(), CliError> {
                 let ev = *exposure.get_or_insert_with(|| {
                     crate::auto_exposure_ev(crate::world::log_average_luminance_cd_m2(&img.pixels), illuminance_lx)
                 });
-                crate::write_image(path, img.width, img.height, &img.pixels, ev).map_err(|e| CliError::Failure(e.to_string()))?;
+                crate::write_image(path, img.width, img.height, &img.pixels, ev)
+                    .map_err(|e| CliError::Failure(e.to_string()))?;
                 bar.inc(1);
             }
         }
@@ -401,7 +452,8 @@ pub fn run_texture(args: &TextureArgs) -> Result<(), CliError> {
     bar.finish_and_clear();
     if !args.quiet {
         let n = frames.len() as f64;
-        let target = if args.frames.is_some() { format!("{} frames", frames.len()) } else { pattern.display().to_string() };
+        let target =
+            if args.frames.is_some() { format!("{} frames", frames.len()) } else { pattern.display().to_string() };
         eprintln!(
             "wrote {target} ({}×{}, {:?} mode): preprocessing {preprocess_s:.2} s, {:.1} ms per frame",
             args.width,
@@ -429,7 +481,18 @@ mod tests {
         let main = examples().join("main-structure.png");
         let mut v = vec!["brine", "texture", "--small", small.to_str().unwrap(), "--main", main.to_str().unwrap()];
         // Small sizes keep the test quick in the dev profile.
-        v.extend(["--small-size", "64", "--main-size", "64", "--patch", "24", "--boundary", "4", "--basis-frames", "3"]);
+        v.extend([
+            "--small-size",
+            "64",
+            "--main-size",
+            "64",
+            "--patch",
+            "24",
+            "--boundary",
+            "4",
+            "--basis-frames",
+            "3",
+        ]);
         v.extend(["--links", "1", "--width", "40", "--height", "30", "-q"]);
         v.extend(extra);
         match Cli::try_parse_from(v).unwrap().command {
@@ -455,7 +518,13 @@ mod tests {
         let frames = dir.path().join("f_##.png");
         run_texture(&args(&["-o", frames.to_str().unwrap(), "--frames", "3..5"])).unwrap();
         assert!(dir.path().join("f_03.png").exists() && dir.path().join("f_04.png").exists());
-        assert_eq!(std::fs::read_dir(dir.path()).unwrap().filter(|e| e.as_ref().unwrap().file_name().to_string_lossy().ends_with(".tmp")).count(), 0);
+        assert_eq!(
+            std::fs::read_dir(dir.path())
+                .unwrap()
+                .filter(|e| e.as_ref().unwrap().file_name().to_string_lossy().ends_with(".tmp"))
+                .count(),
+            0
+        );
     }
 
     #[test]
