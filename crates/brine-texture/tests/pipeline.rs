@@ -4,9 +4,9 @@
 use std::path::{Path, PathBuf};
 
 use brine_texture::{
-    HeightField, OceanParams, PhotoOcean, Pinhole, ProjectionOptions, ProjectionView, SynthesisParams, Texture,
-    TextureError, border_differences, frame_distance, render_projection, seam_differences, seam_z_score,
-    synthesize_tileable, walk_links,
+    HeightField, OceanParams, PhotoOcean, Pinhole, ProjectionOptions, ProjectionView, RelightRule, SynthesisParams,
+    Texture, TextureError, border_differences, frame_distance, relight_intensity, render_projection, seam_differences,
+    seam_z_score, synthesize_tileable, walk_links,
 };
 use glam::DVec3;
 
@@ -283,4 +283,77 @@ fn traced_frames_are_finite_show_the_bed_and_refuse_a_camera_under_the_waves() {
     let low = Pinhole::from_angles(DVec3::new(0.0, 0.0, 0.0), 200.0, -10.0, 50.0, 8, 8).unwrap();
     let e = render_traced(&frame, &low, &scene).unwrap_err();
     assert!(e.to_string().contains("camera.position.y"), "{e}");
+}
+
+/// Tolerance for comparing two evaluations of the same composed quantity by different routes:
+/// the heights are stored in `f32` (relative 6·10⁻⁸ of a few metres) and the colours are `f32`
+/// levels; 10⁻⁴ m and 10⁻³ level are far above those roundings and far below any real error (a
+/// wrong texel or shift changes a height by ~10⁻² m and a colour by levels).
+const ROUTE_M: f64 = 1e-4;
+const ROUTE_LEVELS: f64 = 1e-3;
+
+#[test]
+fn composition_and_animation_follow_eq_2_3_10_11() {
+    let o = ocean(6);
+    let p = o.params();
+    let main = o.main_height();
+    let f0 = o.frame(0);
+    for n in [0u64, 5, 11] {
+        let f = o.frame(n);
+        let t = n as f64 / p.fps;
+        assert!((f.time_s - t).abs() < 1e-12);
+        let [sx, sz] = p.small_velocity_m_s;
+        let [mx, mz] = p.main_velocity_m_s;
+        // P_h of Eq. 1 recomputed from the displayed small-wave colour.
+        let small_h = HeightField::from_texture(&f.small.colour, p.height_factor_small_m, "frame").unwrap();
+        for (x, z) in [(0.3, -1.7), (2.45, 3.05), (-4.0, 0.77)] {
+            // Eq. 10 (sampling at x − t·v): small-wave texels ((x − t s)/Δ), main texels at 1/scale of those.
+            let (us, vs) = ((x - t * sx) / p.texel_m, (z - t * sz) / p.texel_m);
+            let (um, vm) = ((x - t * mx) / p.texel_m / p.scale, (z - t * mz) / p.texel_m / p.scale);
+            let expected = small_h.sample(us, vs) - small_h.mean() + main.sample(um, vm) - main.mean();
+            assert!((f.height(x, z) - expected).abs() < ROUTE_M, "Eq. 3/10 at frame {n}, ({x}, {z})");
+            // Eq. 8 shifted: Δheight = M_h − mean(M_h) at the shifted main texel.
+            let dh = main.sample(um, vm) - main.mean();
+            assert!((f.delta_height(x, z) - dh).abs() < ROUTE_M);
+            // The main structure travels along m: Δheight at x + t·m now is Δheight at x at t = 0.
+            assert!((f.delta_height(x + t * mx, z + t * mz) - f0.delta_height(x, z)).abs() < ROUTE_M);
+            // Eq. 2: S_c is the small-wave colour at the shifted texel; Eq. 11 adds ΔI of Eq. 7–9.
+            let pc = f.small.colour.sample(us, vs);
+            let unrelit = f.unrelit_colour(x, z);
+            let relit = f.colour(x, z);
+            let dh_max = o.relighting().delta_height_max;
+            for c in 0..3 {
+                assert!(f64::from((unrelit[c] - pc[c]).abs()) < ROUTE_LEVELS, "Eq. 2");
+                let i = relight_intensity(f64::from(pc[c]), dh, dh_max, RelightRule::Paper);
+                assert!((f64::from(relit[c]) - i).abs() < ROUTE_LEVELS, "Eq. 11");
+            }
+        }
+    }
+    // Δheight_max of Eq. 9 is the largest |M_h − mean(M_h)|.
+    let g = main.grid().values();
+    let largest = g.iter().map(|&v| (f64::from(v) - main.mean()).abs()).fold(0.0, f64::max);
+    assert!((o.relighting().delta_height_max - largest).abs() < ROUTE_M);
+}
+
+#[test]
+fn the_temporal_constraint_makes_consecutive_frames_closest() {
+    // Under the temporal constraint each frame stays close to the previous one: consecutive basis
+    // frames are nearer than frames two or more apart (without it, every pair would be as far as
+    // two independent syntheses).
+    let o = ocean(9);
+    let frames = &o.sequence().frames;
+    let n = frames.len();
+    let mean = |gap: usize| {
+        let d: Vec<f64> = (0..n - gap).map(|i| frame_distance(&frames[i], &frames[i + gap])).collect();
+        d.iter().sum::<f64>() / d.len() as f64
+    };
+    let (near, far) = (mean(1), mean(n - 1));
+    assert!(near < far, "consecutive frames {near:.2}, first to last {far:.2}");
+    // Consecutive frames are not identical either: the waves move.
+    assert!(near > 0.5, "consecutive frames differ by {near:.2} levels only");
+    // And two independent tileable syntheses are further apart than consecutive frames.
+    let ex = crop("small-waves.png");
+    let a = synthesize_tileable(&ex, 64, 64, &params().synthesis, 1).unwrap();
+    let b = synthesize_tileable(&ex, 64, 64, &params().synthesis, 2).unwrap();
+    assert!(near < frame_distance(&a, &b), "consecutive {near:.2} vs independent {:.2}", frame_distance(&a, &b));
 }
