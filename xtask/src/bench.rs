@@ -49,6 +49,11 @@ const BENCHES: &[(&str, &str, &[&str])] = &[
         &["bench", "-p", "brine-foam", "--bench", "foam"],
     ),
     (
+        "texture",
+        "brine-texture: preprocessing and per-frame time at 384×384 (projection, bed, traced), 1 thread vs all",
+        &["bench", "-p", "brine-texture", "--bench", "texture"],
+    ),
+    (
         "trace",
         "brine-trace: every tracing method on identical 640×480 primary rays (tables of docs/benchmarks.md)",
         &["bench", "-p", "brine-trace", "--bench", "methods"],

@@ -1,0 +1,96 @@
+//! The pinhole camera of the renderer (brine-render's `Camera`), described here so that
+//! brine-texture does not depend on the renderer: y up, compass-bearing yaw, pitch, vertical
+//! field of view.
+
+use glam::DVec3;
+
+use crate::TextureError;
+use crate::error::check;
+
+/// A pinhole camera with an orthonormal frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pinhole {
+    /// Eye position (m).
+    pub position: DVec3,
+    /// Unit view direction.
+    pub forward: DVec3,
+    /// Unit right vector.
+    pub right: DVec3,
+    /// Unit up vector of the image.
+    pub up: DVec3,
+    /// `tan(fov/2)` of the vertical field of view.
+    pub tan_half_fov: f64,
+    /// Image width (pixels).
+    pub width: u32,
+    /// Image height (pixels).
+    pub height: u32,
+}
+
+impl Pinhole {
+    /// The camera at `position` looking along the compass bearing `yaw_deg` and the elevation
+    /// `pitch_deg`, as brine-render builds it from a scene's `[camera]` (looking straight up or
+    /// down, north is the image's up).
+    ///
+    /// # Arguments
+    /// - `position`: eye (m), finite.
+    /// - `yaw_deg`: compass bearing of the view (°, 0 north = −z, 90 east = +x), finite.
+    /// - `pitch_deg`: elevation of the view (°), `[−90, 90]`.
+    /// - `fov_deg`: vertical field of view (°), `(0, 180)`.
+    /// - `width`, `height`: image size (pixels), `[1, 16384]`.
+    ///
+    /// # Errors
+    /// [`TextureError::OutOfRange`] naming the first bad argument.
+    pub fn from_angles(
+        position: DVec3,
+        yaw_deg: f64,
+        pitch_deg: f64,
+        fov_deg: f64,
+        width: u32,
+        height: u32,
+    ) -> Result<Self, TextureError> {
+        check("camera.position.x", position.x, position.x.is_finite(), "finite m")?;
+        check("camera.position.y", position.y, position.y.is_finite(), "finite m")?;
+        check("camera.position.z", position.z, position.z.is_finite(), "finite m")?;
+        check("camera.yaw_deg", yaw_deg, yaw_deg.is_finite(), "finite °")?;
+        check("camera.pitch_deg", pitch_deg, (-90.0..=90.0).contains(&pitch_deg), "[-90, 90] °")?;
+        check("camera.fov_deg", fov_deg, fov_deg > 0.0 && fov_deg < 180.0, "(0, 180) °")?;
+        check("camera.width", f64::from(width), (1..=16384).contains(&width), "[1, 16384] px")?;
+        check("camera.height", f64::from(height), (1..=16384).contains(&height), "[1, 16384] px")?;
+        let (b, e) = (yaw_deg.to_radians(), pitch_deg.to_radians());
+        let forward = DVec3::new(b.sin() * e.cos(), e.sin(), -b.cos() * e.cos());
+        let world_up = if forward.cross(DVec3::Y).length_squared() < 1e-12 { DVec3::NEG_Z } else { DVec3::Y };
+        let right = forward.cross(world_up).normalize();
+        let up = right.cross(forward);
+        Ok(Self { position, forward, right, up, tan_half_fov: (0.5 * fov_deg.to_radians()).tan(), width, height })
+    }
+
+    /// Unit direction through the image point `(x, y)` in pixels (`(0, 0)` the top-left corner,
+    /// `(width, height)` the bottom-right).
+    #[inline]
+    pub fn direction(&self, x: f64, y: f64) -> DVec3 {
+        let aspect = f64::from(self.width) / f64::from(self.height);
+        let sx = (2.0 * x / f64::from(self.width) - 1.0) * self.tan_half_fov * aspect;
+        let sy = (1.0 - 2.0 * y / f64::from(self.height)) * self.tan_half_fov;
+        (self.forward + sx * self.right + sy * self.up).normalize()
+    }
+
+    /// Angle subtended by one pixel at the image centre (rad).
+    pub fn pixel_angle(&self) -> f64 {
+        2.0 * self.tan_half_fov / f64::from(self.height)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bearing_90_looks_east_and_straight_down_has_north_up() {
+        let c = Pinhole::from_angles(DVec3::new(0.0, 5.0, 0.0), 90.0, 0.0, 60.0, 64, 48).unwrap();
+        assert!((c.forward - DVec3::X).length() < 1e-12);
+        assert!((c.direction(32.0, 24.0) - c.forward).length() < 1e-12);
+        let down = Pinhole::from_angles(DVec3::new(0.0, 5.0, 0.0), 0.0, -90.0, 60.0, 64, 64).unwrap();
+        assert!((down.up - DVec3::NEG_Z).length() < 1e-12);
+        assert!(Pinhole::from_angles(DVec3::ZERO, 0.0, 0.0, 180.0, 1, 1).is_err());
+    }
+}
