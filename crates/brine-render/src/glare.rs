@@ -82,18 +82,30 @@ impl Glare {
         let (pw, ph) = (2 * width, 2 * height);
         let pix_deg = pixel_angle_rad.to_degrees();
         let energy = psf_energy(90.0);
+        // The PSF is radial: weights of the quadrant dx, dy ≥ 0, one row per task, summed in a
+        // fixed order (the same bits at any thread count).
+        let weight = |dx: usize, dy: usize| {
+            let theta = ((dx * dx + dy * dy) as f64).sqrt() * pix_deg;
+            spencer_photopic_psf(theta) * pix_deg * pix_deg / energy
+        };
+        let quadrant: Vec<Vec<f64>> =
+            (0..height).into_par_iter().map(|dy| (0..width).map(|dx| weight(dx, dy)).collect()).collect();
         let mut kernel = vec![Complex::new(0.0, 0.0); pw * ph];
         let mut spread = 0.0;
-        for dy in -(height as i64 - 1)..=(height as i64 - 1) {
-            for dx in -(width as i64 - 1)..=(width as i64 - 1) {
+        for (dy, row) in quadrant.iter().enumerate() {
+            for (dx, &w) in row.iter().enumerate() {
                 if dx == 0 && dy == 0 {
                     continue;
                 }
-                let theta = ((dx * dx + dy * dy) as f64).sqrt() * pix_deg;
-                let w = spencer_photopic_psf(theta) * pix_deg * pix_deg / energy;
-                spread += w;
-                let (ix, iy) = (dx.rem_euclid(pw as i64) as usize, dy.rem_euclid(ph as i64) as usize);
-                kernel[iy * pw + ix] = Complex::new(w, 0.0);
+                // The offsets (±dx, ±dy), each once.
+                let xs: &[usize] = if dx == 0 { &[0] } else { &[dx, pw - dx] };
+                let ys: &[usize] = if dy == 0 { &[0] } else { &[dy, ph - dy] };
+                for &iy in ys {
+                    for &ix in xs {
+                        kernel[iy * pw + ix] = Complex::new(w, 0.0);
+                        spread += w;
+                    }
+                }
             }
         }
         kernel[0] = Complex::new((1.0 - spread).max(0.0), 0.0);
@@ -109,27 +121,35 @@ impl Glare {
             col_fwd: planner.plan_fft_forward(ph),
             col_inv: planner.plan_fft_inverse(ph),
         };
-        g.fft2(&mut kernel, false);
-        g.kernel_hat = kernel;
+        g.kernel_hat = g.forward(&mut kernel, ph);
         g
     }
 
-    /// In-place 2-D transform of a `pw × ph` row-major buffer (rows, then columns).
-    fn fft2(&self, data: &mut [Complex<f64>], inverse: bool) {
-        let (row, col) = if inverse { (&self.row_inv, &self.col_inv) } else { (&self.row_fwd, &self.col_fwd) };
-        data.par_chunks_mut(self.pw).for_each(|r| row.process(r));
+    /// Forward 2-D transform of a `pw × ph` row-major buffer whose rows from `rows` on are zero;
+    /// the transform is returned transposed (column-major: `x·ph + y`), the layout [`Self::inverse`]
+    /// takes.
+    fn forward(&self, data: &mut [Complex<f64>], rows: usize) -> Vec<Complex<f64>> {
+        data[..rows * self.pw].par_chunks_mut(self.pw).for_each(|r| self.row_fwd.process(r));
         let mut cols = vec![Complex::new(0.0, 0.0); self.pw * self.ph];
-        for y in 0..self.ph {
-            for x in 0..self.pw {
-                cols[x * self.ph + y] = data[y * self.pw + x];
+        cols.par_chunks_mut(self.ph).enumerate().for_each(|(x, c)| {
+            for (y, v) in c.iter_mut().enumerate().take(rows) {
+                *v = data[y * self.pw + x];
             }
-        }
-        cols.par_chunks_mut(self.ph).for_each(|c| col.process(c));
-        for x in 0..self.pw {
-            for y in 0..self.ph {
-                data[y * self.pw + x] = cols[x * self.ph + y];
+            self.col_fwd.process(c);
+        });
+        cols
+    }
+
+    /// Inverse of [`Self::forward`] (unnormalised), writing the first `rows` rows of the result
+    /// into `data` (row-major).
+    fn inverse(&self, cols: &mut [Complex<f64>], data: &mut [Complex<f64>], rows: usize) {
+        cols.par_chunks_mut(self.ph).for_each(|c| self.col_inv.process(c));
+        data[..rows * self.pw].par_chunks_mut(self.pw).enumerate().for_each(|(y, r)| {
+            for (x, v) in r.iter_mut().enumerate() {
+                *v = cols[x * self.ph + y];
             }
-        }
+            self.row_inv.process(r);
+        });
     }
 
     /// Convolves `pixels` (row-major, `width × height`, linear radiance) with the PSF, spreading
@@ -153,11 +173,9 @@ impl Glare {
             }
         }
         for buf in [&mut rg, &mut b] {
-            self.fft2(buf, false);
-            for (v, k) in buf.iter_mut().zip(&self.kernel_hat) {
-                *v *= *k;
-            }
-            self.fft2(buf, true);
+            let mut spectrum = self.forward(buf, self.height);
+            spectrum.par_iter_mut().zip(self.kernel_hat.par_iter()).for_each(|(v, k)| *v *= *k);
+            self.inverse(&mut spectrum, buf, self.height);
         }
         for y in 0..self.height {
             for x in 0..self.width {
@@ -184,6 +202,51 @@ mod tests {
         assert_relative_eq!(spencer_photopic_psf(0.1), 6.4777e3, max_relative = ORACLE);
         assert_relative_eq!(spencer_photopic_psf(1.0), 19.018, max_relative = ORACLE);
         assert_relative_eq!(spencer_photopic_psf(10.0), 0.10941, max_relative = ORACLE);
+    }
+
+    /// The FFT convolution equals the direct sum `Σ_q w(p − q) L(q)` with the weights of the
+    /// definition (PSF per pixel solid angle, centre keeping the rest), on a small random image.
+    #[test]
+    fn fft_convolution_equals_the_direct_sum() {
+        // Two 2-D FFTs of a 24 × 18 buffer: rounding of ~10³ terms of size ≤ 1.
+        const FFT_ROUNDING: f64 = 1e-12;
+        let (w, h) = (12usize, 9usize);
+        let pixel = 0.3f64.to_radians();
+        let img: Vec<DVec3> = (0..w * h)
+            .map(|i| {
+                let f = |k: u64| ((i as u64 * 2654435761 + k * 40503) % 1000) as f64 / 1000.0;
+                DVec3::new(f(1), f(2), f(3))
+            })
+            .collect();
+        let mut out = img.clone();
+        Glare::new(w, h, pixel).apply(&mut out, f64::INFINITY);
+        let pix_deg = pixel.to_degrees();
+        let energy = psf_energy(90.0);
+        let weight = |dx: i64, dy: i64| {
+            let theta = ((dx * dx + dy * dy) as f64).sqrt() * pix_deg;
+            spencer_photopic_psf(theta) * pix_deg * pix_deg / energy
+        };
+        let mut spread = 0.0;
+        for dy in -(h as i64 - 1)..h as i64 {
+            for dx in -(w as i64 - 1)..w as i64 {
+                if (dx, dy) != (0, 0) {
+                    spread += weight(dx, dy);
+                }
+            }
+        }
+        for y in 0..h as i64 {
+            for x in 0..w as i64 {
+                let mut sum = DVec3::ZERO;
+                for qy in 0..h as i64 {
+                    for qx in 0..w as i64 {
+                        let k = if (qx, qy) == (x, y) { 1.0 - spread } else { weight(x - qx, y - qy) };
+                        sum += k * img[(qy * w as i64 + qx) as usize];
+                    }
+                }
+                let got = out[(y * w as i64 + x) as usize];
+                assert!((got - sum).abs().max_element() < FFT_ROUNDING, "({x}, {y}): {got} vs {sum}");
+            }
+        }
     }
 
     #[test]

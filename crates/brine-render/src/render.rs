@@ -281,8 +281,9 @@ fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, cx: &mut Counters) ->
     let faded;
     let (t, p, n, variance) = match hit {
         Some(hit) => {
-            faded = field.faded_variance(world, d, hit.t);
-            (hit.t, hit.point, field.normal(hit.point, d, hit.t, world), &faded)
+            let (n, v) = field.hit_geometry(hit.point, d, hit.t, world);
+            faded = v;
+            (hit.t, hit.point, n, &faded)
         }
         // Beyond the trace distance: the mean plane, with every wave's slopes in the BRDF.
         None if d.y < 0.0 && world.camera.position.y / -d.y < horizon_distance(world.camera.position.y) => {
@@ -676,6 +677,18 @@ impl<'a> SeaField<'a> {
         DVec3::new(-g.x, 1.0, -g.y).normalize()
     }
 
+    /// The normal ([`Self::normal`]) and the BRDF slope variances ([`Self::faded_variance`]) at a
+    /// primary hit `t` along `d`, in one pass over the waves where the surface allows it.
+    fn hit_geometry(&self, p: DVec3, d: DVec3, t: f64, world: &World) -> (DVec3, SlopeVariance) {
+        match self {
+            SeaField::Traced(s) => {
+                let (g, c) = s.faded_gradient_and_covariance(p.x, p.z, d, world.camera.pixel_angle(), t);
+                (DVec3::new(-g.x, 1.0, -g.y).normalize(), Self::variance_with(world, c))
+            }
+            _ => (self.normal(p, d, t, world), self.faded_variance(world, d, t)),
+        }
+    }
+
     /// The BRDF slope variances at a hit `t` along `d`: the unresolved waves' plus those the tracer
     /// faded (Bruneton et al. 2010's seamless transition), in the wind frame.
     fn faded_variance(&self, world: &World, d: DVec3, t: f64) -> SlopeVariance {
@@ -684,6 +697,12 @@ impl<'a> SeaField<'a> {
             SeaField::Fft(f) => f.faded_slope_covariance(d, world.camera.pixel_angle(), t),
             _ => return world.variance_unresolved,
         };
+        Self::variance_with(world, c)
+    }
+
+    /// The unresolved variances plus a faded world-axes covariance `c = (xx, xz, zz)`, in the wind
+    /// frame.
+    fn variance_with(world: &World, c: DVec3) -> SlopeVariance {
         if c == DVec3::ZERO {
             return world.variance_unresolved;
         }

@@ -37,6 +37,8 @@ struct Tier {
     curvature_factor: [f64; LANES],
     /// `Aᵢ·PROFILE_ERROR/(1 − Qᵢ)²` (derivative error per unit `|σᵢ|`).
     slope_error_factor: [f64; LANES],
+    /// Slope covariance `⟨sᵢ²⟩ (k̂x², k̂x k̂z, k̂z²)` per lane (0 for padding lanes).
+    slope_covariance: [[f64; 3]; LANES],
     mode: ProfileMode,
     /// Series polynomial coefficients per lane, `[row][lane]` (series mode; empty otherwise).
     series: Vec<[f32; LANES]>,
@@ -100,6 +102,7 @@ impl TracedTrochoids {
                 slope_factor: [0.0; LANES],
                 curvature_factor: [0.0; LANES],
                 slope_error_factor: [0.0; LANES],
+                slope_covariance: [[0.0; 3]; LANES],
                 mode: ProfileMode::for_steepness(0.0),
                 series: Vec::new(),
                 count: chunk.len() as u32,
@@ -120,6 +123,8 @@ impl TracedTrochoids {
                 t.slope_factor[l] = a / (1.0 - q * q).sqrt();
                 t.curvature_factor[l] = a / ((1.0 - q) * (1.0 - q));
                 t.slope_error_factor[l] = a * PROFILE_ERROR * (1.0 + 1.0 / ((1.0 - q) * (1.0 - q)));
+                let mss = w.mean_square_slope();
+                t.slope_covariance[l] = [mss * d.x * d.x, mss * d.x * d.y, mss * d.y * d.y];
                 t.amplitude_sum += a;
                 // f32 amplitude rounding (6×10⁻⁸ relative) and the 8-lane f32 sum are inside the
                 // factor 2 of PROFILE_ERROR's margin; the bound adds them explicitly anyway.
@@ -213,8 +218,32 @@ impl TracedTrochoids {
     /// # Returns
     /// The gradient (dimensionless); the upward normal is `(−gx, 1, −gz)/‖·‖`.
     pub fn faded_gradient(&self, x: f64, z: f64, direction: DVec3, footprint_angle: f64, t: f64) -> DVec2 {
+        self.faded_gradient_and_covariance(x, z, direction, footprint_angle, t).0
+    }
+
+    /// [`Self::faded_gradient`] and [`Self::faded_slope_covariance`] in one pass over the waves
+    /// (each wave's fade weight computed once): what a renderer needs at a hit.
+    ///
+    /// # Arguments
+    /// As [`Self::faded_gradient`].
+    ///
+    /// # Returns
+    /// `(gradient, covariance)`: the gradient (dimensionless) of the drawn surface and the slope
+    /// covariance `(xx, xz, zz)` (dimensionless) of the waves faded at `t`.
+    ///
+    /// # References
+    /// Equation sheet §1 (trochoid slope) and §11 (`σ²_BRDF = σ²_total − σ²_resolved`).
+    pub fn faded_gradient_and_covariance(
+        &self,
+        x: f64,
+        z: f64,
+        direction: DVec3,
+        footprint_angle: f64,
+        t: f64,
+    ) -> (DVec2, DVec3) {
         let inv_dy2 = 1.0 / (direction.y * direction.y).max(1e-300);
         let (mut gx, mut gz) = (0.0, 0.0);
+        let mut lost = [0.0f64; 3];
         for tier in &self.tiers {
             let mut s = [0.0; LANES];
             let (mut weight, mut kx, mut kz) = ([1.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
@@ -225,7 +254,14 @@ impl TracedTrochoids {
                 if footprint_angle > 0.0 && l < tier.count as usize {
                     let sigma = tier.kx[l] * direction.x + tier.kz[l] * direction.z;
                     let k2 = tier.wavenumber[l] * tier.wavenumber[l] + sigma * sigma * inv_dy2;
-                    weight[l] = footprint_weight(TAU / (footprint_angle * k2.sqrt()), t) as f32;
+                    let w = footprint_weight(TAU / (footprint_angle * k2.sqrt()), t);
+                    weight[l] = w as f32;
+                    if w < 1.0 {
+                        let c = &tier.slope_covariance[l];
+                        for (o, v) in lost.iter_mut().zip(c) {
+                            *o += (1.0 - w) * v;
+                        }
+                    }
                 }
             }
             let (_, g) = profile8(reduce_phases(&s), f32x8::new(tier.steepness), &tier.series, tier.mode);
@@ -233,7 +269,7 @@ impl TracedTrochoids {
             gx += f64::from((dh * f32x8::new(kx)).reduce_add());
             gz += f64::from((dh * f32x8::new(kz)).reduce_add());
         }
-        DVec2::new(gx, gz)
+        (DVec2::new(gx, gz), DVec3::from_array(lost))
     }
 
     /// The slope covariance `(⟨ζx²⟩, ⟨ζx ζz⟩, ⟨ζz²⟩)` of the waves the tracer faded at `t`:
@@ -715,6 +751,28 @@ mod tests {
         assert!(near.x.abs() < 1e-12 && far.x > 0.0 && far.z > 0.0);
         let total: f64 = set.waves().iter().map(Trochoid::mean_square_slope).sum();
         assert!(((far.x + far.z) - total).abs() < 1e-9 * total, "all waves faded at 1000 km");
+    }
+
+    /// The one-pass covariance equals the wave-by-wave one of `faded_slope_covariance` (set
+    /// order, weights from `fade_weight`) at distances where the waves fade one after the other;
+    /// the gradient of the one pass is tested against the f64 surface above.
+    #[test]
+    fn fused_covariance_equals_the_wave_by_wave_one() {
+        // The same terms summed in another order: rounding of a sum of ≤ 80 positive terms.
+        const ORDER_ROUNDING: f64 = 1e-13;
+        let set = set(80, 0.6, 9);
+        let sea = TracedTrochoids::new(&set, 0.7);
+        let d = DVec3::new(0.6, -0.08, -0.8).normalize();
+        let mut faded_some = 0;
+        for (i, t) in [0.5, 3.0, 20.0, 150.0, 900.0, 5e3].into_iter().enumerate() {
+            let (x, z) = (i as f64 * 13.1 - 7.0, 2.0 - i as f64 * 5.3);
+            let (_, c) = sea.faded_gradient_and_covariance(x, z, d, 0.0015, t);
+            let reference = sea.faded_slope_covariance(d, 0.0015, t);
+            let scale = reference.abs().max_element();
+            assert!((c - reference).abs().max_element() <= ORDER_ROUNDING * scale, "t = {t}: {c} vs {reference}");
+            faded_some += usize::from(scale > 0.0);
+        }
+        assert!(faded_some >= 3, "the distances must fade some waves");
     }
 
     #[test]
