@@ -588,6 +588,39 @@ impl Scene {
             (10.0..=1e6).contains(&s.trace_distance_m),
             "[10, 10⁶] m",
         )?;
+        if let Some(f) = s.fetch_km {
+            range("sea", "fetch_km", f, (0.1..=1e5).contains(&f), "[0.1, 10⁵] km")?;
+        }
+        if let Some(g) = s.gamma {
+            range("sea", "gamma", g, (1.0..=10.0).contains(&g), "[1, 10]")?;
+        }
+        if let Some(d) = s.depth_m {
+            range("sea", "depth_m", d, (0.5..=1e4).contains(&d), "[0.5, 10⁴] m")?;
+        }
+        if s.spectrum == SpectrumKind::Tma && s.depth_m.is_none() {
+            return Err(("sea", "spectrum", "sea.spectrum = \"tma\" needs sea.depth_m (the water depth, m)".into()));
+        }
+        if let Some(w) = &s.swell {
+            let h = w.significant_height_m;
+            range("sea.swell", "significant_height_m", h, h > 0.0 && h <= 20.0, "(0, 20] m")?;
+            let t = w.peak_period_s;
+            range("sea.swell", "peak_period_s", t, (4.0..=30.0).contains(&t), "[4, 30] s")?;
+            range("sea.swell", "direction_deg", w.direction_deg, true, "a finite angle in degrees")?;
+            range("sea.swell", "waves", f64::from(w.waves), (1..=1000).contains(&w.waves), "[1, 1000]")?;
+            let sp = w.spreading_s;
+            range("sea.swell", "spreading_s", sp, (1.0..=200.0).contains(&sp), "[1, 200]")?;
+            range("sea.swell", "gamma", w.gamma, (1.0..=10.0).contains(&w.gamma), "[1, 10]")?;
+            // A deep-water swell steeper than H_s/L = 1/7 (Michell's limit of a single wave, with
+            // L = g T²/2π) cannot exist.
+            let limit = brine_waves::G * t * t / std::f64::consts::TAU / 7.0;
+            range(
+                "sea.swell",
+                "significant_height_m",
+                h,
+                h <= limit,
+                &format!("at most {limit:.2} m for a {t} s swell (H/L ≤ 1/7)"),
+            )?;
+        }
         let f = &s.fft;
         range(
             "sea.fft",
@@ -667,6 +700,17 @@ impl Scene {
         if let Some(t) = w.air_temperature_c {
             range("water", "air_temperature_c", t, (-40.0..=50.0).contains(&t), "[-40, 50] °C")?;
         }
+        if let (Some(tw), Some(ta)) = (w.temperature_c, w.air_temperature_c) {
+            // Monahan & Ó Muircheartaigh 1986's stability fit covers ΔT = T_w − T_a in [−30, 30] °C.
+            let dt = tw - ta;
+            range(
+                "water",
+                "air_temperature_c",
+                ta,
+                (-30.0..=30.0).contains(&dt),
+                &format!("a water–air difference within ±30 °C (Monahan 1986's fit), got {dt} °C"),
+            )?;
+        }
         if let Some(a) = self.phenomena.whitecap_alpha {
             range("phenomena", "whitecap_alpha", a, (-2.0..=2.0).contains(&a), "[-2, 2]")?;
         }
@@ -697,7 +741,14 @@ impl Scene {
         }
         let a = &self.animation;
         range("animation", "fps", a.fps, a.fps > 0.0 && a.fps <= 1000.0, "(0, 1000] frames per second")?;
-        crate::output::OutputFormat::from_path(&o.path).map_err(|m| ("output", "path", m))?;
+        let format = crate::output::OutputFormat::from_path(&o.path).map_err(|m| ("output", "path", m))?;
+        if o.aovs && format != crate::output::OutputFormat::Exr {
+            return Err((
+                "output",
+                "aovs",
+                "output.aovs = true needs an .exr output (PNG has no extra channels)".into(),
+            ));
+        }
         Ok(())
     }
 }

@@ -60,6 +60,23 @@ fn out_of_range_values() {
         ("[camera]\nheight = 0\n", "camera.height = 0 is out of range", 2),
         ("[sea]\nsurface = \"fft\"\n\n[sea.fft]\nresolution = 100\n", "sea.fft.resolution = 100 is out of range", 5),
         ("[sea.fft]\ncascades = 9\n", "sea.fft.cascades = 9 is out of range", 2),
+        // The mission's bad winds and wave counts.
+        ("[sea]\nwind_speed_m_s = 80.0\n", "sea.wind_speed_m_s = 80 is out of range: expected [0, 60] m/s", 2),
+        ("[sea]\nwaves = 10001\n", "sea.waves = 10001 is out of range", 2),
+        ("[sea]\nspectrum = \"tma\"\n", "sea.spectrum = \"tma\" needs sea.depth_m", 2),
+        ("[sea]\nfetch_km = 0.01\n", "sea.fetch_km = 0.01 is out of range", 2),
+        ("[sea]\n[sea.swell]\nwaves = 5000\n", "sea.swell.waves = 5000 is out of range", 3),
+        (
+            "[sea.swell]\npeak_period_s = 5.0\nsignificant_height_m = 9.0\n",
+            "sea.swell.significant_height_m = 9 is out of range",
+            3,
+        ),
+        (
+            "[water]\ntemperature_c = 30.0\nair_temperature_c = -20.0\n",
+            "water.air_temperature_c = -20 is out of range",
+            3,
+        ),
+        ("[output]\naovs = true\n", "output.aovs = true needs an .exr output", 2),
     ] {
         let (dir, code, err) = render_scene(scene);
         assert_eq!(code, Some(2), "{scene}");

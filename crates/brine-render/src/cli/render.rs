@@ -109,7 +109,14 @@ pub fn scene_of(args: &RenderArgs) -> Result<Scene, CliError> {
         None => Scene::default_scene(),
     };
     if let Some(o) = &args.output {
-        OutputFormat::from_path(o).map_err(|m| CliError::Input(m.replacen("output.path", "--output", 1)))?;
+        let format =
+            OutputFormat::from_path(o).map_err(|m| CliError::Input(m.replacen("output.path", "--output", 1)))?;
+        if scene.output.aovs && format != OutputFormat::Exr {
+            return Err(CliError::Input(format!(
+                "--output {}: the scene asks for output.aovs, which needs an .exr output",
+                o.display()
+            )));
+        }
         scene.output.path = o.clone();
     }
     if let Some(w) = args.width {
@@ -122,6 +129,35 @@ pub fn scene_of(args: &RenderArgs) -> Result<Scene, CliError> {
         scene.camera.spp = s;
     }
     Ok(scene)
+}
+
+/// The scene of animation frame `frame` of the run `first..last`: the waves at
+/// `sea.time_s + frame/fps`; the sun and moon at `place.time_utc + frame/fps`, or, in a time-lapse
+/// `START..END`, at START for frame `first` and END for frame `last − 1`, linearly between.
+///
+/// # Errors
+/// [`CliError::Input`] if the time-lapse instant cannot be represented.
+pub fn scene_at_frame(
+    scene: &Scene,
+    frame: u32,
+    (first, last): (u32, u32),
+    time_lapse: Option<(brine_ephem::Timestamp, brine_ephem::Timestamp)>,
+) -> Result<Scene, CliError> {
+    let mut s = scene.clone();
+    let elapsed = f64::from(frame) / scene.animation.fps;
+    s.sea.time_s += elapsed;
+    match (time_lapse, s.place.as_mut()) {
+        (Some((start, end)), Some(place)) => {
+            let span = (end.as_nanosecond() - start.as_nanosecond()) as f64 * 1e-9;
+            let share = if last - first > 1 { f64::from(frame - first) / f64::from(last - first - 1) } else { 0.0 };
+            let at = start
+                .checked_add(jiff::SignedDuration::from_secs_f64(span * share))
+                .map_err(|e| CliError::Input(format!("--time-lapse: {e}")))?;
+            place.time_utc = at.to_string();
+        }
+        _ => s.elapsed_s = scene.elapsed_s + elapsed,
+    }
+    Ok(s)
 }
 
 /// Runs `brine render`.
@@ -180,17 +216,7 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     let (first, last) = args.frames.unwrap_or((0, 1));
     let mut evaluations = 0.0;
     for (frame, path) in &todo {
-        let mut s = scene.clone();
-        s.sea.time_s += f64::from(*frame) / scene.animation.fps;
-        if let (Some((start, end)), Some(place)) = (args.time_lapse, s.place.as_mut()) {
-            // Frame `first` at START, frame `last − 1` at END, linearly between.
-            let span = (end.as_nanosecond() - start.as_nanosecond()) as f64 * 1e-9;
-            let share = if last - first > 1 { f64::from(*frame - first) / f64::from(last - first - 1) } else { 0.0 };
-            let at = start
-                .checked_add(jiff::SignedDuration::from_secs_f64(span * share))
-                .map_err(|e| CliError::Input(format!("--time-lapse: {e}")))?;
-            place.time_utc = at.to_string();
-        }
+        let s = scene_at_frame(&scene, *frame, (first, last), args.time_lapse)?;
         let frame = render(&s, &options, &on_row).map_err(|e| match e {
             RenderError::World(w) => CliError::Input(w.to_string()),
             other => CliError::Failure(other.to_string()),
@@ -231,6 +257,22 @@ mod tests {
         let p = frame_path(std::path::Path::new("a#b_##.exr"), 7).unwrap();
         assert_eq!(p, PathBuf::from("a#b_07.exr"));
         assert!(frame_path(std::path::Path::new("x.png"), 1).is_err());
+    }
+
+    #[test]
+    fn each_frame_moves_the_waves_and_the_sun_by_frame_over_fps() {
+        let mut scene = Scene::default_scene();
+        scene.animation.fps = 25.0;
+        scene.sea.time_s = 2.0;
+        let s = scene_at_frame(&scene, 50, (0, 100), None).unwrap();
+        // 50 frames at 25 fps: 2 s later for the waves and for the sky's clock.
+        assert_eq!((s.sea.time_s, s.elapsed_s), (4.0, 2.0));
+        assert_eq!(s.place, scene.place);
+        let lapse = parse_time_lapse("2024-06-21T04:00Z..2024-06-21T22:00Z").unwrap();
+        let s = scene_at_frame(&scene, 10, (10, 19), Some(lapse)).unwrap();
+        assert_eq!((s.place.as_ref().unwrap().time_utc.as_str(), s.elapsed_s), ("2024-06-21T04:00:00Z", 0.0));
+        let s = scene_at_frame(&scene, 18, (10, 19), Some(lapse)).unwrap();
+        assert_eq!(s.place.unwrap().time_utc, "2024-06-21T22:00:00Z");
     }
 
     #[test]
