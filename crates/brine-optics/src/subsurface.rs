@@ -188,7 +188,7 @@ mod tests {
     fn the_sum_converges_to_the_closed_form() {
         let exact = refracted_ray_radiance(0.7, 0.3, 0.12, 0.6, 8.0, 0.2);
         let sum = refracted_ray_radiance_sum(0.7, 0.3, 0.12, 0.6, 8.0, 0.2, 4000);
-        /// Midpoint rule: relative error ≈ ((c + K_d μ) Δs)²/24 ≈ 10⁻⁸ here (Δs = 2 mm); ×10.
+        /// Midpoint rule: relative error ≈ `((c + K_d μ) Δs)²/24` ≈ 10⁻⁸ here (Δs = 2 mm); ×10.
         const MIDPOINT: f64 = 1e-7;
         assert_relative_eq!(sum, exact, max_relative = MIDPOINT);
     }

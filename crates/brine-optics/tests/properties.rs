@@ -146,6 +146,7 @@ proptest! {
     }
 
     #[test]
+    #[expect(clippy::float_cmp, reason = "grazing incidence returns exactly 1")]
     fn reflectance_tends_to_one_at_grazing_both_ways(c in 1e-9f64..1e-5, n in 1.1f64..2.5, gt in 1e-5f64..1e-3) {
         // Air → n at grazing incidence, c = cos θ_i → 0, g₀ = √(n² − 1): from
         // R_s = ((c − g)/(c + g))² = 1 − 4c/g + 8c²/g² − …, R_p = ((n²c − g)/(n²c + g))² likewise
@@ -180,6 +181,7 @@ proptest! {
     }
 
     #[test]
+    #[expect(clippy::float_cmp, reason = "total internal reflection returns exactly 1 and 0")]
     fn water_to_air_is_a_fraction_below_and_total_beyond_the_critical_angle(
         u in 0.0f64..=1.0, n1 in 1.0001f64..2.5, ratio in 0.3f64..0.9999,
     ) {
@@ -276,7 +278,7 @@ proptest! {
     ) {
         // ∫₀^∞ R_d(r) 2πr dr by composite Gauss–Legendre on geometric panels, against Jensen's
         // closed form, for any phase-function asymmetry g (which enters through σ′_s = σ_s(1 − g)).
-        /// The criterion; the panels resolve R_d to about 10⁻¹⁰.
+        /// The criterion; the panels resolve `R_d` to about 10⁻¹⁰.
         const CLOSED_FORM: f64 = 1e-6;
         let m = DipoleMaterial::new(sigma_a, sigma_s, g, eta).unwrap();
         let end = 60.0 / m.sigma_tr() + 60.0 * m.z_v();

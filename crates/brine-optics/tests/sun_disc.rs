@@ -2,7 +2,7 @@
 //! point-source limit, its energy against the point form, and its mirror limit, each against an
 //! independent derivation. Every tolerance is a named constant with its reason.
 
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use approx::assert_relative_eq;
 use brine_optics::*;
@@ -98,6 +98,7 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(128))]
 
     #[test]
+    #[expect(clippy::float_cmp, reason = "a point disc returns the point form itself")]
     fn a_tiny_disc_is_the_point_sun(
         tv in 0.0f64..1.45, pv in 0.0f64..TAU, tl in 0.0f64..1.45, pl in 0.0f64..TAU,
         sx in 1e-4f64..0.2, sy in 1e-4f64..0.2,
@@ -121,7 +122,7 @@ proptest! {
 
     #[test]
     fn disc_glint_is_nonnegative_and_finite(
-        tv in 0.0f64..1.5707, pv in 0.0f64..TAU, tl in 0.0f64..1.5707, pl in 0.0f64..TAU,
+        tv in 0.0f64..FRAC_PI_2, pv in 0.0f64..TAU, tl in 0.0f64..FRAC_PI_2, pl in 0.0f64..TAU,
         sx in 0.0f64..0.5, sy in 0.0f64..0.5, r in 0.0f64..0.7,
     ) {
         let var = SlopeVariance::new(sx, sy).unwrap();
@@ -208,7 +209,7 @@ fn the_disc_reflects_the_energy_of_the_point_sun_on_a_rough_sea() {
     // centre value by the cap's second moment (r²/8) Δ(A l_z) = O(r²) (Laplacian on the sphere;
     // Δ l_z = −2 l_z). The same view quadrature is used for both, so its own error (≈ 10⁻⁶)
     // nearly cancels.
-    /// `r²` bounds `(r²/8)|Δ(A l_z)|/(A l_z)` for `|Δ(A l_z)|/(A l_z) ≤ 8` (l_z gives 2, the
+    /// `r²` bounds `(r²/8)|Δ(A l_z)|/(A l_z)` for `|Δ(A l_z)|/(A l_z) ≤ 8` (`l_z` gives 2, the
     /// albedo's curvature at these sun angles less than 6), plus the view quadrature's 10⁻⁶.
     fn tolerance(r: f64) -> f64 {
         r * r + 1e-6
