@@ -76,6 +76,9 @@ pub fn srgb_band_weights() -> [[f64; BAND_SAMPLES]; 3] {
 ///
 /// # Returns
 /// `[R, G, B]` averages, in the unit of `f`.
+///
+/// # References
+/// Trapezoid rule on the 5 nm grid (Abramowitz & Stegun 1964 §25.4.2).
 pub fn band_average(weights: &[[f64; BAND_SAMPLES]; 3], mut f: impl FnMut(f64) -> f64) -> [f64; 3] {
     let mut out = [0.0; 3];
     for i in 0..BAND_SAMPLES {
@@ -107,11 +110,15 @@ mod tests {
     fn weights_are_normalised_and_truncation_is_small() {
         let w = srgb_band_weights();
         let avg = band_average(&w, |_| 1.0);
+        /// The weights are normalised by the same trapezoid sum: rounding of 61 terms.
+        const ROUNDING: f64 = 1e-12;
         for v in avg {
-            assert_relative_eq!(v, 1.0, max_relative = 1e-12);
+            assert_relative_eq!(v, 1.0, max_relative = ROUNDING);
         }
         // Share of each clipped channel weight outside 400–700 nm (1 nm sums over 360–830 nm).
-        for (c, bound) in [(0, 0.02), (1, 0.005), (2, 0.035)] {
+        /// The truncation the model documentation states for R, G, B (docs/models/brine-optics.md).
+        const TRUNCATION: [f64; 3] = [0.02, 0.005, 0.035];
+        for (c, bound) in TRUNCATION.into_iter().enumerate() {
             let row = XYZ_TO_SRGB[c];
             let weight = |l: f64| {
                 let x = cie1931_xyz_bar(l);

@@ -17,7 +17,7 @@
 //!   `F_dr`, `A`, `z_r`, `z_v`, `σ_tr`, `α′`, the BSSRDF with Fresnel in and out, its total
 //!   diffuse reflectance, Li Ying's Table 3, and light through thin crests.
 //! - **Ocean BRDF** (Bruneton, Neyret & Holzschuch 2010) — Gaussian slopes with anisotropic
-//!   variances (Cox & Munk 1954), Smith shadowing, Fresnel at the half vector, the reflected sun,
+//!   variances (Cox & Munk 1954), Smith shadowing, Fresnel at the half vector, the reflected sun (a point or a disc of finite size),
 //!   the reflected sky from a filtered environment, and the slope variance of unresolved waves.
 //!
 //! ## Notation
@@ -92,7 +92,8 @@ pub use iop::{
 };
 pub use jerlov::{DarlesWater, JERLOV_LAMBDA_RANGE_NM, JerlovType};
 pub use ocean_brdf::{
-    MIN_SLOPE_VARIANCE, SlopeVariance, mean_fresnel, ocean_brdf, reflected_sun_radiance, slope_pdf, smith_lambda,
+    MIN_SLOPE_VARIANCE, SlopeVariance, SunDisc, mean_fresnel, ocean_brdf, reflected_disc_radiance,
+    reflected_sun_radiance, slope_pdf, smith_lambda,
 };
 pub use quadrature::{GaussHermite, MAX_HERMITE_ORDER, gauss_legendre};
 pub use refraction::{reflect, refract};

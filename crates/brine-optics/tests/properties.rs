@@ -43,18 +43,65 @@ fn slope_integral(v: DVec3, var: &SlopeVariance, mut g: impl FnMut(f64, f64, DVe
 /// `g′²`, with a factor-2 margin), divided by the 2 of the square root.
 const RECIPROCITY_ROUNDING: f64 = 2.0 * f64::EPSILON;
 
+/// Floor of a comparison between two evaluations of order-one quantities by different operation
+/// orders: a few thousand ulps, far below any modelling difference.
+const ROUNDING: f64 = 1e-12;
+
+/// Total internal reflection returns exactly 1; this allows for the last ulp of `1 − F` paths.
+const EXACT: f64 = 1e-15;
+
 fn dir(theta: f64, phi: f64) -> DVec3 {
     DVec3::new(theta.sin() * phi.cos(), theta.sin() * phi.sin(), theta.cos())
 }
 
+/// Transmitted fraction of the power from the Fresnel amplitude coefficients, computed here
+/// independently of the crate's `g` form:
+/// `t_s = 2n_i cos θ_i/(n_i cos θ_i + n_t cos θ_t)`, `t_p = 2n_i cos θ_i/(n_t cos θ_i + n_i cos θ_t)`,
+/// `T = (n_t cos θ_t)/(n_i cos θ_i) · ½(t_s² + t_p²)` (Born & Wolf 1999, *Principles of Optics*,
+/// 7th ed., §1.5.2 Eq. 20 and §1.5.3 Eq. 40–41; Hecht 2002, *Optics*, §4.6.2 Eq. 4.43, 4.44, 4.62).
+/// `cos θ_t = √(1 − (n_i/n_t)² sin²θ_i)` with `sin²θ_i = (1 − cos θ_i)(1 + cos θ_i)`; `None` beyond
+/// the critical angle.
+fn amplitude_transmittance(cos_i: f64, n_i: f64, n_t: f64) -> Option<f64> {
+    let sin2_t = (n_i / n_t).powi(2) * (1.0 - cos_i) * (1.0 + cos_i);
+    if sin2_t > 1.0 {
+        return None;
+    }
+    let cos_t = (1.0 - sin2_t).sqrt();
+    let t_s = 2.0 * n_i * cos_i / (n_i * cos_i + n_t * cos_t);
+    let t_p = 2.0 * n_i * cos_i / (n_t * cos_i + n_i * cos_t);
+    Some(n_t * cos_t / (n_i * cos_i) * 0.5 * (t_s * t_s + t_p * t_p))
+}
+
+/// Rounding of `R + T` with `R` from the `g` form and `T` from the amplitudes away from the
+/// critical and grazing angles: each is a handful of correctly rounded operations on terms of
+/// order one (`8ε` each, with margin).
+const FRESNEL_SUM_ROUNDING: f64 = 16.0 * f64::EPSILON;
+
+/// Tolerance of `R + T = 1` at `cos θ_i = c` for `m = n_i/n_t`, `n = 1/m`. Beyond
+/// [`FRESNEL_SUM_ROUNDING`], both forms take the square root of a quantity that vanishes at the
+/// critical angle (dense side) or at grazing incidence between nearly matched media:
+/// `g = √(n² + c² − 1) = n cos θ_t`. `g²` is rounded absolutely by `≈ 3ε max(n², 1)`, so
+/// `δg ≈ 3ε max(n², 1)/(2g)`; `cos²θ_t = 1 − m² sin²θ_i` by `≈ 4ε`, so `δ(n cos θ_t) ≈ 2ε n²/g`.
+/// `R` (and `T = 1 − R`) depends on `g` through `((c − g)/(c + g))²` and
+/// `((n²c − g)/(n²c + g))²`, whose `g`-derivatives are at most `4/(c + g)` and `4/(n²c + g)`:
+/// `|∂R/∂g| ≤ 4 max(1, m²)/(c + g)`. Hence
+/// `|R + T − 1| ≲ ε max(1, m²)(6 max(n², 1) + 8n²)/(g (c + g))`, doubled. (Over 2×10⁵ random
+/// cases the largest error is 0.15 of this tolerance.)
+fn fresnel_sum_tolerance(cos_i: f64, n_i: f64, n_t: f64) -> f64 {
+    let (m, n) = (n_i / n_t, n_t / n_i);
+    let cos_t = (1.0 - m * m * (1.0 - cos_i) * (1.0 + cos_i)).max(0.0).sqrt();
+    let g = n * cos_t;
+    FRESNEL_SUM_ROUNDING
+        + 2.0 * f64::EPSILON * m.max(1.0).powi(2) * (6.0 * (n * n).max(1.0) + 8.0 * n * n) / (g * (cos_i + g))
+}
+
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(256))]
+    #![proptest_config(ProptestConfig::with_cases(1024))]
 
     #[test]
     fn fresnel_is_a_fraction_and_t_is_reciprocal(cos_i in 0.0f64..=1.0, n in 1.0001f64..2.5) {
         let r = fresnel_dielectric(cos_i, 1.0, n);
         prop_assert!((0.0..=1.0).contains(&r));
-        prop_assert!((r + fresnel_transmittance(cos_i, 1.0, n) - 1.0).abs() < 1e-15);
         // Snell pair: sin θ_t = sin θ_i / n, so cos θ_t = √(n² − 1 + cos²θ_i)/n (the form without
         // the cancellation of 1 − sin²θ_t); the transmitted fraction is the same both ways.
         let cos_t = (n * n - 1.0 + cos_i * cos_i).sqrt() / n;
@@ -62,20 +109,103 @@ proptest! {
         // The reverse evaluation forms g′² = 1/n² + cos²θ_t − 1 = cos²θ_i/n² from terms of order
         // one, so g′ carries a relative error ≈ 2ε·n²/(2cos²θ_i) and T (of unit sensitivity to
         // ln g′) an absolute one of the same size: the tolerance grows as 1/cos²θ_i at grazing.
-        let tol = 1e-12 + RECIPROCITY_ROUNDING * n * n / (cos_i * cos_i);
+        let tol = ROUNDING + RECIPROCITY_ROUNDING * n * n / (cos_i * cos_i);
         prop_assert!((fresnel_transmittance(cos_i, 1.0, n) - back).abs() < tol);
         // Total internal reflection beyond the critical angle from the dense side.
         let theta_c = critical_angle(n, 1.0).unwrap();
         let beyond = (theta_c + (0.5 * PI - theta_c) * (1.0 - cos_i).max(1e-9)).cos();
-        prop_assert!((fresnel_dielectric(beyond, n, 1.0) - 1.0).abs() < 1e-15);
+        prop_assert!((fresnel_dielectric(beyond, n, 1.0) - 1.0).abs() < EXACT);
+    }
+
+    #[test]
+    fn reflectance_plus_amplitude_transmittance_is_one_both_ways(
+        u in 1e-6f64..=1.0, n1 in 1.0f64..2.5, n2 in 1.0f64..2.5,
+    ) {
+        // Either direction: the denser side first or the rarer; below the critical angle.
+        let c_min = if n1 > n2 { (1.0 - (n2 / n1).powi(2)).sqrt() } else { 0.0 };
+        let cos_i = c_min + u * (1.0 - c_min);
+        let r = fresnel_dielectric(cos_i, n1, n2);
+        prop_assert!((0.0..=1.0).contains(&r));
+        let Some(t) = amplitude_transmittance(cos_i, n1, n2) else {
+            return Err(TestCaseError::fail("below the critical angle by construction"));
+        };
+        let tol = fresnel_sum_tolerance(cos_i, n1, n2);
+        prop_assert!((r + t - 1.0).abs() <= tol, "R = {r}, T = {t}, R + T − 1 = {:e} > {tol:e}", r + t - 1.0);
+    }
+
+    #[test]
+    fn normal_incidence_is_the_closed_form(n1 in 0.5f64..3.0, n2 in 0.5f64..3.0) {
+        // R(θ = 0) = ((n₁ − n₂)/(n₁ + n₂))² for any pair, either way.
+        /// `a = (n − 1)/(n + 1)` with `n = n₂/n₁` once rounded: `|δa| ≤ 4ε`, so `|δ(a²)| ≤
+        /// 8ε|a|`, against the closed form's own `2ε|a|`; doubled.
+        const NORMAL_ROUNDING: f64 = 20.0 * f64::EPSILON;
+        let closed = ((n1 - n2) / (n1 + n2)).powi(2);
+        let r = fresnel_dielectric(1.0, n1, n2);
+        prop_assert!((r - closed).abs() <= NORMAL_ROUNDING * (closed.sqrt() + f64::EPSILON), "{r} vs {closed}");
+        prop_assert!((fresnel_normal(n1, n2) - closed).abs() <= NORMAL_ROUNDING * closed);
+    }
+
+    #[test]
+    #[expect(clippy::float_cmp, reason = "grazing incidence returns exactly 1")]
+    fn reflectance_tends_to_one_at_grazing_both_ways(c in 1e-9f64..1e-5, n in 1.1f64..2.5, gt in 1e-5f64..1e-3) {
+        // Air → n at grazing incidence, c = cos θ_i → 0, g₀ = √(n² − 1): from
+        // R_s = ((c − g)/(c + g))² = 1 − 4c/g + 8c²/g² − …, R_p = ((n²c − g)/(n²c + g))² likewise
+        // with c → n²c (independent expansion),
+        //   1 − R = 2c(1 + n²)/g − 4c²(1 + n⁴)/g² + O(c³),   g = √(n² − 1 + c²).
+        /// `1 − R` rounded absolutely at `≈ 8ε` (two roundings of `R ≈ 1`, margin 2) …
+        const ONE_MINUS_ROUNDING: f64 = 8.0 * f64::EPSILON;
+        let g = (n * n - 1.0 + c * c).sqrt();
+        let first = 2.0 * c * (1.0 + n * n) / g;
+        let second = 4.0 * c * c * (1.0 + n.powi(4)) / (g * g);
+        let deficit = 1.0 - fresnel_dielectric(c, 1.0, n);
+        // … and the third-order term, bounded by the second times 2c(1 + n⁴)/g (ratio of
+        // successive terms of the geometric-like series), doubled.
+        let tol = ONE_MINUS_ROUNDING + 2.0 * second * (2.0 * c * (1.0 + n.powi(4)) / g);
+        prop_assert!((deficit - (first - second)).abs() <= tol, "{deficit} vs {}", first - second);
+
+        // n → air just below the critical angle, g = n′ cos θ_t → 0 with n′ = 1/n and the
+        // incidence cosine c = √(1 − n′² + g²): the same expansions with c and g exchanged,
+        //   1 − R = 2g(1 + 1/n′²)/c − 4g²(1 + 1/n′⁴)/c² + O(g³).
+        // Here the function recomputes g² = n′² + c² − 1 from c: absolute rounding ≈ 4ε, i.e.
+        // δg ≈ 2ε/g, moving 1 − R by 2(1 + 1/n′²)/c per unit of g.
+        let np = 1.0 / n;
+        let c = (1.0 - np * np + gt * gt).sqrt();
+        let deficit = 1.0 - fresnel_dielectric(c, n, 1.0);
+        let first = 2.0 * gt * (1.0 + 1.0 / (np * np)) / c;
+        let second = 4.0 * gt * gt * (1.0 + 1.0 / np.powi(4)) / (c * c);
+        let recompute = 2.0 * (1.0 + 1.0 / (np * np)) / c * (8.0 * f64::EPSILON / gt);
+        let tol = ONE_MINUS_ROUNDING + recompute + 2.0 * second * (2.0 * gt * (1.0 + 1.0 / np.powi(4)) / c);
+        prop_assert!((deficit - (first - second)).abs() <= tol, "{deficit} vs {}", first - second);
+        // Exactly at grazing from either side the interface reflects everything.
+        prop_assert!(fresnel_dielectric(0.0, 1.0, n) == 1.0 && fresnel_dielectric(0.0, n, 1.0) == 1.0);
+    }
+
+    #[test]
+    #[expect(clippy::float_cmp, reason = "total internal reflection returns exactly 1 and 0")]
+    fn water_to_air_is_a_fraction_below_and_total_beyond_the_critical_angle(
+        u in 0.0f64..=1.0, n1 in 1.0001f64..2.5, ratio in 0.3f64..0.9999,
+    ) {
+        // From the dense side (n₂ = ratio · n₁ < n₁): R ∈ [0, 1) strictly below θ_c, R = 1 at
+        // and beyond it (sin θ_t = (n₁/n₂) sin θ_i ≥ 1).
+        let n2 = ratio * n1;
+        let theta_c = critical_angle(n1, n2).unwrap();
+        prop_assert!((theta_c.sin() - ratio).abs() <= 4.0 * f64::EPSILON);
+        let below = (u * theta_c * (1.0 - 1e-9)).cos();
+        let r = fresnel_dielectric(below, n1, n2);
+        prop_assert!((0.0..1.0).contains(&r), "{r}");
+        let beyond = (theta_c + u * (0.5 * PI - theta_c) + 1e-9).min(0.5 * PI).cos();
+        prop_assert!(fresnel_dielectric(beyond, n1, n2) == 1.0);
+        prop_assert!(fresnel_transmittance(beyond, n1, n2) == 0.0);
     }
 
     #[test]
     fn schlick_error_is_bounded(cos_i in 0.0f64..=1.0) {
         // Schlick's largest error against the exact form for air → water is 0.0592 at 83.8°
-        // (dense scan, see the Fresnel plot); bound with 1 % margin.
+        // (dense scan, see the Fresnel plot).
+        /// The scanned maximum with 1 % margin.
+        const SCHLICK_MAX_ERROR: f64 = 0.0598;
         let err = (fresnel_schlick(cos_i, 1.0, 1.333) - fresnel_dielectric(cos_i, 1.0, 1.333)).abs();
-        prop_assert!(err < 0.0598, "{err}");
+        prop_assert!(err < SCHLICK_MAX_ERROR, "{err}");
     }
 
     #[test]
@@ -84,7 +214,7 @@ proptest! {
         for v in [i.a, i.b, i.b_b, i.c, i.k_d] {
             prop_assert!(v.is_finite() && v > 0.0);
         }
-        prop_assert!(i.b_b <= i.b && (i.c - i.a - i.b).abs() < 1e-15);
+        prop_assert!(i.b_b <= i.b && (i.c - i.a - i.b).abs() < EXACT);
         prop_assert!(irradiance_reflectance(i.b_b, i.a).is_finite());
     }
 
@@ -104,10 +234,10 @@ proptest! {
     ) {
         let l = refracted_ray_radiance(l_df, c, k, mu, path, l_b);
         prop_assert!(l.is_finite() && l >= 0.0);
-        prop_assert!(l <= l_df + l_b + 1e-12);
-        prop_assert!(l >= l_df.min(l_b) * (1.0 - 1e-12));
+        prop_assert!(l <= l_df + l_b + ROUNDING);
+        prop_assert!(l >= l_df.min(l_b) * (1.0 - ROUNDING));
         let deeper = refracted_ray_radiance(l_df, c, k, mu, path + 50.0 / c, l_b);
-        prop_assert!((deeper - l_df).abs() <= (l - l_df).abs() + 1e-12);
+        prop_assert!((deeper - l_df).abs() <= (l - l_df).abs() + ROUNDING);
     }
 
     #[test]
@@ -120,7 +250,7 @@ proptest! {
         prop_assert!(m.diffuse_reflectance(r + 0.1) <= rd);
         let total = m.total_diffuse_reflectance();
         prop_assert!((0.0..=1.0).contains(&total));
-        prop_assert!(m.diffuse_reflectance_beyond(r) <= total * (1.0 + 1e-12));
+        prop_assert!(m.diffuse_reflectance_beyond(r) <= total * (1.0 + ROUNDING));
         let s = m.bssrdf(r, 0.7, 0.4);
         prop_assert!(s.is_finite() && s >= 0.0);
     }
@@ -135,18 +265,22 @@ proptest! {
         let a = ocean_brdf(v, l, &var, WATER_IOR);
         let b = ocean_brdf(l, v, &var, WATER_IOR);
         prop_assert!(a.is_finite() && a >= 0.0);
-        prop_assert!((a - b).abs() <= 1e-12 * a.max(1e-300));
+        prop_assert!((a - b).abs() <= ROUNDING * a.max(f64::MIN_POSITIVE));
     }
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(6))]
+    #![proptest_config(ProptestConfig::with_cases(12))]
 
     #[test]
-    fn dipole_integral_equals_the_closed_form(sigma_a in 0.001f64..2.0, sigma_s in 0.1f64..10.0, eta in 1.0f64..1.6) {
+    fn dipole_integral_equals_the_closed_form(
+        sigma_a in 0.001f64..2.0, sigma_s in 0.1f64..10.0, g in -0.9f64..=0.9, eta in 1.0f64..1.6,
+    ) {
         // ∫₀^∞ R_d(r) 2πr dr by composite Gauss–Legendre on geometric panels, against Jensen's
-        // closed form, to 10⁻⁶ relative (the criterion).
-        let m = DipoleMaterial::new(sigma_a, sigma_s, 0.0, eta).unwrap();
+        // closed form, for any phase-function asymmetry g (which enters through σ′_s = σ_s(1 − g)).
+        /// The criterion; the panels resolve `R_d` to about 10⁻¹⁰.
+        const CLOSED_FORM: f64 = 1e-6;
+        let m = DipoleMaterial::new(sigma_a, sigma_s, g, eta).unwrap();
         let end = 60.0 / m.sigma_tr() + 60.0 * m.z_v();
         let mut edges = vec![0.0];
         let mut x = 1e-4 * m.z_r();
@@ -159,17 +293,20 @@ proptest! {
             .windows(2)
             .map(|e| integrate(e[0], e[1], 1, &mut |r| m.diffuse_reflectance(r) * 2.0 * PI * r))
             .sum();
-        prop_assert!((numeric / m.total_diffuse_reflectance() - 1.0).abs() < 1e-6, "{numeric}");
+        prop_assert!((numeric / m.total_diffuse_reflectance() - 1.0).abs() < CLOSED_FORM, "{numeric}");
     }
 }
 
 #[test]
 fn slope_pdf_integrates_to_one() {
+    /// 24 × 24 panels of 16 Gauss points over ±10σ: the quadrature error of a Gaussian is
+    /// below 10⁻¹², the truncated tails e^{−50}; the tolerance leaves room for rounding.
+    const QUADRATURE: f64 = 1e-9;
     for (sx, sy) in [(0.01, 0.02), (0.05, 0.005), (2e-5, 0.1)] {
         let var = SlopeVariance::new(sx, sy).unwrap();
         let (lx, ly) = (10.0 * sx.sqrt(), 10.0 * sy.sqrt());
         let total = integrate(-lx, lx, 24, &mut |x| integrate(-ly, ly, 24, &mut |y| slope_pdf(x, y, &var)));
-        assert_relative_eq!(total, 1.0, max_relative = 1e-9);
+        assert_relative_eq!(total, 1.0, max_relative = QUADRATURE);
     }
 }
 
@@ -181,13 +318,16 @@ fn smith_normalisation_and_white_furnace() {
     /// The reference quadrature resolves the smooth parts to ~10⁻⁸; the cut `l_z = 0` inside the
     /// domain is not a panel edge, which costs up to ~10⁻⁴.
     const CUT: f64 = 2e-4;
+    /// Smith's identity: the cut `v·n = 0` is a panel edge, so the reference quadrature is
+    /// resolved to ~10⁻⁸.
+    const SMITH: f64 = 1e-6;
     for (sx, sy) in [(0.01, 0.006), (0.04, 0.03), (0.1, 0.02)] {
         let var = SlopeVariance::new(sx, sy).unwrap();
         for (theta_deg, phi) in [(0.0f64, 0.0), (30.0, 0.4), (60.0, 2.0), (80.0, 1.0), (87.0, 4.0)] {
             let v = dir(theta_deg.to_radians(), phi);
             let lambda_v = smith_lambda(v.z, var.along(v));
             let smith = slope_integral(v, &var, |zx, zy, n| slope_pdf(zx, zy, &var) * v.dot(n) / (n.z * v.z));
-            assert_relative_eq!(smith, 1.0 + lambda_v, max_relative = 1e-6);
+            assert_relative_eq!(smith, 1.0 + lambda_v, max_relative = SMITH);
             let furnace = slope_integral(v, &var, |_, _, n| {
                 let l = reflect(-v, n);
                 if l.z <= 0.0 {
@@ -201,7 +341,7 @@ fn smith_normalisation_and_white_furnace() {
             assert!(furnace > 0.5, "σ² = ({sx}, {sy}), θ = {theta_deg}: {furnace}");
             // The renderer's quadrature against the reference.
             let quick = SkyReflection::new(8, WATER_IOR).unwrap().directional_reflectance(v, &var, true);
-            assert!(quick <= 1.0 + 1e-12);
+            assert!(quick <= 1.0 + ROUNDING);
             /// Self-normalised 8 × 8 Gauss–Hermite against the reference, up to 87°.
             const QUICK: f64 = 0.03;
             assert!((quick - furnace).abs() < QUICK, "θ = {theta_deg}: {quick} vs {furnace}");
@@ -216,10 +356,12 @@ fn sky_reflection_of_a_uniform_sky_is_the_rough_fresnel_albedo() {
     let var = SlopeVariance::cox_munk_clean(7.0).unwrap();
     let v = dir(1.0, 0.3);
     let rgb = s.reflected_radiance(v, &var, |_| DVec3::ONE);
-    assert_relative_eq!(rgb.x, s.directional_reflectance(v, &var, false), max_relative = 1e-12);
+    assert_relative_eq!(rgb.x, s.directional_reflectance(v, &var, false), max_relative = ROUNDING);
     let filtered = reflected_sky_radiance_filtered(v, &var, |_, _| DVec3::ONE);
-    // Bruneton's mean-Fresnel fit against the quadrature: within 0.01 absolute at 57°.
-    assert!((filtered.x - rgb.x).abs() < 0.01, "{} vs {}", filtered.x, rgb.x);
+    /// Bruneton's mean-Fresnel fit against the quadrature at 57°: the fit's own accuracy
+    /// (their §5.2 quotes a few per cent of F̄ ≈ 0.1).
+    const MEAN_FRESNEL_FIT: f64 = 0.01;
+    assert!((filtered.x - rgb.x).abs() < MEAN_FRESNEL_FIT, "{} vs {}", filtered.x, rgb.x);
 }
 
 #[test]
@@ -233,7 +375,7 @@ fn water_rgb_is_blue_for_clear_water_and_physical() {
                 assert!(v.is_finite() && v.min_element() > 0.0);
             }
             let deep = w.refracted_ray_radiance(DVec3::splat(10.0), 0.8, f64::INFINITY, DVec3::ZERO);
-            assert!((deep - w.diffuse_upwelling_radiance(DVec3::splat(10.0))).length() < 1e-12);
+            assert!((deep - w.diffuse_upwelling_radiance(DVec3::splat(10.0))).length() < ROUNDING);
         }
     }
 }

@@ -97,6 +97,102 @@ fn jerlov_1976_table_is_returned_exactly() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "Jerlov's printed digits must be returned exactly")]
+fn jerlov_1976_against_an_independent_transcription() {
+    // Jerlov's Table XXVII as transcribed independently of this crate's CSV in the Dstl data set
+    // of Williamson C. A., Hollins R. C. 2022, "Measured IOPs of Jerlov water types", Applied
+    // Optics 61(33):9951–9960 (figshare 10.6084/m9.figshare.20290782, file ip_jerlov.csv, 1 nm
+    // steps, linearly interpolated between Jerlov's 25 nm columns and rounded to 4 decimals), as
+    // redistributed in the `jerlov` Python package (tishibashi-cpu/jerlov,
+    // jerlov/data/jerlov1976_kd.csv). It settles the one entry on which the CSV's two sources
+    // disagree: type I at 400 nm is 0.028 there too.
+    let columns: [(JerlovType, &[(f64, f64)]); 4] = [
+        (
+            JerlovType::I,
+            &[
+                (350.0, 0.062),
+                (375.0, 0.038),
+                (400.0, 0.028),
+                (450.0, 0.019),
+                (475.0, 0.018),
+                (500.0, 0.027),
+                (550.0, 0.063),
+                (600.0, 0.235),
+                (650.0, 0.36),
+                (675.0, 0.42),
+                (700.0, 0.56),
+            ],
+        ),
+        (
+            JerlovType::II,
+            &[
+                (450.0, 0.068),
+                (475.0, 0.062),
+                (500.0, 0.070),
+                (525.0, 0.076),
+                (550.0, 0.089),
+                (575.0, 0.115),
+                (600.0, 0.26),
+                (625.0, 0.335),
+                (650.0, 0.40),
+                (675.0, 0.465),
+                (700.0, 0.61),
+            ],
+        ),
+        (
+            JerlovType::III,
+            &[
+                (350.0, 0.32),
+                (375.0, 0.22),
+                (400.0, 0.185),
+                (425.0, 0.16),
+                (450.0, 0.135),
+                (475.0, 0.116),
+                (500.0, 0.115),
+            ],
+        ),
+        (
+            JerlovType::Coastal9,
+            &[
+                (375.0, 3.0),
+                (400.0, 2.4),
+                (425.0, 1.9),
+                (450.0, 1.6),
+                (475.0, 1.23),
+                (500.0, 0.99),
+                (525.0, 0.78),
+                (550.0, 0.63),
+                (575.0, 0.58),
+                (600.0, 0.60),
+                (625.0, 0.65),
+                (650.0, 0.76),
+                (675.0, 0.92),
+                (700.0, 1.1),
+            ],
+        ),
+    ];
+    for (t, values) in columns {
+        for &(l, k) in values {
+            assert_eq!(t.kd(l), k, "type {t}, λ = {l}");
+        }
+    }
+    // Its 1 nm values between the columns check the interpolation.
+    /// The data set rounds to 4 decimals: half a unit in the last place.
+    const FOUR_DECIMALS: f64 = 5e-5;
+    for (t, l, k) in [
+        (JerlovType::I, 510.0, 0.0334),
+        (JerlovType::I, 590.0, 0.1766),
+        (JerlovType::II, 480.0, 0.0636),
+        (JerlovType::II, 610.0, 0.29),
+        (JerlovType::III, 490.0, 0.1154),
+        (JerlovType::Coastal9, 451.0, 1.5852),
+        (JerlovType::Coastal9, 463.0, 1.4076),
+    ] {
+        assert!((t.kd(l) - k).abs() <= FOUR_DECIMALS, "type {t}, λ = {l}: {} vs {k}", t.kd(l));
+    }
+}
+
+#[test]
 fn jerlov_types_are_ordered_by_turbidity_in_the_blue() {
     // Jerlov's classification: K_d(λ ≤ 500 nm) increases from I to III and from coastal 1 to 9.
     for l in [400.0, 425.0, 450.0, 475.0] {
@@ -127,7 +223,9 @@ fn morel_1988_kd_and_backscattering_oracles() {
         assert_relative_eq!(morel_kd(l, c01), k01, max_relative = FOUR_DIGITS);
         assert_relative_eq!(morel_kd(l, c1), k1, max_relative = FOUR_DIGITS);
     }
-    assert_relative_eq!(case1_iops(450.0, c1).b_b, 0.00652, max_relative = 1e-3);
+    /// Three significant digits.
+    const THREE_DIGITS: f64 = 1e-3;
+    assert_relative_eq!(case1_iops(450.0, c1).b_b, 0.00652, max_relative = THREE_DIGITS);
 }
 
 #[test]
@@ -140,13 +238,19 @@ fn fresnel_oracles() {
     assert_relative_eq!(critical_angle(1.333, 1.0).unwrap().to_degrees(), 48.607, max_relative = SIX_DIGITS);
     // The hemispherical reflectance of a uniform sky on flat water, 0.066 (Mobley 1994, Light and
     // Water §4.3, for n = 1.34; 0.0664 at 1.333).
-    assert!((hemispherical_fresnel_reflectance(1.0, 1.333) - 0.066).abs() < 5e-4);
+    /// Mobley prints two significant digits (0.066): half a unit of the last.
+    const TWO_DIGITS: f64 = 5e-4;
+    assert!((hemispherical_fresnel_reflectance(1.0, 1.333) - 0.066).abs() < TWO_DIGITS);
     // Inside water: 0.474591 by an independent 2×10⁵-point midpoint sum; and the reciprocity
     // relation of diffuse transmittance, 1 − F_int = (1 − F_ext)/n².
-    assert!((hemispherical_fresnel_reflectance(1.333, 1.0) - 0.474591).abs() < 1e-5);
+    /// The midpoint sum's own error (2×10⁵ points, kink at the critical angle) and its 6 digits.
+    const MIDPOINT_SUM: f64 = 1e-5;
+    assert!((hemispherical_fresnel_reflectance(1.333, 1.0) - 0.474591).abs() < MIDPOINT_SUM);
+    /// An exact identity; the two 64-point quadratures are each good to ~10⁻¹².
+    const IDENTITY: f64 = 1e-9;
     for n in [1.1, 1.333, 1.5, 2.0] {
         let (ext, int) = (hemispherical_fresnel_reflectance(1.0, n), hemispherical_fresnel_reflectance(n, 1.0));
-        assert_relative_eq!(1.0 - int, (1.0 - ext) / (n * n), max_relative = 1e-9);
+        assert_relative_eq!(1.0 - int, (1.0 - ext) / (n * n), max_relative = IDENTITY);
     }
 }
 
@@ -183,13 +287,19 @@ fn brdf_oracles() {
     assert_relative_eq!(smith_lambda(0.3, 0.05), 2.5705e-2, max_relative = FIVE_DIGITS);
     assert_relative_eq!(smith_lambda(0.1, 0.1), 0.81811, max_relative = FIVE_DIGITS);
     assert_relative_eq!(mean_fresnel(0.5, 0.1), 0.06037, max_relative = FIVE_DIGITS);
-    assert_relative_eq!(trochoid_mean_square_slope(0.5), 0.133975, max_relative = 1e-5);
-    assert_relative_eq!(trochoid_mean_square_slope(0.8), 0.4, max_relative = 1e-12);
+    /// Six printed digits (0.133975 = 1 − √3/2).
+    const SIX_DIGITS: f64 = 1e-5;
+    /// `1 − √(1 − 0.64) = 0.4` up to rounding.
+    const ROUNDING: f64 = 1e-12;
+    assert_relative_eq!(trochoid_mean_square_slope(0.5), 0.133975, max_relative = SIX_DIGITS);
+    assert_relative_eq!(trochoid_mean_square_slope(0.8), 0.4, max_relative = ROUNDING);
 }
 
 #[test]
 fn quan_fry_index_of_pure_water() {
     // n_D(20 °C) of pure water = 1.33299 (IAPWS 1997); Quan & Fry's fit is good to ~3×10⁻⁵.
+    /// Quan & Fry's fit accuracy (~3×10⁻⁵) with margin, plus the wavelength rounding.
+    const FIT: f64 = 1e-4;
     let n = Seawater::new(20.0, 0.0).unwrap().refractive_index(589.3);
-    assert!((n - 1.33299).abs() < 1e-4, "{n}");
+    assert!((n - 1.33299).abs() < FIT, "{n}");
 }
