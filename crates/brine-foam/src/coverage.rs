@@ -12,6 +12,27 @@ pub const DARLES_ONSET_WIND_M_S: f64 = 13.0 / 3.6;
 /// Largest wind speed accepted (m s⁻¹), as for the wave spectra.
 pub const MAX_WIND_M_S: f64 = 60.0;
 
+/// Largest air–sea temperature difference `|ΔT| = |T_w − T_a|` (°C) accepted by the stability
+/// forms: 30 °C.
+///
+/// This is Brine's envelope, not a published bound: the equation sheet (§5) gives no range of
+/// `ΔT` for the 1986 fit, which was made on open-ocean observations, where the air–sea
+/// difference rarely exceeds a few degrees (the marine boundary layer is close to neutral). At
+/// ±30 °C the factor `exp(0.0861 ΔT)` is already 13.2 (or 1/13.2), an
+/// extrapolation far beyond any fitted condition; beyond it the law is refused rather than
+/// clamped, so a wrong input cannot pass silently.
+pub const MAX_ABS_DELTA_T_C: f64 = 30.0;
+
+/// Checks `ΔT` against [`MAX_ABS_DELTA_T_C`].
+fn check_delta_t(delta_t_c: f64) -> Result<f64, FoamError> {
+    check(
+        "delta_t_c",
+        delta_t_c,
+        delta_t_c.abs() <= MAX_ABS_DELTA_T_C,
+        "[-30, 30] °C (delta_t_c = t_water_c − t_air_c)",
+    )
+}
+
 /// An empirical law of the fraction of the sea surface covered by whitecaps.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "kebab-case")]
@@ -39,14 +60,35 @@ pub enum WhitecapLaw {
 }
 
 impl WhitecapLaw {
-    /// The stability form from water and air temperatures (°C; water `[−2, 40]`, air `[−60, 60]`).
+    /// The 1986 stability form from the water and air temperatures, `ΔT = T_w − T_a`.
+    ///
+    /// `W = 1.95×10⁻⁵ U₁₀^2.55 exp(0.0861 ΔT)` with `ΔT = T_w − T_a` (°C), taken as given: a
+    /// difference outside [`MAX_ABS_DELTA_T_C`] is an error, not clamped (the water and air
+    /// ranges alone allow `ΔT` from −62 to +100 °C).
+    ///
+    /// # Arguments
+    /// - `t_water_c`: sea-surface temperature `T_w` (°C), `[−2, 40]` (sea water freezes near
+    ///   −1.9 °C; 40 °C bounds the warmest seas).
+    /// - `t_air_c`: air temperature `T_a` (°C), `[−60, 60]`.
+    ///
+    /// Their difference `ΔT = t_water_c − t_air_c` (°C) must also lie in `[−30, 30]`.
+    ///
+    /// # Returns
+    /// [`WhitecapLaw::Monahan1986Stability`] with `delta_t_c = t_water_c − t_air_c` exactly (°C).
     ///
     /// # Errors
-    /// [`FoamError::OutOfRange`] naming the temperature outside its range.
+    /// [`FoamError::OutOfRange`] naming `t_water_c` or `t_air_c` outside its range, or
+    /// `delta_t_c` (with the value `t_water_c − t_air_c`) outside `[−30, 30]` °C.
+    ///
+    /// # References
+    /// Monahan E., Ó Muircheartaigh I. 1986, "Whitecaps and the passive remote sensing of the
+    /// ocean surface", Int. J. Remote Sens. 7(5):627–642 (stability-dependent fit); Darles et al.
+    /// 2007 Eq. 3; equation sheet §5.
     pub fn monahan_1986_from_temperatures(t_water_c: f64, t_air_c: f64) -> Result<Self, FoamError> {
         let t_water_c = check("t_water_c", t_water_c, (-2.0..=40.0).contains(&t_water_c), "[-2, 40] °C")?;
         let t_air_c = check("t_air_c", t_air_c, (-60.0..=60.0).contains(&t_air_c), "[-60, 60] °C")?;
-        Ok(Self::Monahan1986Stability { delta_t_c: (t_water_c - t_air_c).clamp(-30.0, 30.0) })
+        let delta_t_c = check_delta_t(t_water_c - t_air_c)?;
+        Ok(Self::Monahan1986Stability { delta_t_c })
     }
 
     /// A short name for JSON and plots.
@@ -69,7 +111,7 @@ pub struct CoverageParams {
 }
 
 impl CoverageParams {
-    /// Checks the parameters.
+    /// The inputs of a whitecap-coverage evaluation, checked once.
     ///
     /// # Arguments
     /// - `u10`: wind speed 10 m above the sea `U₁₀` (m s⁻¹), `[0, 60]`.
@@ -77,13 +119,21 @@ impl CoverageParams {
     /// - `onset_m_s`: wind speed below which the coverage is zero (m s⁻¹), `[0, 10]`; use
     ///   [`DARLES_ONSET_WIND_M_S`] (3.61 m s⁻¹) unless you have a reason.
     ///
+    /// # Returns
+    /// The checked parameters, for [`whitecap_coverage`].
+    ///
     /// # Errors
-    /// [`FoamError::OutOfRange`] naming the first parameter outside its range.
+    /// [`FoamError::OutOfRange`] naming the first parameter outside its range (`u10_m_s`,
+    /// `onset_m_s`, `delta_t_c`).
+    ///
+    /// # References
+    /// Monahan & Ó Muircheartaigh 1980, 1986 (laws fitted on ~4–20 m s⁻¹); Darles et al. 2007 §4.1
+    /// (onset 13 km/h); equation sheet §5.
     pub fn new(u10: f64, law: WhitecapLaw, onset_m_s: f64) -> Result<Self, FoamError> {
         let u10 = check("u10_m_s", u10, (0.0..=MAX_WIND_M_S).contains(&u10), "[0, 60] m/s")?;
         let onset = check("onset_m_s", onset_m_s, (0.0..=10.0).contains(&onset_m_s), "[0, 10] m/s")?;
         if let WhitecapLaw::Monahan1986Stability { delta_t_c } | WhitecapLaw::Darles2007AsPrinted { delta_t_c } = law {
-            check("delta_t_c", delta_t_c, (-30.0..=30.0).contains(&delta_t_c), "[-30, 30] °C")?;
+            check_delta_t(delta_t_c)?;
         }
         Ok(Self { u10, law, onset })
     }
@@ -156,10 +206,40 @@ mod tests {
     fn stability_form_from_temperatures() {
         // Darles' figure 6 conditions: T_w = 12 °C, T_a = 20 °C, so ΔT = −8 °C.
         let law = WhitecapLaw::monahan_1986_from_temperatures(12.0, 20.0).unwrap();
+        assert_eq!(law, WhitecapLaw::Monahan1986Stability { delta_t_c: -8.0 });
         let w = cover(10.0, law);
         let expected = 6.919e-3 * (0.0861f64 * -8.0).exp();
         assert!((w / expected - 1.0).abs() < ORACLE_REL, "{w} vs {expected}");
         assert!(WhitecapLaw::monahan_1986_from_temperatures(50.0, 20.0).is_err());
+    }
+
+    #[test]
+    fn temperature_difference_beyond_30_is_an_error_not_a_clamp() {
+        // Both temperatures in range, ΔT = 40 − 0 = 40 °C and −2 − (−60) = 58 °C: refused, with
+        // the parameter, its value and its range in the message.
+        for (tw, ta, dt) in [(40.0, 0.0, 40.0), (-2.0, -60.0, 58.0), (0.0, 45.0, -45.0), (10.0, 40.5, -30.5)] {
+            let e = WhitecapLaw::monahan_1986_from_temperatures(tw, ta).unwrap_err();
+            assert_eq!(e, FoamError::OutOfRange { name: "delta_t_c", value: dt, range: e_range(&e) });
+            let msg = e.to_string();
+            assert!(
+                msg.contains("delta_t_c") && msg.contains("[-30, 30]") && msg.contains("t_water_c − t_air_c"),
+                "{msg}"
+            );
+        }
+        // The ends of the range are accepted, unchanged: ΔT = 10 − 40 = −30 °C, 40 − 10 = +30 °C.
+        let cold = WhitecapLaw::monahan_1986_from_temperatures(10.0, 40.0).unwrap();
+        assert_eq!(cold, WhitecapLaw::Monahan1986Stability { delta_t_c: -30.0 });
+        let warm = WhitecapLaw::monahan_1986_from_temperatures(40.0, 10.0).unwrap();
+        assert_eq!(warm, WhitecapLaw::Monahan1986Stability { delta_t_c: 30.0 });
+        // At ΔT = +30 °C the sheet's ΔT = 0 oracle times e^{0.0861·30} = e^{2.583}.
+        let expected = 6.919e-3 * (0.0861f64 * 30.0).exp();
+        assert!((cover(10.0, warm) / expected - 1.0).abs() < ORACLE_REL);
+    }
+
+    /// The `range` text of an [`FoamError::OutOfRange`].
+    fn e_range(e: &FoamError) -> &'static str {
+        let FoamError::OutOfRange { range, .. } = e;
+        range
     }
 
     #[test]

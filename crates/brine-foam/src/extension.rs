@@ -78,10 +78,27 @@ pub struct FoamExtension {
 }
 
 impl FoamExtension {
-    /// Checks the parameters and computes `⟨w⟩`.
+    /// Checks the parameters and computes the area mean `⟨w⟩` of the foam weight.
+    ///
+    /// `⟨w⟩ = E[((y − y_min)/(y_max − y_min))ⁿ] · E[min(√(1 + |∇h|²), N_max)]`, heights
+    /// `N(0, σ_h²)` truncated to `[y_min, y_max]` (Simpson, 2000 panels) and slopes
+    /// `N(0, diag(σ_x², σ_z²))` independent of the height (midpoint quadrature).
+    ///
+    /// # Arguments
+    /// - `params`: [`FoamExtensionParams`] — `exponent` `n` (`[1, 20]`), `max_normal_norm`
+    ///   `N_max` (`[1, 10]`), the noise (`noise_amplitude` `[0, 1]`, `noise_wavelength_m` m
+    ///   `(0, 10⁴]`, `noise_octaves` `[1, 12]`, `seed`).
+    /// - `surface`: [`SurfaceStatistics`] — `y_min`, `y_max > y_min`, `height_std > 0` (m), slope
+    ///   variances `[0, 10]` (dimensionless).
+    ///
+    /// # Returns
+    /// The extension, with `⟨w⟩` (dimensionless, `> 0`) precomputed.
     ///
     /// # Errors
     /// [`FoamError::OutOfRange`] naming the first parameter outside its range.
+    ///
+    /// # References
+    /// Darles et al. 2007 §4.1.1 Eq. 4; equation sheet §5 (`⟨w⟩` normalisation).
     pub fn new(params: &FoamExtensionParams, surface: &SurfaceStatistics) -> Result<Self, FoamError> {
         let n = check("exponent", params.exponent, (1.0..=20.0).contains(&params.exponent), "[1, 20]")?;
         let nmax = check(
@@ -229,6 +246,14 @@ fn mean_normal_norm(s: &SurfaceStatistics, nmax: f64) -> f64 {
 mod tests {
     use super::*;
 
+    /// Midpoint rule on 400² points against the constructor's Simpson (2000 panels) and midpoint
+    /// (128²) quadratures: each is converged to better than 10⁻⁴, so 10⁻³ leaves a margin.
+    const QUADRATURE_REL: f64 = 1e-3;
+
+    /// Smallest crest/trough ratio expected: the height factor alone gives
+    /// `((1.5 + 2)/(−1.5 + 2))⁸ = 7⁸ ≈ 5.8×10⁶`; 100 only asks for a clear ordering.
+    const CREST_OVER_TROUGH: f64 = 100.0;
+
     fn surface() -> SurfaceStatistics {
         SurfaceStatistics { y_min: -2.0, y_max: 2.0, height_std: 0.5, slope_variance_x: 0.02, slope_variance_z: 0.01 }
     }
@@ -255,9 +280,7 @@ mod tests {
                 den += py * px;
             }
         }
-        // Midpoint rule on 400² points against Simpson (2000 panels) and midpoint (128²): both
-        // quadratures are converged to better than 1e-4.
-        assert!((num / den / w - 1.0).abs() < 1e-3, "{} vs {w}", num / den);
+        assert!((num / den / w - 1.0).abs() < QUADRATURE_REL, "{} vs {w}", num / den);
     }
 
     #[test]
@@ -265,7 +288,7 @@ mod tests {
         let ext = FoamExtension::new(&FoamExtensionParams::default(), &surface()).unwrap();
         let crest = ext.foam_amount(0.01, 1.5, 0.2, 0.0, 0.0, 0.0, 1e3);
         let trough = ext.foam_amount(0.01, -1.5, 0.2, 0.0, 0.0, 0.0, 1e3);
-        assert!(crest > 100.0 * trough, "{crest} vs {trough}");
+        assert!(crest > CREST_OVER_TROUGH * trough, "{crest} vs {trough}");
     }
 
     #[test]

@@ -99,9 +99,24 @@ pub struct FoamHistory {
 impl FoamHistory {
     /// Checks the parameters and solves the brightness decay time `τ_R` for Koepke's `f_ef`.
     ///
+    /// `τ_R` solves `⟨Σⱼ K(aⱼ) e^{−aⱼ/τ_R}⟩ / ⟨Σⱼ K(aⱼ)⟩ = f_ef` (means over the phase of `t`
+    /// within a lattice step, 64 sub-steps), by 100 bisections in `ln τ_R` on `[10⁻⁴ τ, 10⁴ τ]`.
+    ///
+    /// # Arguments
+    /// - `params`: [`FoamHistoryParams`] — `decay_time_s` `τ` (s, `(0, 60]`), `step_s` `Δt` (s,
+    ///   `(0, τ]`), `length_in_decay_times` `T/τ` (`[1, 10]`), `drift_m_s` (m s⁻¹, each `[−5, 5]`).
+    /// - `koepke`: the reflectance model whose efficiency `f_ef` sets `τ_R`.
+    ///
+    /// # Returns
+    /// The history, reading `⌈(T/τ) τ/Δt⌉ + 1` lattice instants per evaluation.
+    ///
     /// # Errors
     /// [`FoamError::OutOfRange`] naming the parameter, including a history needing more than
     /// [`MAX_HISTORY_SAMPLES`] instants.
+    ///
+    /// # References
+    /// Callaghan, Deane & Stokes 2012 (`τ` from 0.5 to 8 s); Koepke 1984 (`f_ef`); Darles et al.
+    /// 2007 §4.1.2; equation sheet §5 (explicit age model instead of `0.4 − 0.2 t·10⁻²`).
     pub fn new(params: &FoamHistoryParams, koepke: &KoepkeFoam) -> Result<Self, FoamError> {
         let tau = check(
             "decay_time_s",
@@ -158,8 +173,18 @@ impl FoamHistory {
 
     /// The lattice instants read at time `t`, youngest first.
     ///
+    /// `tⱼ = Δt (⌊t/Δt⌋ − j)`, `aⱼ = t − tⱼ`, offset `−v aⱼ`, weight `K(aⱼ)`, for
+    /// `j = 0 … sample_count() − 1`.
+    ///
     /// # Arguments
     /// - `t`: time (s), finite.
+    ///
+    /// # Returns
+    /// [`Self::sample_count`] [`FoamSample`]s (times and ages in s, offsets in m, weights
+    /// dimensionless `≥ 0`).
+    ///
+    /// # References
+    /// See [`FoamHistory`].
     pub fn samples(&self, t: f64) -> impl Iterator<Item = FoamSample> + '_ {
         debug_assert!(t.is_finite());
         let newest = (t / self.step).floor();
@@ -247,6 +272,22 @@ impl FoamHistory {
 mod tests {
     use super::*;
 
+    /// Rounding of a normalised sum of 17 weighted terms of order 1.
+    const SUM_ROUNDING: f64 = 1e-12;
+
+    /// The mean brightness over 1000 instants (7.3 steps) against the constructor's 64-phase
+    /// average, and the continuous kernel integral (midpoint, 10⁵ points) against it: both
+    /// quadratures agree to ~10⁻⁵ (the phase average has kinks where instants enter and leave).
+    const PHASE_AVERAGE: f64 = 1e-3;
+
+    /// Exactly zero up to the rounding of `0/Σ K`.
+    const NO_FOAM: f64 = 1e-15;
+
+    /// Largest change of the cover over 1 ms for a source varying at 0.7 rad/s and kernel ramps
+    /// one step long: the ramps change the weights at a rate ≤ 1/Δt relative, i.e. ≤ 10⁻³ per
+    /// millisecond, plus the source's own 0.35 × 10⁻³; 2×10⁻³ bounds a jump-free cover.
+    const CONTINUITY_PER_MS: f64 = 2e-3;
+
     #[test]
     fn steady_source_keeps_cover_and_gives_koepke_brightness() {
         let h = FoamHistory::new(&FoamHistoryParams::default(), &KoepkeFoam::default()).unwrap();
@@ -254,12 +295,12 @@ mod tests {
         for i in 0..m {
             let t = 100.0 + 7.3 * i as f64 / m as f64;
             let s = h.accumulate(t, |_| 0.3);
-            assert!((s.cover - 0.3).abs() < 1e-12);
+            assert!((s.cover - 0.3).abs() < SUM_ROUNDING);
             b += s.brightness;
         }
         // The constructor solves τ_R on a 64-point average over a step; this average uses 1000
         // points over 7.3 steps, so the two means agree to the quadrature error (< 1e-4).
-        assert!((b / m as f64 - KOEPKE_EFFICIENCY_FOR_TEST).abs() < 1e-3, "{}", b / m as f64);
+        assert!((b / m as f64 - KOEPKE_EFFICIENCY_FOR_TEST).abs() < PHASE_AVERAGE, "{}", b / m as f64);
         // Averaged over the phase of t within a step, the lattice sum is the continuous
         // integral ∫ K(a) e^{−a/τ_R} da / ∫ K(a) da: check the solved τ_R against it (midpoint
         // rule, 10⁵ points: error < 1e-8).
@@ -272,7 +313,7 @@ mod tests {
             num += kernel(a) * (-a / tau_r).exp();
             den += kernel(a);
         }
-        assert!((num / den - KOEPKE_EFFICIENCY_FOR_TEST).abs() < 1e-3, "{}", num / den);
+        assert!((num / den - KOEPKE_EFFICIENCY_FOR_TEST).abs() < PHASE_AVERAGE, "{}", num / den);
         // Without ramps and truncation, ρ̄ = τ_R/(τ + τ_R) gives τ_R = τ f_ef/(1 − f_ef) = 2.67 s;
         // the ramp at age 0 shifts foam older, so τ_R is longer.
         assert!(tau_r > 4.0 * 0.4 / 0.6);
@@ -289,9 +330,9 @@ mod tests {
         let c2 = h.accumulate(14.0, burst).cover;
         // Between ages 2 s and 4 s (both inside the ramps' flat part) the kernel ratio is
         // e^{−2/τ}; the normalisation Σ K is periodic in t with period Δt, so it cancels.
-        assert!((c2 / c1 - (-2.0f64 / 4.0).exp()).abs() < 1e-12, "{}", c2 / c1);
-        assert!(h.accumulate(9.99, burst).cover.abs() < 1e-15);
-        assert!(h.accumulate(10.0 + 17.0, burst).cover.abs() < 1e-15);
+        assert!((c2 / c1 - (-2.0f64 / 4.0).exp()).abs() < SUM_ROUNDING, "{}", c2 / c1);
+        assert!(h.accumulate(9.99, burst).cover.abs() < NO_FOAM);
+        assert!(h.accumulate(10.0 + 17.0, burst).cover.abs() < NO_FOAM);
     }
 
     #[test]
@@ -301,7 +342,7 @@ mod tests {
         let mut prev = h.accumulate(0.0, src).cover;
         for i in 1..4000 {
             let c = h.accumulate(i as f64 * 0.001, src).cover;
-            assert!((c - prev).abs() < 2e-3, "jump {} at {}", c - prev, i as f64 * 0.001);
+            assert!((c - prev).abs() < CONTINUITY_PER_MS, "jump {} at {}", c - prev, i as f64 * 0.001);
             prev = c;
         }
     }

@@ -33,9 +33,10 @@
 //! ## Validity
 //!
 //! The coverage laws were fitted on `U₁₀` ≈ 4–20 m s⁻¹ (accepted on `[0, 60]`, zero below the
-//! onset wind, clamped to 1); the spray source on `r₈₀` ∈ 0.8–15 µm (bubble-mediated drops only;
-//! spume drops torn from crests at high winds are not modelled). Radiances are linear in the
-//! irradiances given, in any consistent unit.
+//! onset wind, clamped to 1); the stability forms accept `ΔT = T_w − T_a` on `[−30, 30]` °C
+//! ([`MAX_ABS_DELTA_T_C`], an error beyond, never a clamp). The spray source was fitted on
+//! `r₈₀` ∈ 0.8–15 µm (bubble-mediated drops only; spume drops torn from crests at high winds are
+//! not modelled). Radiances are linear in the irradiances given, in any consistent unit.
 //!
 //! ## Example
 //!
@@ -74,7 +75,9 @@ mod radiance;
 mod scattering;
 mod spray;
 
-pub use coverage::{CoverageParams, DARLES_ONSET_WIND_M_S, MAX_WIND_M_S, WhitecapLaw, whitecap_coverage};
+pub use coverage::{
+    CoverageParams, DARLES_ONSET_WIND_M_S, MAX_ABS_DELTA_T_C, MAX_WIND_M_S, WhitecapLaw, whitecap_coverage,
+};
 pub use error::FoamError;
 pub use extension::{FoamExtension, FoamExtensionParams, SurfaceStatistics};
 pub use history::{FoamHistory, FoamHistoryParams, FoamSample, FoamState, MAX_HISTORY_SAMPLES};

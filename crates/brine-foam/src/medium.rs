@@ -21,7 +21,14 @@ pub enum ExtinctionEfficiency {
 }
 
 impl ExtinctionEfficiency {
-    /// `Q_e` of a drop of radius `r_um` (µm, `> 0`).
+    /// Extinction efficiency `Q_e` of one drop: the ratio of its extinction cross-section to its
+    /// geometric cross-section `π r²`.
+    ///
+    /// `Q_e = const`, or `Q_e = 2 − (4/ρ) sin ρ + (4/ρ²)(1 − cos ρ)`, `ρ = 4π r (m − 1)/λ`
+    /// (series `ρ²/2 − ρ⁴/36` below `ρ = 10⁻²`).
+    ///
+    /// # Arguments
+    /// - `r_um`: drop radius `r` (µm), `> 0`.
     ///
     /// # Returns
     /// `Q_e` (dimensionless), `[0, 3.2]` for the anomalous-diffraction form.
@@ -112,10 +119,27 @@ pub struct SprayMedium {
 }
 
 impl SprayMedium {
-    /// Checks the parameters and integrates `k_e(0)`.
+    /// Sea spray of a wind: checks the parameters and integrates the sea-level extinction
+    /// coefficient once.
+    ///
+    /// `k_e(0) = ∫_{r_min}^{r_max} Q_e(r) π r² (dF/dr)/v_d(r) dr`, by Simpson's rule on 512 panels
+    /// in `ln r` (`dr = r d ln r`).
+    ///
+    /// # Arguments
+    /// - `params`: [`SprayParams`] — `u10` (m s⁻¹, `[0, 60]`), `radius_min_um` (µm, `> 0`),
+    ///   `radius_max_um` (µm, `(radius_min_um, 100]`), `scale_height_m` and `max_height_m` (m,
+    ///   `(0, 10⁴]`), `residence_time_s` (s, `[3600, 10⁷]`), `efficiency` (a constant `Q_e` in
+    ///   `(0, 5]`, or anomalous diffraction with `λ` in `[300, 2500]` nm and `m` in `(1, 2]`).
+    ///
+    /// # Returns
+    /// The medium, with `k_e(0)` (m⁻¹) precomputed (`≥ 0`, 0 at `U₁₀ = 0`).
     ///
     /// # Errors
     /// [`FoamError::OutOfRange`] naming the first parameter outside its range.
+    ///
+    /// # References
+    /// Monahan, Spiel & Davidson 1986 (`dF/dr`); Darles et al. 2007 §4.2 (`k_e`, `Q_e ≈ 2`);
+    /// equation sheet §6 ("concentration from flux", "extinction and optical depth").
     pub fn new(params: &SprayParams) -> Result<Self, FoamError> {
         let p = *params;
         check("u10_m_s", p.u10, (0.0..=60.0).contains(&p.u10), "[0, 60] m/s")?;
@@ -209,8 +233,12 @@ impl SprayMedium {
         self.extinction_0 * foam_factor * self.profile(z)
     }
 
-    /// Vertical optical depth of the spray column `τ = k_e(0) H (1 − e^{−z_max/H})`
-    /// (dimensionless), for the sea-wide mean foam.
+    /// Vertical optical depth of the whole spray column, for the sea-wide mean foam.
+    ///
+    /// `τ = ∫₀^{z_max} k_e dz = k_e(0) H (1 − e^{−z_max/H})`.
+    ///
+    /// # Returns
+    /// `τ` (dimensionless, `≥ 0`).
     ///
     /// # References
     /// Darles et al. 2007 §4.2 (`τ_aod`); equation sheet §6.
@@ -269,13 +297,21 @@ impl SprayMedium {
         k * (length_m / dz.abs()) * h * (libm::exp(-lo / h) - libm::exp(-hi / h))
     }
 
-    /// Beer–Lambert transmittance of a segment, `T = exp(−∫ k_e ds)`.
+    /// Fraction of light that crosses a straight segment of spray unscattered and unabsorbed.
+    ///
+    /// `T = exp(−∫ k_e ds)` (Beer–Lambert), with the optical depth of
+    /// [`Self::segment_optical_depth`].
     ///
     /// # Arguments
-    /// As [`Self::segment_optical_depth`].
+    /// - `z0`, `z1`: heights above the sea of the segment's ends (m), finite.
+    /// - `length_m`: the segment length (m), `≥ |z1 − z0|`.
+    /// - `foam_factor`: `s′/W` below the segment (dimensionless, `≥ 0`; 1 for the mean sea).
     ///
     /// # Returns
-    /// `T`, in `(0, 1]` (it underflows to 0 only beyond an optical depth of ~745).
+    /// `T` (dimensionless), in `(0, 1]` (it underflows to 0 only beyond an optical depth of ~745).
+    ///
+    /// # References
+    /// Beer–Lambert law; equation sheet §6 (the attenuation equation, Darles' missing Eq. 7).
     pub fn transmittance(&self, z0: f64, z1: f64, length_m: f64, foam_factor: f64) -> f64 {
         libm::exp(-self.segment_optical_depth(z0, z1, length_m, foam_factor))
     }
@@ -302,6 +338,23 @@ impl SprayMedium {
 mod tests {
     use super::*;
 
+    /// Midpoint rule on 2·10⁵ points along a segment: the clipped ends (a kink at `z = 0` or
+    /// `z_max`) cost up to one step, 5×10⁻⁶ of the path; 10⁻⁴ leaves a margin of 20.
+    const MIDPOINT_REL: f64 = 1e-4;
+
+    /// Absolute floor for segments entirely outside the spray (optical depth 0).
+    const ZERO_DEPTH: f64 = 1e-12;
+
+    /// At `ρ` = 7.8×10⁻⁴ (`r` = 10⁻⁴ µm at 550 nm) `Q_e ≈ ρ²/2` = 3×10⁻⁷, well under 10⁻⁴.
+    const SMALL_DROP_Q: f64 = 1e-4;
+
+    /// At `ρ` ≈ 1550 (`r` = 200 µm) `|Q_e − 2| ≤ 4/ρ + 8/ρ²` ≈ 2.6×10⁻³; 0.02 allows the bound.
+    const LARGE_DROP_Q: f64 = 0.02;
+
+    /// Closed form vs series at `ρ` = 10⁻²: the series' next term `ρ⁶/1200` ≈ 10⁻¹⁵, but the closed
+    /// form loses `4/ρ²·ε` ≈ 10⁻¹¹ to cancellation; 10⁻⁹ bounds both.
+    const SERIES_SWITCH: f64 = 1e-9;
+
     #[test]
     fn segment_depth_matches_brute_force() {
         let m = SprayMedium::new(&SprayParams { max_height_m: 50.0, scale_height_m: 20.0, ..SprayParams::default() })
@@ -316,19 +369,18 @@ mod tests {
                 brute += m.extinction(z0 + t * (z1 - z0), f) * len / n as f64;
             }
             let exact = m.segment_optical_depth(z0, z1, len, f);
-            // Midpoint rule on 2·10⁵ points; the clipped ends add one step of error.
-            assert!((exact - brute).abs() <= 1e-4 * brute.max(1e-12) + 1e-12, "{z0} {z1}: {exact} vs {brute}");
+            assert!((exact - brute).abs() <= MIDPOINT_REL * brute + ZERO_DEPTH, "{z0} {z1}: {exact} vs {brute}");
         }
     }
 
     #[test]
     fn anomalous_diffraction_limits() {
         let e = ExtinctionEfficiency::AnomalousDiffraction { wavelength_nm: 550.0, refractive_index: 1.34 };
-        assert!(e.q_e(1e-4) < 1e-4);
-        assert!((e.q_e(200.0) - 2.0).abs() < 0.02);
+        assert!(e.q_e(1e-4) < SMALL_DROP_Q);
+        assert!((e.q_e(200.0) - 2.0).abs() < LARGE_DROP_Q);
         // Series and closed form agree at the switch.
         let rho: f64 = 1e-2;
         let closed = 2.0 - 4.0 / rho * rho.sin() + 4.0 / (rho * rho) * (1.0 - rho.cos());
-        assert!((closed - rho * rho * (0.5 - rho * rho / 36.0)).abs() < 1e-9);
+        assert!((closed - rho * rho * (0.5 - rho * rho / 36.0)).abs() < SERIES_SWITCH);
     }
 }

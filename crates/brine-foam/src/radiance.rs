@@ -35,14 +35,23 @@ impl Default for KoepkeFoam {
 }
 
 impl KoepkeFoam {
-    /// Checks the parameters.
+    /// Koepke's whitecap reflectance with other values than his: `R_ef = f_ef R_f`.
     ///
     /// # Arguments
-    /// - `fresh_reflectance`: `R_f`, `(0, 1]` (0.55 in the visible).
-    /// - `efficiency`: `f_ef`, `(0, 1)` (0.4 ± 0.2).
+    /// - `fresh_reflectance`: `R_f`, reflectance of fresh dense foam (dimensionless), `(0, 1]`
+    ///   (0.55 in the visible).
+    /// - `efficiency`: `f_ef`, the life-mean reflectance of a whitecap as a fraction of `R_f`
+    ///   (dimensionless), `(0, 1)` (0.4 ± 0.2).
+    ///
+    /// # Returns
+    /// The checked model.
     ///
     /// # Errors
     /// [`FoamError::OutOfRange`] naming the parameter.
+    ///
+    /// # References
+    /// Koepke P. 1984, "Effective reflectance of oceanic whitecaps", Appl. Opt. 23(11):1816–1824
+    /// (`R_f` ≈ 0.55, `f_ef` = 0.4 ± 0.2); equation sheet §5.
     pub fn new(fresh_reflectance: f64, efficiency: f64) -> Result<Self, FoamError> {
         check("fresh_reflectance", fresh_reflectance, fresh_reflectance > 0.0 && fresh_reflectance <= 1.0, "(0, 1]")?;
         check("efficiency", efficiency, efficiency > 0.0 && efficiency < 1.0, "(0, 1)")?;
@@ -119,18 +128,21 @@ pub fn surface_radiance(foam_cover: f64, water_radiance: f64, foam_radiance: f64
 mod tests {
     use super::*;
 
+    /// Rounding of two or three flops on values of order 1–7: a few ulps (ε = 2.2×10⁻¹⁶).
+    const ROUNDING: f64 = 1e-15;
+
     #[test]
     fn white_lambertian_under_unit_irradiance() {
         // A perfect white Lambertian surface under E = π has radiance 1.
-        assert!((foam_radiance(1.0, PI, 1.0, 0.0) - 1.0).abs() < 1e-15);
-        assert!((foam_radiance(1.0, 2.0, -0.5, PI) - 1.0).abs() < 1e-15);
+        assert!((foam_radiance(1.0, PI, 1.0, 0.0) - 1.0).abs() < ROUNDING);
+        assert!((foam_radiance(1.0, 2.0, -0.5, PI) - 1.0).abs() < ROUNDING);
     }
 
     #[test]
     fn composition_interpolates() {
-        assert!((surface_radiance(0.0, 3.0, 7.0) - 3.0).abs() < 1e-15);
-        assert!((surface_radiance(1.0, 3.0, 7.0) - 7.0).abs() < 1e-15);
-        assert!((surface_radiance(0.25, 3.0, 7.0) - 4.0).abs() < 1e-15);
+        assert!((surface_radiance(0.0, 3.0, 7.0) - 3.0).abs() < ROUNDING);
+        assert!((surface_radiance(1.0, 3.0, 7.0) - 7.0).abs() < ROUNDING);
+        assert!((surface_radiance(0.25, 3.0, 7.0) - 4.0).abs() < ROUNDING);
         assert!(KoepkeFoam::new(0.55, 1.0).is_err());
     }
 }

@@ -2,10 +2,39 @@
 
 use brine_foam::{
     CoverageParams, DARLES_ONSET_WIND_M_S, ExtinctionEfficiency, FoamExtension, FoamExtensionParams, FoamHistory,
-    FoamHistoryParams, FoamNoise, KoepkeFoam, MSD86_RADIUS_RANGE_UM, SprayLighting, SprayMedium, SprayParams, SprayRay,
-    SprayScattering, SurfaceStatistics, WhitecapLaw, msd86_flux, whitecap_coverage,
+    FoamHistoryParams, FoamNoise, KoepkeFoam, MAX_ABS_DELTA_T_C, MSD86_RADIUS_RANGE_UM, SprayLighting, SprayMedium,
+    SprayParams, SprayRay, SprayScattering, SurfaceStatistics, WhitecapLaw, msd86_flux, whitecap_coverage,
 };
 use proptest::prelude::*;
+
+/// Relative rounding of `msd86_flux` (a `pow`, an `exp` and a `10^x`, a few ulps each).
+const FLUX_ROUNDING: f64 = 1e-13;
+
+/// Steepest possible rise of `ln(dF/dr)` with `ln r` (derived from the MSD86 formula):
+/// `d ln(dF/dr)/d ln r = −3 + 1.05 x/(1 + x) + (2·1.19/0.650) B e^{−B²}`, `x = 0.057 r^1.05`;
+/// the second term is below 1.05 and `B e^{−B²}` at most `1/√(2e)`, so the slope is below
+/// `−3 + 1.05 + 3.6615/√(2e)` = −0.3796: the source falls with the radius everywhere.
+fn max_log_slope() -> f64 {
+    -3.0 + 1.05 + 2.0 * 1.19 / 0.650 / (2.0 * std::f64::consts::E).sqrt()
+}
+
+/// Rounding of the noise `1 + a Σ …/Σw` against its bounds `1 ± a`.
+const NOISE_ROUNDING: f64 = 1e-12;
+
+/// Largest anomalous-diffraction efficiency: the maximum of
+/// `2 − (4/ρ) sin ρ + (4/ρ²)(1 − cos ρ)` (van de Hulst 1957, §11.22) is 3.17314 at `ρ` ≈ 4.086
+/// (scanned on a 10⁻⁵ grid), rounded up.
+const Q_E_MAX: f64 = 3.174;
+
+/// Rounding of a cover-weighted mean age against its bound, the history length (s).
+const AGE_ROUNDING_S: f64 = 1e-9;
+
+/// Optical depth beyond which `exp(−τ)` underflows to 0 in `f64` (`e^{−745}` ≈ 5×10⁻³²⁴), less a
+/// margin for the test's estimate.
+const UNDERFLOW_DEPTH: f64 = 700.0;
+
+/// Rounding of the in-scattered radiance against its bound (sums of up to two segments).
+const RADIANCE_ROUNDING: f64 = 1e-12;
 
 fn law() -> impl Strategy<Value = WhitecapLaw> {
     prop_oneof![
@@ -31,20 +60,54 @@ proptest! {
     }
 
     #[test]
-    fn spray_source_is_finite_and_non_negative(r in 0.8f64..15.0, u in 0.0f64..60.0, r_out in 1e-3f64..1e3) {
+    fn spray_source_is_finite_non_negative_bounded_and_falling(
+        r_frac in 0.0f64..=1.0, u in 0.0f64..60.0, r_out in 1e-3f64..1e3, grow in 1e-3f64..2.0, u_pos in 0.1f64..60.0,
+    ) {
+        // A radius of the fitted range, from its ends (so the range itself is what is sampled).
+        let (lo, hi) = MSD86_RADIUS_RANGE_UM;
+        let r = lo * (hi / lo).powf(r_frac);
         let f = msd86_flux(r, u);
         prop_assert!(f.is_finite() && f >= 0.0);
         // Outside the fitted range the formula stays finite and non-negative (extrapolation).
         let g = msd86_flux(r_out, u);
         prop_assert!(g.is_finite() && g >= 0.0);
-        prop_assert!(MSD86_RADIUS_RANGE_UM.0 <= r && r <= MSD86_RADIUS_RANGE_UM.1);
+        // Envelope: 10^{1.19 e^{−B²}} lies in [1, 10^1.19], so dF/dr lies between
+        // 1.373 U^3.41 r⁻³ (1 + 0.057 r^1.05) and 10^1.19 times that, for every r > 0.
+        let base = 1.373 * u.powf(3.41) * r_out.powi(-3) * (1.0 + 0.057 * r_out.powf(1.05));
+        prop_assert!(g >= base * (1.0 - FLUX_ROUNDING), "{g} < {base}");
+        prop_assert!(g <= base * 10f64.powf(1.19) * (1.0 + FLUX_ROUNDING), "{g} > 10^1.19 · {base}");
+        // Larger drops are rarer: ln(dF/dr) falls by at least 0.3796 per unit of ln r.
+        let (f1, f2) = (msd86_flux(r_out, u_pos), msd86_flux(r_out * (1.0 + grow), u_pos));
+        prop_assert!(
+            (f2 / f1).ln() <= max_log_slope() * (1.0 + grow).ln() + FLUX_ROUNDING,
+            "r = {r_out}: ln ratio {} over ln r step {}", (f2 / f1).ln(), (1.0 + grow).ln()
+        );
+    }
+
+    #[test]
+    fn stability_law_from_temperatures_is_exact_or_refused(tw in -2.0f64..=40.0, ta in -60.0f64..=60.0) {
+        // ΔT = T_w − T_a is kept exactly when |ΔT| ≤ 30 °C, and refused (never clamped) beyond,
+        // with the same verdict as CoverageParams::new on the same ΔT.
+        let dt = tw - ta;
+        match WhitecapLaw::monahan_1986_from_temperatures(tw, ta) {
+            Ok(law) => {
+                prop_assert!(dt.abs() <= MAX_ABS_DELTA_T_C);
+                prop_assert_eq!(law, WhitecapLaw::Monahan1986Stability { delta_t_c: dt });
+                prop_assert!(CoverageParams::new(10.0, law, DARLES_ONSET_WIND_M_S).is_ok());
+            }
+            Err(e) => {
+                prop_assert!(dt.abs() > MAX_ABS_DELTA_T_C, "{e}");
+                prop_assert!(e.to_string().starts_with("delta_t_c = "), "{e}");
+                let law = WhitecapLaw::Monahan1986Stability { delta_t_c: dt };
+                prop_assert!(CoverageParams::new(10.0, law, DARLES_ONSET_WIND_M_S).is_err());
+            }
+        }
     }
 
     #[test]
     fn anomalous_diffraction_efficiency_is_bounded(r in 1e-4f64..100.0, lambda in 300.0f64..2500.0, m in 1.01f64..2.0) {
         let q = ExtinctionEfficiency::AnomalousDiffraction { wavelength_nm: lambda, refractive_index: m }.q_e(r);
-        // The maximum of 2 − (4/ρ) sin ρ + (4/ρ²)(1 − cos ρ) is 3.1738 at ρ ≈ 4.09.
-        prop_assert!((0.0..=3.174).contains(&q), "Q_e = {q}");
+        prop_assert!((0.0..=Q_E_MAX).contains(&q), "Q_e = {q}");
     }
 
     #[test]
@@ -58,7 +121,7 @@ proptest! {
         let amount = ext.foam_amount(w, y, sx, sz, x, z, fp);
         prop_assert!((0.0..=1.0).contains(&amount));
         let nu = FoamNoise::new(a, 10.0, 5, seed).unwrap().value(x, z, fp);
-        prop_assert!(nu >= 1.0 - a - 1e-12 && nu <= 1.0 + a + 1e-12);
+        prop_assert!(nu >= 1.0 - a - NOISE_ROUNDING && nu <= 1.0 + a + NOISE_ROUNDING);
     }
 
     #[test]
@@ -68,7 +131,7 @@ proptest! {
         let s = h.accumulate(t, |s| c * (0.5 + 0.5 * (f * s.time_s).sin()));
         prop_assert!((0.0..=1.0).contains(&s.cover));
         prop_assert!(s.brightness > 0.0 && s.brightness <= 1.0);
-        prop_assert!(s.mean_age_s >= 0.0 && s.mean_age_s <= 4.0 * tau + 1e-9);
+        prop_assert!(s.mean_age_s >= 0.0 && s.mean_age_s <= 4.0 * tau + AGE_ROUNDING_S);
     }
 }
 
@@ -94,7 +157,7 @@ proptest! {
         // T ∈ (0, 1]; exp(−τ) underflows to 0 only beyond τ ≈ 745 (a 2.6 km path in 50 m/s
         // spray thirty times denser than the mean reaches it).
         let tau = m.segment_optical_depth(z0, z1, len, f);
-        prop_assert!(t <= 1.0 && (t > 0.0 || tau > 700.0), "T = {t}, τ = {tau}");
+        prop_assert!(t <= 1.0 && (t > 0.0 || tau > UNDERFLOW_DEPTH), "T = {t}, τ = {tau}");
         let light = SprayLighting { sun_irradiance: sun, sin_sun_elevation: sin_h, cos_view_sun: cos_vs, sky_radiance: sky };
         let mut ray = SprayRay::new(&m, &SprayScattering::default(), &light);
         ray.step(z0, z1, len, f);
@@ -103,6 +166,6 @@ proptest! {
         prop_assert!(ray.in_scattered() >= 0.0 && ray.in_scattered().is_finite());
         // In-scattered light is bounded by the brightest source term: ϖ (E p_max + ½ L̄).
         let p_max = brine_foam::henyey_greenstein(1.0, 0.75);
-        prop_assert!(ray.in_scattered() <= sun * p_max + 0.5 * sky + 1e-12);
+        prop_assert!(ray.in_scattered() <= sun * p_max + 0.5 * sky + RADIANCE_ROUNDING);
     }
 }

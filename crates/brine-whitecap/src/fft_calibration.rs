@@ -58,8 +58,15 @@ impl FftCalibration {
     /// - `options`: `samples` (default [`FFT_CALIBRATION_SAMPLES`]), `seed` and
     ///   `footprint_levels` are used (`filter` does not apply: the pyramids filter as boxes).
     ///
+    /// # Returns
+    /// The table `α(s)` (dimensionless) over `footprint_levels` sizes `s` (m), log-spaced from a
+    /// tenth of the finest grid spacing to twice the largest tile.
+    ///
     /// # Errors
     /// [`WhitecapError::OutOfRange`] for a target outside `[0, 1]` or a bad option.
+    ///
+    /// # References
+    /// See [`FftCalibration`] (Dupuy & Bruneton 2012; equation sheet §10).
     pub fn new(
         stats: &FftJacobianStatistics,
         target_coverage: f64,
@@ -131,6 +138,9 @@ impl FftCalibration {
     ///
     /// # Returns
     /// `W ∈ [0, 1]`; exactly 0 (1) when the target is 0 (1).
+    ///
+    /// # References
+    /// Dupuy & Bruneton 2012 (`W = ½(1 + erf((α − μ)/√(2σ²)))`); equation sheet §10.
     pub fn coverage(&self, moments: Moments, footprint_m: f64, erf: ErfMethod) -> f64 {
         if self.target <= 0.0 {
             return 0.0;

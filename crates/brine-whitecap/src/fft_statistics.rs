@@ -37,6 +37,18 @@ pub struct FftJacobianStatistics {
 
 impl FftJacobianStatistics {
     /// Builds the pyramids of every cascade of `frame` (`O(N²)` per cascade; once per frame).
+    ///
+    /// Level 0 of cascade `i` holds `(kᵢ, kᵢ²)`, `kᵢ = Jᵢ − 1 + 1/n` for `n` cascades (so that
+    /// `Σᵢ kᵢ = 1 + Σᵢ (Jᵢ − 1)`); each level above holds the means of `2 × 2` blocks.
+    ///
+    /// # Arguments
+    /// - `frame`: the FFT ocean at one instant (brine-waves), with its per-cascade Jacobian grids.
+    ///
+    /// # Returns
+    /// The pyramids, for [`Self::moments_at`].
+    ///
+    /// # References
+    /// Dupuy & Bruneton 2012 (mip-mapped `J` and `J²`); equation sheet §10.
     pub fn new(frame: &FftFrame) -> Self {
         let share = 1.0 / frame.cascade_count() as f64;
         let cascades = frame
