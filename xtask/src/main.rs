@@ -71,7 +71,7 @@ fn run(cli: Cli) -> Result<(), String> {
     match cli.command {
         Task::Ci => {
             cargo(&["fmt", "--all", "--", "--check"], &[])?;
-            cargo(&["clippy", "--workspace", "--all-targets", "--", "-D", "warnings"], &[])?;
+            cargo(&["clippy", "--workspace", "--all-targets", "--locked", "--", "-D", "warnings"], &[])?;
             cargo(&["test", "--workspace"], &[])
         }
         Task::Bench { names, list } => bench::run(&names, list),

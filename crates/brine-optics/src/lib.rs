@@ -97,7 +97,7 @@ pub use ocean_brdf::{
 };
 pub use quadrature::{GaussHermite, MAX_HERMITE_ORDER, gauss_legendre};
 pub use refraction::{reflect, refract};
-pub use sky_reflection::{SkyReflection, reflected_sky_radiance_filtered};
+pub use sky_reflection::{RoughReflectance, SkyReflection, reflected_sky_radiance_filtered};
 pub use subsurface::{
     diffuse_upwelling_radiance, irradiance_reflectance, irradiance_reflectance_morel, lambertian_floor_radiance,
     radiance_out_of_water, refracted_ray_radiance, refracted_ray_radiance_sum,

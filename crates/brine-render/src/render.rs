@@ -1,7 +1,10 @@
 //! Per-pixel composition and the parallel frame loop.
 
 use brine_foam::{SprayLighting, SprayRay, SprayScattering};
-use brine_optics::{SlopeVariance, WATER_IOR, fresnel_dielectric, reflect, reflected_sun_radiance, refract};
+use brine_optics::{
+    SlopeVariance, SunDisc, WATER_IOR, fresnel_dielectric, reflect, reflected_disc_radiance, reflected_sun_radiance,
+    refract,
+};
 use brine_trace::{Aabb, LipschitzSum, Ray, TraceOptions, TraceStats, trace};
 use brine_trace::{Hit, Method};
 use brine_waves::{GerstnerField, SineField, TracedTrochoids, WaveSurface};
@@ -354,6 +357,10 @@ fn spray(world: &World, d: DVec3, t: f64, l0: DVec3) -> DVec3 {
     l0 * transmittance + sun.irradiance_rgb * in_sun + sky_mean * in_sky
 }
 
+/// Disc image in slope space below which a glint is computed for a point source (relative error
+/// `O(q²)`, under 10⁻³).
+const POINT_DISC_Q: f64 = 0.03;
+
 /// The shading of a surface point.
 struct SurfaceShade {
     radiance: DVec3,
@@ -465,27 +472,46 @@ fn shade_surface(
         n = (n + (1e-3 - cos_v) * v).normalize();
     }
     let cos_v = v.dot(n).max(1e-3);
-    let f = fresnel_dielectric(cos_v, 1.0, WATER_IOR);
+    // Local wind frame: z along the normal, x downwind.
+    let x = (world.wind - world.wind.dot(n) * n).normalize_or(n.any_orthonormal_vector());
+    let y = n.cross(x);
+    let to_local = |a: DVec3| DVec3::new(a.dot(x), a.dot(y), a.dot(n));
+    // The sky is looked up once, at the mirror direction of the resolved facet, and weighted by
+    // the reflectance of the rough surface the unresolved waves make around it: the exact Fresnel
+    // factor times R(θ_v, σ_v)/R(θ_v, 0) of Bruneton et al.'s integral (brine-optics
+    // `RoughReflectance`), so that the distant, rough sea is no mirror at grazing views.
+    let sigma_v = variance.along(to_local(v)).sqrt();
+    let f = (fresnel_dielectric(cos_v, 1.0, WATER_IOR)
+        * crate::world::rough_reflectance().roughness_factor(cos_v, sigma_v))
+    .clamp(0.0, 1.0);
     let mut r = reflect(d, n);
     if r.y < 1e-3 {
         // A reflection pointing into the sea would hit another wave; take the horizon sky.
         r = DVec3::new(r.x, 1e-3, r.z).normalize();
     }
     let sky = world.sky.radiance_rgb(r);
-    // Local wind frame: z along the normal, x downwind.
-    let x = (world.wind - world.wind.dot(n) * n).normalize_or(n.any_orthonormal_vector());
-    let y = n.cross(x);
-    let to_local = |a: DVec3| DVec3::new(a.dot(x), a.dot(y), a.dot(n));
-    // Sun glint and moon glitter through the BRDF of the unresolved slopes.
-    let glint = |disc: &brine_sky::Disc| {
+    // Sun glint and moon glitter through the BRDF of the unresolved slopes: a point source where
+    // the disc's image in slope space, q = r/(2 (v·h) h_z² σ_min), is small (the point form errs
+    // by O(q²) ≤ 10⁻³), the BRDF integrated over the disc on calmer water.
+    let glint = |disc: &brine_sky::Disc, rules: &SunDisc| {
         let l = disc.direction;
         if l.dot(n) > 0.0 && disc.irradiance_rgb != DVec3::ZERO {
-            disc.irradiance_rgb * reflected_sun_radiance(to_local(v), to_local(l), variance, 1.0)
+            let (vl, ll) = (to_local(v), to_local(l));
+            let h = (vl + ll).normalize_or(DVec3::Z);
+            let sigma = variance.sigma_x2().min(variance.sigma_y2()).sqrt();
+            let q = disc.angular_radius / (2.0 * vl.dot(h).max(0.01) * (h.z * h.z).max(0.01) * sigma);
+            let r = if q <= POINT_DISC_Q {
+                reflected_sun_radiance(vl, ll, variance, 1.0)
+            } else {
+                reflected_disc_radiance(vl, ll, variance, 1.0, rules)
+            };
+            disc.irradiance_rgb * r
         } else {
             DVec3::ZERO
         }
     };
-    let sun = glint(world.sky.sun()) + world.sky.moon().map_or(DVec3::ZERO, glint);
+    let sun = glint(world.sky.sun(), &world.discs.0)
+        + world.sky.moon().zip(world.discs.1.as_ref()).map_or(DVec3::ZERO, |(m, d)| glint(m, d));
     cx.lap(Stage::Surface, started);
     let started = cx.clock();
     let below = match refract(d, n, 1.0, WATER_IOR) {

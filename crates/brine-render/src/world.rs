@@ -6,8 +6,8 @@ use brine_foam::{
     SurfaceStatistics, WhitecapLaw,
 };
 use brine_optics::{
-    DarlesWater, DipoleMaterial, JerlovType, RgbBands, SlopeVariance, WATER_IOR, WaterBody, WaterRgb,
-    fresnel_dielectric, hemispherical_fresnel_reflectance,
+    DarlesWater, DipoleMaterial, JerlovType, RgbBands, RoughReflectance, SlopeVariance, SunDisc, WATER_IOR, WaterBody,
+    WaterRgb, fresnel_dielectric, hemispherical_fresnel_reflectance,
 };
 use brine_sky::{CloudParams, MoonParams, Sky, SkyParams};
 use brine_trace::{Method, TraceOptions};
@@ -78,6 +78,9 @@ pub struct World {
     /// Dipole materials of the water per channel (R, G, B) for light through thin crests, when
     /// sub-surface scattering is on.
     pub crest: Option<[DipoleMaterial; 3]>,
+    /// Quadrature rules over the sun's and the moon's discs, for glints on calm water
+    /// (brine-optics `reflected_disc_radiance`).
+    pub discs: (SunDisc, Option<SunDisc>),
     /// Options of the tracer.
     pub trace: TraceOptions,
     /// The camera.
@@ -220,6 +223,13 @@ impl Whitecaps {
             }
         }
     }
+}
+
+/// The rough-surface reflectance table of sea water (brine-optics `RoughReflectance`), built
+/// once per process (it depends only on the index of water).
+pub fn rough_reflectance() -> &'static RoughReflectance {
+    static TABLE: std::sync::OnceLock<RoughReflectance> = std::sync::OnceLock::new();
+    TABLE.get_or_init(|| RoughReflectance::new(WATER_IOR).expect("the index of water is in range"))
 }
 
 /// Mean cosine `g` of the scattering phase function of sea water used by the crest dipole: the
@@ -685,6 +695,10 @@ impl World {
             None
         };
 
+        let discs = (
+            SunDisc::new(sky.sun().angular_radius).map_err(|e| model(&e))?,
+            sky.moon().map(|m| SunDisc::new(m.angular_radius)).transpose().map_err(|e| model(&e))?,
+        );
         let camera = Camera::from_config(&scene.camera);
         let exposure_ev = scene.output.exposure_ev;
         let trace = TraceOptions {
@@ -713,6 +727,7 @@ impl World {
             floor,
             underwater: false,
             crest,
+            discs,
             foam,
             whitecaps,
             spray,
