@@ -2,6 +2,9 @@
 //! waves, the sun below the horizon, a camera under water; and a full moon at night shows a dark
 //! sea with the moon's glitter path under it, not black or NaN.
 
+// A flat calm has the exact normal (0, 1, 0) and exactly no foam: exact comparisons.
+#![allow(clippy::float_cmp)]
+
 use brine_render::scene::SurfaceKind;
 use brine_render::{RenderOptions, Scene, render};
 

@@ -1,6 +1,10 @@
 //! Each phenomenon switch of `[phenomena]` changes the image where its model says it should, and
 //! the EXR output carries the AOVs the frame computed.
 
+// Exact comparisons are the point here: a switch must leave the geometry bit for bit, and the EXR
+// must hold the very f32 values of the frame.
+#![allow(clippy::float_cmp)]
+
 use brine_render::{Frame, RenderOptions, Scene, render, write_frame};
 
 /// A gallery scene at 96 × 54 with a fixed exposure.
