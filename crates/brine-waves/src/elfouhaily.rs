@@ -266,14 +266,17 @@ impl Elfouhaily {
         libm::tanh(Self::A0 + Self::A_P * libm::pow(c / self.c_p, 2.5) + self.a_m * libm::pow(Self::C_M / c, 2.5))
     }
 
-    /// Directional spectrum `Ψ(k, φ) = (1/(2π)) k⁻⁴ (B_l + B_h)(1 + Δ cos 2φ)` (m⁴), Eq. 67.
+    /// Directional spectrum `Ψ(k, φ) = (1/(2π)) k⁻⁴ (B_l + B_h)(1 + Δ(k) cos 2φ)`.
     ///
     /// # Arguments
     /// - `k`: wavenumber (rad m⁻¹), `> 0`.
     /// - `phi`: angle of the wave vector from the wind (rad).
     ///
     /// # Returns
-    /// `Ψ` (m⁴, variance per unit `d²k`); `∫∫ Ψ k dk dφ = m₀`.
+    /// `Ψ` (m⁴, variance per unit `d²k`); `∫∫ Ψ k dk dφ = m₀`; `0` for `k ≤ 0`.
+    ///
+    /// # References
+    /// Elfouhaily et al. 1997, Eq. 67; equation sheet §4.
     pub fn directional(&self, k: f64, phi: f64) -> f64 {
         if !(k > 0.0) {
             return 0.0;

@@ -21,7 +21,7 @@ pub const FFT_MAX_LOOP_PERIOD_S: f64 = 1.0e6;
 /// a quarter of its tile along either axis), cascade `c − 1` those below. A band that starts at
 /// index 4 keeps at least 4 waves per tile (so one tile's repetition is not a single wave) while
 /// leaving the lower cascade `4 L_{c−1}/L_c` indices, far below its Nyquist index `N/2` for the
-/// default ratio (27 of 128 at `N = 256`: 9 samples per wavelength for its bilinear interpolant).
+/// default ratio (27 of 128 at `N = 256`: 9 samples per wavelength for its cubic B-spline).
 pub const FFT_CASCADE_CUT_INDEX: f64 = 4.0;
 
 /// Default ratio `L_c/L_{c+1}` of successive tile sizes: `φ⁴ = (7 + 3√5)/2 ≈ 6.854` (`φ` the

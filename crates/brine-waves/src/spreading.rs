@@ -10,12 +10,35 @@ use crate::error::{WaveError, check};
 /// Implemented by [`CosineTwoS`] (Longuet-Higgins / Mitsuyasu / Hasselmann), [`DonelanBanner`],
 /// [`CosineSquared`] and [`crate::ElfouhailySpreading`].
 pub trait Spreading {
-    /// `D(θ; ω)` (rad⁻¹), `θ` in `(−π, π]` relative to the wind, `ω` in rad s⁻¹.
+    /// Directional spreading density `D(θ; ω)`: the share of the variance at frequency `ω` per
+    /// radian of direction, `∫_{−π}^{π} D(θ; ω) dθ = 1`.
+    ///
+    /// # Arguments
+    /// - `theta`: direction relative to the mean wind direction (rad), `(−π, π]`.
+    /// - `omega`: angular frequency (rad s⁻¹), `> 0`.
+    ///
+    /// # Returns
+    /// `D` (rad⁻¹), `≥ 0`.
+    ///
+    /// # References
+    /// Equation sheet §1 (each implementation cites its law).
     fn density(&self, theta: f64, omega: f64) -> f64;
 
-    /// Draws an angle from `D(·; ω)` by inverting its cumulative distribution, tabulated on 2048
-    /// trapezoids, at the uniform variate `u ∈ [0, 1)`. Deterministic for a given `u`.
-    /// Implementations with a closed-form distribution override it.
+    /// Draws a direction from `D(·; ω)`: the inverse `C⁻¹(u)` of the cumulative distribution
+    /// `C(θ) = ∫_{−π}^{θ} D(θ'; ω) dθ'`, here tabulated on 2048 trapezoids and interpolated
+    /// linearly. Deterministic for a given `u`; implementations with a closed-form distribution
+    /// override it.
+    ///
+    /// # Arguments
+    /// - `omega`: angular frequency (rad s⁻¹), `> 0`.
+    /// - `u`: uniform variate, `[0, 1]` (clamped).
+    ///
+    /// # Returns
+    /// `θ` (rad) relative to the mean wind direction, in `[−π, π]` (`[−π/2, π/2]` for down-wind
+    /// laws).
+    ///
+    /// # References
+    /// Inverse-transform sampling (Devroye 1986, *Non-Uniform Random Variate Generation*, §II.2).
     fn sample(&self, omega: f64, u: f64) -> f64 {
         const N: usize = 2048;
         let h = 2.0 * PI / N as f64;

@@ -172,9 +172,17 @@ impl Trochoid {
         self.steepness * self.amplitude
     }
 
-    /// A point of the profile in the wave's own frame, at particle phase `θ` (rad):
-    /// `(s/k, A cos θ)` with `s = θ − Q sin θ`, i.e. horizontal position along `d̂` (m) and height
-    /// (m).
+    /// A point of the profile in the wave's own frame at particle phase `θ`: `(s/k, A cos θ)` with
+    /// `s = θ − Q sin θ`.
+    ///
+    /// # Arguments
+    /// - `theta`: particle phase `θ` (rad), finite.
+    ///
+    /// # Returns
+    /// `(position along d̂ (m), height (m))`.
+    ///
+    /// # References
+    /// Equation sheet §1 (the trochoid profile); Thon & Ghazanfarpour 2002.
     pub fn profile_point(&self, theta: f64) -> (f64, f64) {
         ((theta - self.steepness * theta.sin()) / self.wavenumber, self.amplitude * theta.cos())
     }

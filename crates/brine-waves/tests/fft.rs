@@ -345,8 +345,8 @@ fn displaced_height(ocean: &FftOcean, t: f64, lambda: f64, x: f64, z: f64) -> f6
 #[test]
 fn the_resampled_displaced_surface_converges_at_second_order() {
     // Cascade 0's band does not depend on N: doubling N halves the mesh spacing of the same
-    // surface, and the error of the traced surface (linear on the displaced mesh, then bilinear
-    // on the grid) must fall about 4×. Measured: 0.075, 0.025, 0.0085, 0.0020 m at N = 64, 128,
+    // surface, and the error of the traced surface (linear on the displaced mesh, then the cubic
+    // B-spline on the grid) must fall about 4×. Measured: 0.075, 0.025, 0.0085, 0.0020 m at N = 64, 128,
     // 256, 512 (ratios 0.33, 0.35, 0.23: the asymptotic 0.25 once the band's shortest waves,
     // 27 cells per tile, have 9 samples or more); the bound 0.3 allows 20 % above it.
     let elf = Elfouhaily::from_fetch(10.0, 1e5).unwrap();
