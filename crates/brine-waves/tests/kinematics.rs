@@ -42,6 +42,10 @@ const LAGRANGE_STEP: f64 = 1e-4;
 /// Tolerance of the Lagrangian route relative to the same velocity scale: the truncation above.
 const LAGRANGE_REL: f64 = 1e-6;
 
+/// Margin (m) of the bisection bracket `[−r, r]` of the particle's offset along `d̂`: the root lies
+/// inside it, and the margin keeps the sign change strict at `|η| = r`.
+const BRACKET_MARGIN_M: f64 = 1e-9;
+
 /// The per-wave displacements add up to the sum's: rounding of at most 12 terms below 20 m.
 const ADDITIVE_ABS: f64 = 1e-12;
 
@@ -87,7 +91,7 @@ fn particle_position(s: &TrochoidSum, d: DVec2, r: f64, u: DVec2, t: f64) -> DVe
         let x = u + eta * d;
         eta - s.displacement(x.x, x.y, t).dot(d)
     };
-    let (mut lo, mut hi) = (-r - 1e-9, r + 1e-9);
+    let (mut lo, mut hi) = (-r - BRACKET_MARGIN_M, r + BRACKET_MARGIN_M);
     for _ in 0..200 {
         let mid = 0.5 * (lo + hi);
         if mid <= lo || mid >= hi {
