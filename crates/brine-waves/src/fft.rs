@@ -88,15 +88,18 @@ pub struct FftRestFields {
 }
 
 impl FftRestFields {
-    /// The Jacobian `J = (1 + λ∂Dₓ/∂x)(1 + λ∂D_z/∂z) − λ²(∂Dₓ/∂z)²` of the map `x = u + λD(u)` at
-    /// grid point `idx` (dimensionless): `J < 1` compressed, `J < 0` folded.
+    /// The Jacobian of the choppy map `x = u + λD(u)` at a grid point,
+    /// `J = (1 + λ∂Dₓ/∂x)(1 + λ∂D_z/∂z) − λ²(∂Dₓ/∂z)²`.
     ///
     /// # Arguments
-    /// - `idx`: grid index `j·N + i`.
+    /// - `idx`: grid index `j·N + i`, `< N²`.
     /// - `choppiness`: `λ ≥ 0`.
     ///
+    /// # Returns
+    /// `J` (dimensionless): `< 1` compressed, `< 0` folded.
+    ///
     /// # References
-    /// Dupuy & Bruneton 2012; equation sheet §10.
+    /// Dupuy & Bruneton 2012; Tessendorf 2001 (choppy waves); equation sheet §10.
     pub fn jacobian(&self, idx: usize, choppiness: f64) -> f64 {
         let l = choppiness;
         (1.0 + l * self.dxx[idx]) * (1.0 + l * self.dzz[idx]) - l * l * self.dxz[idx] * self.dxz[idx]

@@ -271,7 +271,8 @@ impl GerstnerField<'_> {
     /// The rest position (m), the residual `|G|` (m) and the iteration count.
     ///
     /// # References
-    /// Equation sheet §1(b); Nocedal & Wright 2006, *Numerical Optimization*, §11.1 (damped Newton).
+    /// Equation sheet §1(b); Nocedal & Wright 2006, *Numerical Optimization*, ch. 11 (Newton with a
+    /// line search).
     pub fn solve(&self, x: f64, z: f64) -> Inversion {
         self.solve_state(x, z).0
     }

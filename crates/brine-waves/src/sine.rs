@@ -277,7 +277,8 @@ impl SineField<'_> {
     /// `(v_x, v_y, v_z)` (m s⁻¹).
     ///
     /// # References
-    /// Airy linear wave theory (Dean & Dalrymple 1991, *Water Wave Mechanics*, §4.6); equation sheet §1.
+    /// Airy linear wave theory (Dean & Dalrymple 1991, *Water Wave Mechanics for Engineers and
+    /// Scientists*); equation sheet §1.
     pub fn velocity(&self, x: f64, z: f64) -> DVec3 {
         let g = &self.set.geometry;
         let mut v = DVec3::ZERO;

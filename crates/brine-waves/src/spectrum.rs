@@ -107,8 +107,7 @@ pub trait Spectrum {
     /// `m₀` (m²).
     ///
     /// # References
-    /// Equation sheet §4; WMO 1998, *Guide to wave analysis and forecasting*, §2 (spectral
-    /// moments).
+    /// Equation sheet §4; WMO 1998, *Guide to wave analysis and forecasting* (spectral moments).
     fn m0(&self) -> f64 {
         let wp = self.peak_omega();
         simpson_log(|w| self.s_omega(w), MOMENT_LOW * wp, M0_HIGH * wp, MOMENT_PAIRS)
