@@ -1,5 +1,5 @@
 //! One point × N waves: the scalar wave loop against four waves per SIMD lane group, for the
-//! trochoid sum, the sine set and (scalar only) the Gerstner inversion.
+//! trochoid sum, the sine set and the Gerstner inversion.
 //!
 //! Run with `cargo xtask bench waves` (or `cargo bench -p brine-waves --bench surface_eval`).
 
@@ -61,6 +61,7 @@ fn bench(c: &mut Criterion) {
         let gerstner = GerstnerSurface::new(&set(n)).unwrap();
         let f = gerstner.at_time(1.0);
         bench_height(&mut g, "scalar", n, |x, z| f.height(x, z));
+        bench_height(&mut g, "lanes", n, |x, z| f.height_lanes(x, z));
     }
     g.finish();
 }

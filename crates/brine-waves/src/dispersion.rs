@@ -254,13 +254,35 @@ mod tests {
     use super::*;
     use std::f64::consts::{PI, TAU};
 
+    /// `8.0030` s is printed to 4 decimals: half a unit is 5×10⁻⁵ s; 10⁻⁴ leaves room for the
+    /// rounding of `√(2πλ/g)` in the reference.
+    const PRINTED_4_DIGITS_S: f64 = 1e-4;
+
+    /// A few ulp of closed forms that must agree to rounding.
+    const ROUND_REL: f64 = 1e-14;
+
+    /// Central difference with `h = 10⁻⁵ k`: truncation `O(h²ω''')` ≈ 10⁻¹⁰ relative, rounding
+    /// `ε ω/h` ≈ 10⁻¹¹ relative; 10⁻⁷ is loose.
+    const GROUP_FD_REL: f64 = 1e-7;
+
+    /// `kh = 10⁻⁴`: the shallow-water limit `ω = k√(gh)` has relative corrections `(kh)²/6`
+    /// ≈ 2×10⁻⁹ (and `(kh)²/2` for `c_g`).
+    const SHALLOW_REL: f64 = 1e-8;
+
+    /// Elfouhaily's `c_m = 0.23` m/s is printed to 2 digits; `√(2g/k_m)` = 0.2303.
+    const PRINTED_2_DIGITS_M_S: f64 = 5e-4;
+
+    /// `λ_m = 1.705` cm for sea water, printed to 4 digits (in m: 10⁻⁵; 10⁻⁴ m covers the spread of
+    /// sea-water surface tensions and densities in the literature).
+    const LAMBDA_M_ABS: f64 = 1e-4;
+
     #[test]
     fn a_100_m_wave_has_an_8_s_period() {
         // λ = 100 m ⇒ T = √(2πλ/g) = √(628.3185/9.81) = 8.0030 s.
         let k = 2.0 * PI / 100.0;
         let t = 2.0 * PI / omega_deep_water(k);
-        assert!((t - 8.0030).abs() < 1e-4, "T = {t}");
-        assert!((wavenumber_deep_water(omega_deep_water(k)) - k).abs() < 1e-15);
+        assert!((t - 8.0030).abs() < PRINTED_4_DIGITS_S, "T = {t}");
+        assert!((wavenumber_deep_water(omega_deep_water(k)) - k).abs() < ROUND_REL * k);
     }
 
     /// Newton is stopped at a relative step of 10⁻¹⁴; allow a few ulps more.
@@ -290,8 +312,7 @@ mod tests {
             for k in [0.01, 0.3, 2.0, 50.0, 400.0, 3000.0] {
                 let h = 1e-5 * k;
                 let fd = (d.omega(k + h) - d.omega(k - h)) / (2.0 * h);
-                // Central difference error O(h²ω''') ≈ 1e-10 relative at h = 1e-5 k.
-                assert!((d.group_velocity(k) / fd - 1.0).abs() < 1e-7, "{d:?} k = {k}");
+                assert!((d.group_velocity(k) / fd - 1.0).abs() < GROUP_FD_REL, "{d:?} k = {k}");
             }
         }
     }
@@ -300,11 +321,11 @@ mod tests {
     fn deep_and_shallow_limits() {
         // kh ≫ 1: finite depth equals deep water; kh ≪ 1: ω = k √(g h).
         let d = Dispersion::finite_depth(1000.0).unwrap();
-        assert!((d.omega(1.0) / omega_deep_water(1.0) - 1.0).abs() < 1e-15);
+        assert!((d.omega(1.0) / omega_deep_water(1.0) - 1.0).abs() < ROUND_REL);
         let s = Dispersion::finite_depth(1.0).unwrap();
         let k = 1e-4;
-        assert!((s.omega(k) / (k * G.sqrt()) - 1.0).abs() < 1e-8);
-        assert!((s.group_velocity(k) / G.sqrt() - 1.0).abs() < 1e-7);
+        assert!((s.omega(k) / (k * G.sqrt()) - 1.0).abs() < SHALLOW_REL);
+        assert!((s.group_velocity(k) / G.sqrt() - 1.0).abs() < SHALLOW_REL);
     }
 
     #[test]
@@ -313,13 +334,13 @@ mod tests {
         // for Elfouhaily's k_m = 370 rad/m: c_m = √(2g/k_m) = 0.2303 m/s (their c_m = 0.23).
         let d = Dispersion::elfouhaily();
         let c_m = d.phase_speed(ELFOUHAILY_K_M);
-        assert!((c_m - (2.0 * G / ELFOUHAILY_K_M).sqrt()).abs() < 1e-12);
-        assert!((c_m - 0.23).abs() < 5e-4, "c_m = {c_m}");
+        assert!((c_m - (2.0 * G / ELFOUHAILY_K_M).sqrt()).abs() < ROUND_REL * c_m);
+        assert!((c_m - 0.23).abs() < PRINTED_2_DIGITS_M_S, "c_m = {c_m}");
         assert!(d.phase_speed(0.9 * ELFOUHAILY_K_M) > c_m && d.phase_speed(1.1 * ELFOUHAILY_K_M) > c_m);
         // A 1.73 cm ripple: λ_m = 2π/k_m for sea water.
         let sea = Dispersion::capillary_gravity(f64::INFINITY, SEA_WATER_SURFACE_TENSION, SEA_WATER_DENSITY).unwrap();
         let k_m = (G / sea.capillarity()).sqrt();
-        assert!((TAU / k_m - 0.01705).abs() < 1e-4, "λ_m = {}", TAU / k_m);
+        assert!((TAU / k_m - 0.01705).abs() < LAMBDA_M_ABS, "λ_m = {}", TAU / k_m);
     }
 
     #[test]

@@ -32,6 +32,18 @@ pub enum WaveError {
         /// The largest accepted `Σ Qᵢ`.
         limit: f64,
     },
+    /// Two options that are each valid but do not work together.
+    #[error("{option} = {value} cannot be used with {other}: {reason}")]
+    IncompatibleOptions {
+        /// The option refused (as named in the docs).
+        option: &'static str,
+        /// Its value, in words.
+        value: &'static str,
+        /// The option it conflicts with, and that option's value.
+        other: &'static str,
+        /// Why, and what to use instead.
+        reason: &'static str,
+    },
 }
 
 /// Returns `Ok(value)` if `ok`, else the [`WaveError::OutOfRange`] naming the parameter.

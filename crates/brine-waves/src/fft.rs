@@ -88,15 +88,18 @@ pub struct FftRestFields {
 }
 
 impl FftRestFields {
-    /// The Jacobian `J = (1 + λ∂Dₓ/∂x)(1 + λ∂D_z/∂z) − λ²(∂Dₓ/∂z)²` of the map `x = u + λD(u)` at
-    /// grid point `idx` (dimensionless): `J < 1` compressed, `J < 0` folded.
+    /// The Jacobian of the choppy map `x = u + λD(u)` at a grid point,
+    /// `J = (1 + λ∂Dₓ/∂x)(1 + λ∂D_z/∂z) − λ²(∂Dₓ/∂z)²`.
     ///
     /// # Arguments
-    /// - `idx`: grid index `j·N + i`.
+    /// - `idx`: grid index `j·N + i`, `< N²`.
     /// - `choppiness`: `λ ≥ 0`.
     ///
+    /// # Returns
+    /// `J` (dimensionless): `< 1` compressed, `< 0` folded.
+    ///
     /// # References
-    /// Dupuy & Bruneton 2012; equation sheet §10.
+    /// Dupuy & Bruneton 2012; Tessendorf 2001 (choppy waves); equation sheet §10.
     pub fn jacobian(&self, idx: usize, choppiness: f64) -> f64 {
         let l = choppiness;
         (1.0 + l * self.dxx[idx]) * (1.0 + l * self.dzz[idx]) - l * l * self.dxz[idx] * self.dxz[idx]
@@ -518,6 +521,17 @@ mod tests {
     use super::*;
     use crate::Elfouhaily;
 
+    /// FFT rounding: ~10⁻¹⁵ of the sum of `|h̃|` times the largest factor (`k ≤ 0.6` rad/m here,
+    /// at most 1 for `D`); 10⁻¹² with margin for the `N log N` butterflies.
+    const FFT_ROUNDING_REL: f64 = 1e-12;
+
+    /// `ω/(2π/T)` of a looped mode is an integer up to the rounding of `ω` (~10⁻¹⁵ relative of
+    /// quotients up to ~10⁵).
+    const MULTIPLE_ABS: f64 = 1e-9;
+
+    /// Rounding of a frequency (rad/s, below 100).
+    const ROUND_ABS: f64 = 1e-12;
+
     fn small_ocean(n: usize, loop_period: Option<f64>) -> FftOcean {
         let e = Elfouhaily::fully_developed(8.0).unwrap();
         let d = e.spreading(crate::Directions::Downwind);
@@ -576,10 +590,8 @@ mod tests {
                     f.dxz[idx],
                 ];
                 for q in 0..8 {
-                    // FFT rounding: ~10⁻¹⁵ of the sum of |h̃| times the largest factor (k ≤ 0.6 rad/m
-                    // here, at most 1 for D).
                     assert!(
-                        (got[q] - d[q]).abs() < 1e-12 * scale,
+                        (got[q] - d[q]).abs() < FFT_ROUNDING_REL * scale,
                         "cascade {c} field {q} at ({i}, {j}): {} vs {}",
                         got[q],
                         d[q]
@@ -609,10 +621,10 @@ mod tests {
         for c in 0..2 {
             for m in &ocean.cascades[c].modes {
                 let q = m.omega / base;
-                assert!((q - q.round()).abs() < 1e-9 && q >= 1.0 - 1e-12);
+                assert!((q - q.round()).abs() < MULTIPLE_ABS && q >= 1.0 - ROUND_ABS);
                 // Rounded to the nearest multiple (or 1): off by at most half a step.
                 let exact = ocean.dispersion.omega(m.k);
-                assert!((m.omega - exact).abs() <= 0.5 * base + 1e-12 || (m.omega - base).abs() < 1e-12);
+                assert!((m.omega - exact).abs() <= 0.5 * base + ROUND_ABS || (m.omega - base).abs() < ROUND_ABS);
             }
         }
     }

@@ -99,35 +99,68 @@ impl FftCascade {
         a + (b - a) * c.t
     }
 
-    /// Traced height `s(x, z)` (m): the interpolating cubic B-spline of the grid heights.
+    /// Traced height of the cascade, `s(x, z) = Σᵢⱼ cᵢⱼ β₃(x/Δ − i) β₃(z/Δ − j)`: the interpolating cubic
+    /// B-spline of the grid heights.
     ///
     /// # Arguments
     /// - `x`, `z`: horizontal position (m), finite (periodic with the tile).
+    ///
+    /// # Returns
+    /// `s` (m), within [`FftCascade::height_bounds`].
+    ///
+    /// # References
+    /// Unser 1999, "Splines: a perfect fit for signal and image processing", IEEE SPM 16(6) (cubic
+    /// B-spline interpolation); Tessendorf 2001 (the field).
     #[inline]
     pub fn height(&self, x: f64, z: f64) -> f64 {
         self.spline.value(x, z)
     }
 
-    /// Gradient `∇s` of the traced height at `(x, z)` (dimensionless): the spline's exact
-    /// derivative.
+    /// Gradient of the traced height, `∇s` (the spline's exact derivative).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite (periodic with the tile).
+    ///
+    /// # Returns
+    /// `(∂s/∂x, ∂s/∂z)` (dimensionless), `|∂s/∂x| ≤ a`, `|∂s/∂z| ≤ b` ([`FftCascade::max_axis_slopes`]).
+    ///
+    /// # References
+    /// Unser 1999 (derivative of a B-spline).
     #[inline]
     pub fn traced_gradient(&self, x: f64, z: f64) -> DVec2 {
         let (_, gx, gz) = self.spline.value_and_gradient(x, z);
         DVec2::new(gx, gz)
     }
 
-    /// The traced height (m) and its derivative along the horizontal direction `(dₓ, d_z)` at
-    /// `(x, z)`.
+    /// The traced height and its derivative along a horizontal direction, `(s, ∇s·(dₓ, d_z))`.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite (periodic with the tile).
+    /// - `dx`, `dz`: horizontal direction components (any length; the derivative scales with it).
+    ///
+    /// # Returns
+    /// `(s (m), ∇s·d (dimensionless per unit of d))`.
+    ///
+    /// # References
+    /// Unser 1999.
     #[inline]
     pub fn height_and_derivative(&self, x: f64, z: f64, dx: f64, dz: f64) -> (f64, f64) {
         let (s, gx, gz) = self.spline.value_and_gradient(x, z);
         (s, gx * dx + gz * dz)
     }
 
-    /// Shading gradient `(∂h/∂x, ∂h/∂z)` at `(x, z)`: the bilinear interpolant of the displaced
-    /// surface's exact slopes `M⁻¹∇h` at the grid points (clamped to
-    /// [`crate::FFT_MAX_SHADING_SLOPE`] near folds). It agrees with [`FftCascade::traced_gradient`]
-    /// to the interpolation error of the grid.
+    /// Shading gradient: the bilinear interpolant of the displaced surface's exact slopes `M⁻¹∇h` at
+    /// the grid points (clamped to [`crate::FFT_MAX_SHADING_SLOPE`] near folds). It agrees with
+    /// [`FftCascade::traced_gradient`] to the interpolation error of the grid.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite (periodic with the tile).
+    ///
+    /// # Returns
+    /// `(∂h/∂x, ∂h/∂z)` (dimensionless).
+    ///
+    /// # References
+    /// Tessendorf 2001 (the slope and choppy-displacement sums); equation sheet §1.
     #[inline]
     pub fn gradient(&self, x: f64, z: f64) -> DVec2 {
         let c = self.cell(x, z);
@@ -144,7 +177,17 @@ impl FftCascade {
         DVec2::new(comp(0), comp(1))
     }
 
-    /// Jacobian `J` of the cascade's horizontal map at `(x, z)` (bilinear, dimensionless).
+    /// Jacobian of the cascade's horizontal map `x = u + λD(u)`, bilinear between its grid values
+    /// `(1 + λDₓₓ)(1 + λD_zz) − λ²Dₓ_z²`.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite (periodic with the tile).
+    ///
+    /// # Returns
+    /// `J` (dimensionless): `< 1` compressed, `< 0` folded.
+    ///
+    /// # References
+    /// Dupuy & Bruneton 2012; Tessendorf 2001 (choppy waves); equation sheet §10.
     #[inline]
     pub fn jacobian(&self, x: f64, z: f64) -> f64 {
         let c = self.cell(x, z);
@@ -239,10 +282,19 @@ impl FftCascade {
         self.uncovered
     }
 
-    /// Distance `T` (m) along a ray of direction `d̂` at which a pixel of angular width
-    /// `footprint_angle` (rad) covers the cascade's longest wavelength `λ`:
-    /// `T = λ √max(|d_y|, 0.05)/α` (the footprint `αt` stretched by `1/√|d_y|`, the geometric mean
-    /// of its two axes on the sea, as the renderer's footprint).
+    /// Distance along a ray at which a pixel footprint covers the cascade's longest wavelength `λ`:
+    /// `T = λ √max(|d_y|, 0.05)/α` (the footprint `αt` stretched by `1/√|d_y|`, the geometric mean of its
+    /// two axes on the sea, as the renderer's footprint).
+    ///
+    /// # Arguments
+    /// - `direction`: unit ray direction `d̂`.
+    /// - `footprint_angle`: pixel angular width `α` (rad), `> 0`.
+    ///
+    /// # Returns
+    /// `T` (m).
+    ///
+    /// # References
+    /// Darles et al. 2007 (pixel-footprint antialiasing); Bruneton et al. 2010 (fading).
     #[inline]
     pub fn fade_distance(&self, direction: DVec3, footprint_angle: f64) -> f64 {
         self.longest_wavelength() * direction.y.abs().max(MIN_GRAZING).sqrt() / footprint_angle
@@ -341,28 +393,60 @@ impl FftFrame {
         &self.cascades[c]
     }
 
-    /// Traced height `h̄(x, z) = Σ_c s_c(x, z)` (m) at horizontal position `(x, z)` (m).
+    /// Traced height of the sea, `h̄(x, z) = Σ_c s_c(x, z)`.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite (periodic with the tile).
+    ///
+    /// # Returns
+    /// `h̄` (m), within [`FftFrame::height_bounds`].
+    ///
+    /// # References
+    /// Tessendorf 2001; Li Ying et al. 2018, §2.2.
     #[inline]
     pub fn height(&self, x: f64, z: f64) -> f64 {
         self.cascades.iter().map(|c| c.height(x, z)).sum()
     }
 
-    /// Shading gradient `(∂h/∂x, ∂h/∂z)` at `(x, z)`: the sum of the cascades' (see
-    /// [`FftCascade::gradient`]).
+    /// Shading gradient of the sea, `Σ_c ∇h_c` (each cascade's [`FftCascade::gradient`]).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite (periodic with the tile).
+    ///
+    /// # Returns
+    /// `(∂h/∂x, ∂h/∂z)` (dimensionless).
+    ///
+    /// # References
+    /// Tessendorf 2001 (the slope sum).
     #[inline]
     pub fn gradient(&self, x: f64, z: f64) -> DVec2 {
         self.cascades.iter().map(|c| c.gradient(x, z)).sum()
     }
 
-    /// Upward unit shading normal `(−∂h/∂x, 1, −∂h/∂z)/‖·‖` at `(x, z)`.
+    /// Upward unit shading normal `(−∂h/∂x, 1, −∂h/∂z)/√(1 + |∇h|²)`.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite (periodic with the tile).
+    ///
+    /// # Returns
+    /// The normal (unit, `n_y > 0`).
+    ///
+    /// # References
+    /// Equation sheet §1 (normal of a height field).
     #[inline]
     pub fn normal(&self, x: f64, z: f64) -> DVec3 {
         let g = self.gradient(x, z);
         DVec3::new(-g.x, 1.0, -g.y).normalize()
     }
 
-    /// Jacobian of the sea's horizontal map at `(x, z)`, `J ≈ 1 + Σ_c (J_c − 1)` (dimensionless):
-    /// the cascades' products are neglected, as in Dupuy & Bruneton's whitecap statistics.
+    /// Jacobian of the sea's horizontal map, `J ≈ 1 + Σ_c (J_c − 1)`: the cascades' cross products are
+    /// neglected, as in Dupuy & Bruneton's whitecap statistics.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite (periodic with the tile).
+    ///
+    /// # Returns
+    /// `J` (dimensionless).
     ///
     /// # References
     /// Dupuy & Bruneton 2012; equation sheet §10 (`μ = Σ⟨kᵢ⟩`, cross-cascade products neglected).
@@ -381,12 +465,22 @@ impl FftFrame {
         self.cascades.iter().map(|c| c.spline.max_slope()).sum()
     }
 
-    /// The fade weight `smoothstep(1, 1.5, T_c/t)` of cascade `c` at distance `t` (m) along a ray
-    /// of direction `d̂` traced with a pixel footprint of `footprint_angle` rad (1 when the angle is
-    /// 0), `T_c` its [`FftCascade::fade_distance`].
+    /// The fade weight `w_c = smoothstep(1, 1.5, T_c/t)` of cascade `c`, `T_c` its
+    /// [`FftCascade::fade_distance`] (1 when the footprint angle is 0).
+    ///
+    /// # Arguments
+    /// - `c`: cascade index, `< cascade_count()`.
+    /// - `direction`: unit ray direction; `footprint_angle`: pixel angular width (rad, `≥ 0`).
+    /// - `t`: distance along the ray (m), `≥ 0`.
+    ///
+    /// # Returns
+    /// `w_c` (dimensionless, in `[0, 1]`).
     ///
     /// # Panics
     /// If `c ≥ cascade_count()`.
+    ///
+    /// # References
+    /// Bruneton et al. 2010 (seamless transition); equation sheet §1.
     pub fn fade_weight(&self, c: usize, direction: DVec3, footprint_angle: f64, t: f64) -> f64 {
         if footprint_angle > 0.0 {
             footprint_weight(self.cascades[c].fade_distance(direction, footprint_angle), t)

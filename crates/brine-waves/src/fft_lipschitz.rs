@@ -16,7 +16,10 @@ use glam::DVec3;
 
 use crate::FftFrame;
 
-/// Relative bound of the rounding of one f64 bilinear evaluation (a few ulps of the heights).
+/// Relative bound (of the summed cascade height bounds) of the rounding of one f64 evaluation of
+/// the cascades' cubic B-splines: each is 16 non-negative weights summing to 1 times coefficients
+/// within the cascade's height bound, so about 20 roundings of terms below it (~2×10⁻¹⁵), with
+/// margin.
 const EVALUATION_ROUNDING: f64 = 1e-14;
 
 impl LipschitzSum for FftFrame {

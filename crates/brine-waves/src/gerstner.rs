@@ -3,12 +3,17 @@
 use glam::{DVec2, DVec3};
 
 use crate::error::WaveError;
+use crate::gerstner_lanes::{self, LaneState, LaneWaves};
 use crate::{TrochoidSet, WaveSurface};
 
 /// Absolute part of the inversion tolerance (m): the residual `|u + D(u) − x|` the Newton solve
 /// of [`GerstnerField::solve`] reaches. The relative part `10⁻¹⁴ (|x| + Σ Aᵢ)` covers rounding
 /// in far-away coordinates.
 pub const GERSTNER_TOLERANCE_M: f64 = 1e-12;
+
+/// Relative part of the inversion tolerance: the stopping rule is
+/// `|u + D(u) − x| ≤ GERSTNER_TOLERANCE_M + GERSTNER_TOLERANCE_REL (|x| + Σ Aᵢ)`.
+pub const GERSTNER_TOLERANCE_REL: f64 = 1e-14;
 
 /// Iteration cap of the inversion (2–3 iterations are usual; the property tests never reach it).
 pub const GERSTNER_MAX_ITERATIONS: usize = 64;
@@ -26,12 +31,20 @@ pub const GERSTNER_MAX_ITERATIONS: usize = 64;
 /// `∇ₓh = J⁻¹ ∇ᵤh`, `|∇ₓh| ≤ Σ kᵢAᵢ/(1 − Σ Qᵢ)` (the conservative bound of the equation sheet, `Q_Σ/(1 − Q_Σ)`
 /// when `Qᵢ = kᵢAᵢ`; for one wave it exceeds the exact `Q/√(1 − Q²)`).
 ///
+/// [`GerstnerField::height`] runs the inversion's passes over the waves one at a time;
+/// [`GerstnerField::height_lanes`] (and [`WaveSurface::heights`]) four at a time in
+/// `wide::f64x4` lanes, with the same Newton iteration and stopping rule.
+///
 /// # References
 /// Gerstner F. 1802; Tessendorf 2001, §3.2; Bruneton E., Neyret F., Holzschuch N. 2010,
 /// "Real-time realistic ocean lighting using seamless transitions from geometry to BRDF", CGF
 /// 29(2); equation sheet §1(b) and §10.
+///
+/// The wave arrays are padded to a multiple of four with inert waves (`A = Q = 0`, `k = 0`) for
+/// the SIMD passes; the scalar passes stop at the real count.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct GerstnerSurface {
+    n: usize,
     kx: Vec<f64>,
     kz: Vec<f64>,
     omega: Vec<f64>,
@@ -67,17 +80,23 @@ impl GerstnerSurface {
             s.total_amplitude += w.amplitude();
             s.total_ka += k * w.amplitude();
         }
+        s.n = s.kx.len();
+        while !s.kx.len().is_multiple_of(4) {
+            for v in [&mut s.kx, &mut s.kz, &mut s.omega, &mut s.phase, &mut s.amplitude, &mut s.q_over_k2] {
+                v.push(0.0);
+            }
+        }
         Ok(s)
     }
 
     /// Number of waves.
     pub fn len(&self) -> usize {
-        self.kx.len()
+        self.n
     }
 
     /// `true` for a flat sea.
     pub fn is_empty(&self) -> bool {
-        self.kx.is_empty()
+        self.n == 0
     }
 
     /// `Σ Qᵢ` (dimensionless), below 0.99.
@@ -90,7 +109,10 @@ impl GerstnerSurface {
         self.total_amplitude
     }
 
-    /// The Lipschitz constant of the height field, `Σ kᵢAᵢ/(1 − Σ Qᵢ)` (dimensionless).
+    /// The Lipschitz constant of the height field, `L = Σ kᵢAᵢ/(1 − Σ Qᵢ)`.
+    ///
+    /// # Returns
+    /// `L` (dimensionless).
     ///
     /// # References
     /// Equation sheet §1(b) (derived: `|∇ᵤh| ≤ Σ kA`, `‖J⁻¹‖ ≤ 1/(1 − ΣQ)`).
@@ -127,15 +149,41 @@ struct State {
     velocity: DVec3,
 }
 
-impl State {
+/// The part of a rest-position state the Newton solve uses.
+trait RestState {
+    /// `D(u)` (m).
+    fn displacement(&self) -> DVec2;
+    /// `(jxx, jxz, jzz)` of the symmetric Jacobian of `u ↦ u + D(u)`.
+    fn jacobian(&self) -> (f64, f64, f64);
+
+    /// `det J`.
     fn det(&self) -> f64 {
-        self.jxx * self.jzz - self.jxz * self.jxz
+        let (xx, xz, zz) = self.jacobian();
+        xx * zz - xz * xz
     }
 
     /// `J⁻¹ v`.
     fn solve(&self, v: DVec2) -> DVec2 {
-        let det = self.det();
-        DVec2::new(self.jzz * v.x - self.jxz * v.y, self.jxx * v.y - self.jxz * v.x) / det
+        let (xx, xz, zz) = self.jacobian();
+        DVec2::new(zz * v.x - xz * v.y, xx * v.y - xz * v.x) / self.det()
+    }
+}
+
+impl RestState for State {
+    fn displacement(&self) -> DVec2 {
+        self.displacement
+    }
+    fn jacobian(&self) -> (f64, f64, f64) {
+        (self.jxx, self.jxz, self.jzz)
+    }
+}
+
+impl RestState for LaneState {
+    fn displacement(&self) -> DVec2 {
+        self.displacement
+    }
+    fn jacobian(&self) -> (f64, f64, f64) {
+        (self.jxx, self.jxz, self.jzz)
     }
 }
 
@@ -191,32 +239,69 @@ impl GerstnerField<'_> {
         st
     }
 
-    /// The surface point of the particle at rest position `u` (m): `(u + D(u), h(u))` as
-    /// `(x, y, z)`.
+    /// The surface point of the particle at rest position `u`, `P(u) = (u + D(u), Σ Aᵢ cos φᵢ)`.
+    ///
+    /// # Arguments
+    /// - `u`: rest position (m), finite.
+    ///
+    /// # Returns
+    /// `(x, y, z)` (m).
+    ///
+    /// # References
+    /// Equation sheet §1(b).
     pub fn forward(&self, u: DVec2) -> DVec3 {
         let st = self.state(u);
         let x = u + st.displacement;
         DVec3::new(x.x, st.height, x.y)
     }
 
-    /// Inverts the horizontal displacement: the rest position `u` whose particle is above `(x, z)`.
+    /// Inverts the horizontal displacement: the rest position `u` with `u + D(u) = x`, whose particle
+    /// is above `(x, z)`.
     ///
-    /// Damped Newton on `G(u) = u + D(u) − x` from `u₀ = x − D(x)`: each step `J⁻¹G` is halved
-    /// until `|G|` decreases (at most 30 halvings; if none decreases, a fixed-point step
-    /// `u ← x − D(u)`, a contraction of rate `Σ Qᵢ`, is taken instead). Stops when
-    /// `|G| ≤ GERSTNER_TOLERANCE_M + 10⁻¹⁴ (|x| + Σ Aᵢ)` or after [`GERSTNER_MAX_ITERATIONS`]
-    /// (2–3 iterations are usual for fitted sets with `Σ Q` up to 0.99).
+    /// Damped Newton on `G(u) = u + D(u) − x` from `u₀ = x − D(x)`: each step `J⁻¹G` is halved until
+    /// `|G|` decreases (at most 30 halvings; if none decreases, a fixed-point step `u ← x − D(u)`, a
+    /// contraction of rate `Σ Qᵢ`, is taken instead). Stops when
+    /// `|G| ≤ GERSTNER_TOLERANCE_M + GERSTNER_TOLERANCE_REL (|x| + Σ Aᵢ)` or after
+    /// [`GERSTNER_MAX_ITERATIONS`] (2–3 iterations are usual for fitted sets with `Σ Q` up to 0.99).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite.
+    ///
+    /// # Returns
+    /// The rest position (m), the residual `|G|` (m) and the iteration count.
+    ///
+    /// # References
+    /// Equation sheet §1(b); Nocedal & Wright 2006, *Numerical Optimization*, ch. 11 (Newton with a
+    /// line search).
     pub fn solve(&self, x: f64, z: f64) -> Inversion {
         self.solve_state(x, z).0
     }
 
     /// [`GerstnerField::solve`], also returning the waves' state at the rest position.
     fn solve_state(&self, x: f64, z: f64) -> (Inversion, State) {
+        self.invert(x, z, |u| self.displacement_at_rest(u), |u| self.state(u))
+    }
+
+    /// The padded wave arrays for the SIMD passes.
+    fn lanes(&self) -> LaneWaves<'_> {
+        let s = self.surface;
+        LaneWaves { kx: &s.kx, kz: &s.kz, offset: &self.offset, amplitude: &s.amplitude, q_over_k2: &s.q_over_k2 }
+    }
+
+    /// The damped Newton inversion of [`GerstnerField::solve`], over any evaluation of the waves:
+    /// `first(u)` is `D(u)` (for the first guess), `state(u)` everything a step needs.
+    fn invert<S: RestState>(
+        &self,
+        x: f64,
+        z: f64,
+        first: impl FnOnce(DVec2) -> DVec2,
+        state: impl Fn(DVec2) -> S,
+    ) -> (Inversion, S) {
         let target = DVec2::new(x, z);
-        let tol = GERSTNER_TOLERANCE_M + 1e-14 * (target.length() + self.surface.total_amplitude);
-        let mut u = target - self.displacement_at_rest(target);
-        let mut st = self.state(u);
-        let mut g = u + st.displacement - target;
+        let tol = GERSTNER_TOLERANCE_M + GERSTNER_TOLERANCE_REL * (target.length() + self.surface.total_amplitude);
+        let mut u = target - first(target);
+        let mut st = state(u);
+        let mut g = u + st.displacement() - target;
         let mut residual = g.length();
         for it in 0..GERSTNER_MAX_ITERATIONS {
             if residual <= tol {
@@ -227,8 +312,8 @@ impl GerstnerField<'_> {
             let mut accepted = false;
             for _ in 0..30 {
                 let cand = u - lambda * step;
-                let cand_st = self.state(cand);
-                let cand_g = cand + cand_st.displacement - target;
+                let cand_st = state(cand);
+                let cand_g = cand + cand_st.displacement() - target;
                 if cand_g.length() < residual {
                     (u, st, g, residual) = (cand, cand_st, cand_g, cand_g.length());
                     accepted = true;
@@ -237,16 +322,79 @@ impl GerstnerField<'_> {
                 lambda *= 0.5;
             }
             if !accepted {
-                u = target - st.displacement;
-                st = self.state(u);
-                g = u + st.displacement - target;
+                u = target - st.displacement();
+                st = state(u);
+                g = u + st.displacement() - target;
                 residual = g.length();
             }
         }
         (Inversion { rest: u, residual, iterations: GERSTNER_MAX_ITERATIONS }, st)
     }
 
-    /// Rest position `u` (m) of the particle above `(x, z)` (see [`GerstnerField::solve`]).
+    /// [`GerstnerField::solve`] with the passes over the waves four at a time in SIMD lanes: the same
+    /// iteration and stopping rule, the sums rounded in another order.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite.
+    ///
+    /// # Returns
+    /// As [`GerstnerField::solve`].
+    ///
+    /// # References
+    /// Equation sheet §1(b).
+    pub fn solve_lanes(&self, x: f64, z: f64) -> Inversion {
+        let w = self.lanes();
+        self.invert(x, z, |u| gerstner_lanes::displacement(w, u), |u| gerstner_lanes::state(w, u)).0
+    }
+
+    /// Height `h(x, z)` (m) with the inversion's passes four waves at a time (`wide::f64x4`):
+    /// the same Newton iteration as [`GerstnerField::height`], its sums rounded in another order.
+    ///
+    /// Both rest positions meet the stopping rule `|u + D(u) − x| ≤ τ`
+    /// (`τ = GERSTNER_TOLERANCE_M + 10⁻¹⁴(|x| + ΣA)`), so they lie within `2τ/(1 − ΣQ)` of each
+    /// other and the heights within `2 τ ΣkA/(1 − ΣQ)` = `2τ L` (`|∇ᵤh| ≤ ΣkA`), plus rounding.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m).
+    ///
+    /// # Returns
+    /// `h` (m).
+    ///
+    /// # References
+    /// Equation sheet §1(b).
+    pub fn height_lanes(&self, x: f64, z: f64) -> f64 {
+        let w = self.lanes();
+        self.invert(x, z, |u| gerstner_lanes::displacement(w, u), |u| gerstner_lanes::state(w, u)).1.height
+    }
+
+    /// Heights at many points, each by [`GerstnerField::height_lanes`].
+    ///
+    /// # Arguments
+    /// - `xs`, `zs`: horizontal positions (m), equal lengths.
+    /// - `out`: receives the heights (m), same length.
+    ///
+    /// # Panics
+    /// If the three slices differ in length.
+    ///
+    /// # References
+    /// Equation sheet §1(b).
+    pub fn heights(&self, xs: &[f64], zs: &[f64], out: &mut [f64]) {
+        assert!(xs.len() == zs.len() && xs.len() == out.len(), "heights: slices differ in length");
+        for ((o, &x), &z) in out.iter_mut().zip(xs).zip(zs) {
+            *o = self.height_lanes(x, z);
+        }
+    }
+
+    /// Rest position `u` of the particle above `(x, z)`, `u + D(u) = (x, z)` ([`GerstnerField::solve`]).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite.
+    ///
+    /// # Returns
+    /// `u` (m).
+    ///
+    /// # References
+    /// Equation sheet §1(b).
     pub fn rest_position(&self, x: f64, z: f64) -> DVec2 {
         self.solve(x, z).rest
     }
@@ -255,28 +403,75 @@ impl GerstnerField<'_> {
         self.solve_state(x, z).1
     }
 
-    /// Height `h(x, z) = Σ Aᵢ cos φᵢ(u)` (m).
+    /// Height of the Gerstner sum, `h(x) = Σ Aᵢ cos φᵢ(u)` at the rest position `u` of `x`, the passes
+    /// over the waves one at a time (the reference for [`GerstnerField::height_lanes`]).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite.
+    ///
+    /// # Returns
+    /// `h` (m), in `[−ΣAᵢ, ΣAᵢ]`.
+    ///
+    /// # References
+    /// Equation sheet §1(b); Bruneton et al. 2010.
     pub fn height(&self, x: f64, z: f64) -> f64 {
         self.state_at(x, z).height
     }
 
-    /// Gradient `∇ₓh = J⁻¹ ∇ᵤh`, `∇ᵤh = −Σ Aᵢ kᵢ d̂ᵢ sin φᵢ` (dimensionless).
+    /// Gradient of the height field, `∇ₓh = J⁻¹ ∇ᵤh` with `∇ᵤh = −Σ Aᵢ kᵢ d̂ᵢ sin φᵢ`.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite.
+    ///
+    /// # Returns
+    /// `∇h` (dimensionless), `|∇h| ≤ Σ kᵢAᵢ/(1 − Σ Qᵢ)`.
+    ///
+    /// # References
+    /// Equation sheet §1(b) (chain rule through the inversion).
     pub fn gradient(&self, x: f64, z: f64) -> DVec2 {
         let st = self.state_at(x, z);
         st.solve(st.grad_u)
     }
 
-    /// Horizontal displacement `D(u)` (m) of the particle above `(x, z)`.
+    /// Horizontal displacement `D(u) = −Σ (Qᵢ/kᵢ) d̂ᵢ sin φᵢ` of the particle above `(x, z)`.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite.
+    ///
+    /// # Returns
+    /// `D` (m).
+    ///
+    /// # References
+    /// Equation sheet §1(b).
     pub fn displacement(&self, x: f64, z: f64) -> DVec2 {
         self.state_at(x, z).displacement
     }
 
-    /// Jacobian `det J(u)` (dimensionless) at the particle above `(x, z)`.
+    /// Jacobian determinant `det J(u)`, `J = I − Σ Qᵢ d̂ᵢd̂ᵢᵀ cos φᵢ`, at the particle above `(x, z)`.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite.
+    ///
+    /// # Returns
+    /// `det J` (dimensionless), `≥ (1 − Σ Qᵢ)²`.
+    ///
+    /// # References
+    /// Dupuy & Bruneton 2012; equation sheet §10.
     pub fn jacobian(&self, x: f64, z: f64) -> f64 {
         self.state_at(x, z).det()
     }
 
-    /// Velocity `Σ ((Qᵢωᵢ/kᵢ) d̂ᵢ cos φᵢ, Aᵢωᵢ sin φᵢ)` (m s⁻¹) of the particle above `(x, z)`.
+    /// Velocity of the particle above `(x, z)`, `Σ ((Qᵢωᵢ/kᵢ) d̂ᵢ cos φᵢ, Aᵢωᵢ sin φᵢ)` (`∂P/∂t` at fixed
+    /// `u`; it satisfies the kinematic condition exactly).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite.
+    ///
+    /// # Returns
+    /// `(v_x, v_y, v_z)` (m s⁻¹).
+    ///
+    /// # References
+    /// Equation sheet §1(b).
     pub fn velocity(&self, x: f64, z: f64) -> DVec3 {
         self.state_at(x, z).velocity
     }
@@ -312,11 +507,7 @@ impl WaveSurface for GerstnerSurface {
     }
 
     fn heights(&self, xs: &[f64], zs: &[f64], t: f64, out: &mut [f64]) {
-        assert!(xs.len() == zs.len() && xs.len() == out.len(), "heights: slices differ in length");
-        let field = self.at_time(t);
-        for ((o, &x), &z) in out.iter_mut().zip(xs).zip(zs) {
-            *o = field.height(x, z);
-        }
+        self.at_time(t).heights(xs, zs, out);
     }
 }
 
@@ -324,6 +515,17 @@ impl WaveSurface for GerstnerSurface {
 mod tests {
     use super::*;
     use crate::{Trochoid, TrochoidSum};
+
+    /// One wave two ways: the inversion's residual (≤ 10⁻¹² m) times the slope (`Q/√(1 − Q²)` =
+    /// 0.75), plus Kepler's 10⁻¹³ in `θ` times `A`: ~10⁻¹² m; 10⁻¹⁰ is loose.
+    const ONE_WAVE_HEIGHT_ABS: f64 = 1e-10;
+
+    /// The gradient and Jacobian move with the rest position by the curvature `k²A/(1 − Q)³`
+    /// (≈ 14 m⁻¹) times its error (~10⁻¹² m): ~10⁻¹¹.
+    const ONE_WAVE_DERIVATIVE_ABS: f64 = 1e-9;
+
+    /// Two sums of the same ≤ 52 terms in different orders: `~52 ε` of `ΣA`, with margin.
+    const SUM_ORDER_REL: f64 = 1e-13;
 
     #[test]
     fn one_wave_is_the_exact_trochoid() {
@@ -334,9 +536,39 @@ mod tests {
         let t = TrochoidSum::new(&set);
         for j in 0..50 {
             let (x, z) = (j as f64 * 0.37 - 9.0, j as f64 * 0.11);
-            assert!((g.height(x, z, 0.4) - t.height(x, z, 0.4)).abs() < 1e-10);
-            assert!((g.gradient(x, z, 0.4) - t.gradient(x, z, 0.4)).length() < 1e-9);
-            assert!((g.jacobian(x, z, 0.4) - t.jacobian(x, z, 0.4)).abs() < 1e-9);
+            assert!((g.height(x, z, 0.4) - t.height(x, z, 0.4)).abs() < ONE_WAVE_HEIGHT_ABS);
+            assert!((g.gradient(x, z, 0.4) - t.gradient(x, z, 0.4)).length() < ONE_WAVE_DERIVATIVE_ABS);
+            assert!((g.jacobian(x, z, 0.4) - t.jacobian(x, z, 0.4)).abs() < ONE_WAVE_DERIVATIVE_ABS);
+        }
+    }
+
+    #[test]
+    fn lanes_agree_with_the_scalar_passes_within_the_derived_bound() {
+        // Fitted sets (ΣQ = 0.9, with 50 and 7 waves: padded to 52 and 8) at 400 points and
+        // several instants. Bound: both inversions meet |u + D(u) − x| ≤ τ, so the heights are
+        // within 2τL (see `height_lanes`), plus the rounding of two sums in different orders,
+        // 10⁻¹³ ΣA.
+        use crate::{CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, fit_trochoids};
+        let pm = PiersonMoskowitz::from_u10(12.0).unwrap();
+        let d = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
+        let o = FitOptions { choppiness: 4.0, ..FitOptions::default() };
+        for n in [50, 7] {
+            let set = fit_trochoids(&pm, &d, n, 17, &o).unwrap();
+            let g = GerstnerSurface::new(&set).unwrap();
+            assert_eq!(g.len(), n);
+            for t in [0.0, 3.7, 1000.0] {
+                let f = g.at_time(t);
+                for j in 0..400 {
+                    let (x, z) = (j as f64 * 1.37 - 250.0, (j as f64 * 0.71).sin() * 90.0);
+                    let tau = GERSTNER_TOLERANCE_M
+                        + GERSTNER_TOLERANCE_REL * (DVec2::new(x, z).length() + g.total_amplitude());
+                    let bound = 2.0 * tau * g.slope_bound() + SUM_ORDER_REL * g.total_amplitude();
+                    let (a, b) = (f.height(x, z), f.height_lanes(x, z));
+                    assert!((a - b).abs() <= bound, "n = {n}, t = {t}, ({x}, {z}): {a} vs {b}");
+                    let inv = f.solve_lanes(x, z);
+                    assert!(inv.residual <= tau && inv.iterations < GERSTNER_MAX_ITERATIONS);
+                }
+            }
         }
     }
 

@@ -115,6 +115,7 @@ mod fft_spectrum;
 mod fft_spline;
 mod fit;
 mod gerstner;
+mod gerstner_lanes;
 mod gerstner_lipschitz;
 mod integrate;
 mod jonswap;
@@ -148,7 +149,9 @@ pub use fft_slopes::{FftSlopeFilter, FilteredSlopes};
 pub use fft_spectrum::directional_spectrum;
 pub use fit::{AmplitudeRule, FrequencyBin, SeaComponent, SteepnessLimit, fit_sea_state, frequency_bins};
 pub use fit::{FitOptions, FrequencyPartition, fit_trochoids};
-pub use gerstner::{GERSTNER_MAX_ITERATIONS, GERSTNER_TOLERANCE_M, GerstnerField, GerstnerSurface, Inversion};
+pub use gerstner::{
+    GERSTNER_MAX_ITERATIONS, GERSTNER_TOLERANCE_M, GERSTNER_TOLERANCE_REL, GerstnerField, GerstnerSurface, Inversion,
+};
 pub use jonswap::Jonswap;
 pub use phillips::Phillips;
 pub use set::TrochoidSet;

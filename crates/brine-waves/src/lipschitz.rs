@@ -88,6 +88,23 @@ mod tests {
         TrochoidSet::new(waves)
     }
 
+    /// Rounding slack of a Lipschitz or bound comparison of f64 sums of up to 40 terms below 3 m.
+    const SLACK_REL: f64 = 1e-9;
+    const SLACK_ABS: f64 = 1e-12;
+
+    /// Central-difference step (m) along the ray, and the derivative's tolerance relative to
+    /// `1 + |∂|`: the f32 kernel's derivative against the f64 difference (f32 rounding ~10⁻⁶ of
+    /// the slope scale, difference rounding `10⁻¹⁶·3/h` = 3×10⁻¹²), plus the mean-value term
+    /// `K h` added in the test.
+    const FD_STEP: f64 = 1e-4;
+    const DERIVATIVE_REL: f64 = 1e-4;
+
+    /// The second difference against the curvature bound `K`: its rounding `4ε·3 m/h²` ≈
+    /// 1.3×10⁻⁷ (covered by the absolute part) and its truncation `h²|n⁗|/12` ≲ `K h²k²/12` ≈
+    /// 10⁻⁷ `K` for `k ≤ 10` rad/m (covered by the relative part).
+    const CURVATURE_REL: f64 = 1e-3;
+    const CURVATURE_ABS: f64 = 1e-5;
+
     proptest! {
         #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
 
@@ -112,24 +129,24 @@ mod tests {
             for i in 0..exact.component_count() {
                 let (np, nq) = (exact.component(i, p), exact.component(i, q));
                 let l = exact.component_lipschitz(i);
-                prop_assert!((np - nq).abs() <= l * step * (1.0 + 1e-9) + 1e-12, "component {i}: Lipschitz");
+                prop_assert!((np - nq).abs() <= l * step * (1.0 + SLACK_REL) + SLACK_ABS, "component {i}: Lipschitz");
                 let ld = exact.component_directional_lipschitz(i, d);
-                prop_assert!((np - nq).abs() <= ld * step * (1.0 + 1e-9) + 1e-12, "component {i}: directional");
-                prop_assert!(ld <= l * (1.0 + 1e-12));
-                prop_assert!(np >= exact.component_min(i, p, q) - 1e-12 && np <= exact.component_max(i, p, q) + 1e-12);
+                prop_assert!((np - nq).abs() <= ld * step * (1.0 + SLACK_REL) + SLACK_ABS, "component {i}: directional");
+                prop_assert!(ld <= l * (1.0 + SLACK_ABS));
+                prop_assert!(np >= exact.component_min(i, p, q) - SLACK_ABS && np <= exact.component_max(i, p, q) + SLACK_ABS);
                 prop_assert!((fast.component(i, p) - np).abs() <= eps, "component {i}: fast vs exact");
-                prop_assert!((fast.component_lipschitz(i) - l).abs() <= 1e-12 * (1.0 + l));
-                prop_assert!((fast.component_feature_size(i) - exact.component_feature_size(i)).abs() <= 1e-9 || i == 0);
+                prop_assert!((fast.component_lipschitz(i) - l).abs() <= SLACK_ABS * (1.0 + l));
+                prop_assert!((fast.component_feature_size(i) - exact.component_feature_size(i)).abs() <= SLACK_REL || i == 0);
                 let (tf, te) = (fast.component_fade_distance(i, d, 0.003), exact.component_fade_distance(i, d, 0.003));
-                prop_assert!(i == 0 || (tf - te).abs() <= 1e-9 * te, "component {i}: fade distance {tf} vs {te}");
+                prop_assert!(i == 0 || (tf - te).abs() <= SLACK_REL * te, "component {i}: fade distance {tf} vs {te}");
                 // Derivative and curvature along d (central differences of the f64 component).
-                let h = 1e-4;
+                let h = FD_STEP;
                 let fd = (exact.component(i, p + h * d) - exact.component(i, p - h * d)) / (2.0 * h);
                 let derivative = fast.component_directional_derivative(i, p, d).unwrap();
                 let k = fast.component_directional_curvature(i, d);
-                prop_assert!((derivative - fd).abs() <= 1e-4 * (1.0 + fd.abs()) + k * h, "component {i}: derivative {derivative} vs {fd}");
+                prop_assert!((derivative - fd).abs() <= DERIVATIVE_REL * (1.0 + fd.abs()) + k * h, "component {i}: derivative {derivative} vs {fd}");
                 let second = (exact.component(i, p + h * d) - 2.0 * np + exact.component(i, p - h * d)) / (h * h);
-                prop_assert!(second.abs() <= k * (1.0 + 1e-3) + 1e-5, "component {i}: curvature {second} > {k}");
+                prop_assert!(second.abs() <= k * (1.0 + CURVATURE_REL) + CURVATURE_ABS, "component {i}: curvature {second} > {k}");
             }
         }
     }

@@ -48,8 +48,14 @@ impl TrochoidSet {
         self.waves.iter().map(Trochoid::steepness).sum()
     }
 
-    /// Elevation variance of the sinusoidal limit, `Σ Aᵢ²/2` (m²), the quantity matched to
-    /// `∫ S dω` by the fit.
+    /// Elevation variance of the sinusoidal limit of the set, `Σ Aᵢ²/2`: the quantity the fit matches
+    /// to `∫ S dω` over the band.
+    ///
+    /// # Returns
+    /// The variance (m²).
+    ///
+    /// # References
+    /// Thon & Ghazanfarpour 2002; equation sheet §1 ("Extraction from a spectrum").
     pub fn variance(&self) -> f64 {
         self.waves.iter().map(|w| 0.5 * w.amplitude() * w.amplitude()).sum()
     }
@@ -79,7 +85,14 @@ impl TrochoidSet {
     }
 
     /// Gerstner displacement of the particle at rest position `u = (x, z)` at time `t`:
-    /// `(−Σ (Qᵢ/kᵢ) d̂ᵢ sin φᵢ, Σ Aᵢ cos φᵢ)` returned as `(dx, y, dz)` (m).
+    /// `(−Σ (Qᵢ/kᵢ) d̂ᵢ sin φᵢ, Σ Aᵢ cos φᵢ)`, `φᵢ = kᵢ d̂ᵢ·u − ωᵢt + φ₀ᵢ`.
+    ///
+    /// # Arguments
+    /// - `u`: rest position (m), finite.
+    /// - `t`: time (s), finite.
+    ///
+    /// # Returns
+    /// `(dx, y, dz)` (m): horizontal displacement and height.
     ///
     /// # References
     /// Equation sheet §1, "Sum of N trochoids".
@@ -98,9 +111,15 @@ impl TrochoidSet {
     }
 
     /// Jacobian determinant of the horizontal Gerstner map `u ↦ u + D(u)` at rest position `u`:
-    /// `J = (1 + ∂Dx/∂x)(1 + ∂Dz/∂z) − (∂Dx/∂z)(∂Dz/∂x)` with `∂D/∂u = −Σ Qᵢ d̂ᵢ d̂ᵢᵀ cos φᵢ`.
+    /// `J = det(I − Σ Qᵢ d̂ᵢ d̂ᵢᵀ cos φᵢ)`. `J < 1` where the surface is compressed, `J < 0` where it
+    /// folds.
     ///
-    /// `J < 1` where the surface is compressed, `J < 0` where it folds.
+    /// # Arguments
+    /// - `u`: rest position (m), finite.
+    /// - `t`: time (s), finite.
+    ///
+    /// # Returns
+    /// `J` (dimensionless).
     ///
     /// # References
     /// Dupuy & Bruneton 2012; equation sheet §10.

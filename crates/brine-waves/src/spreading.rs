@@ -10,12 +10,35 @@ use crate::error::{WaveError, check};
 /// Implemented by [`CosineTwoS`] (Longuet-Higgins / Mitsuyasu / Hasselmann), [`DonelanBanner`],
 /// [`CosineSquared`] and [`crate::ElfouhailySpreading`].
 pub trait Spreading {
-    /// `D(θ; ω)` (rad⁻¹), `θ` in `(−π, π]` relative to the wind, `ω` in rad s⁻¹.
+    /// Directional spreading density `D(θ; ω)`: the share of the variance at frequency `ω` per
+    /// radian of direction, `∫_{−π}^{π} D(θ; ω) dθ = 1`.
+    ///
+    /// # Arguments
+    /// - `theta`: direction relative to the mean wind direction (rad), `(−π, π]`.
+    /// - `omega`: angular frequency (rad s⁻¹), `> 0`.
+    ///
+    /// # Returns
+    /// `D` (rad⁻¹), `≥ 0`.
+    ///
+    /// # References
+    /// Equation sheet §1 (each implementation cites its law).
     fn density(&self, theta: f64, omega: f64) -> f64;
 
-    /// Draws an angle from `D(·; ω)` by inverting its cumulative distribution, tabulated on 2048
-    /// trapezoids, at the uniform variate `u ∈ [0, 1)`. Deterministic for a given `u`.
-    /// Implementations with a closed-form distribution override it.
+    /// Draws a direction from `D(·; ω)`: the inverse `C⁻¹(u)` of the cumulative distribution
+    /// `C(θ) = ∫_{−π}^{θ} D(θ'; ω) dθ'`, here tabulated on 2048 trapezoids and interpolated
+    /// linearly. Deterministic for a given `u`; implementations with a closed-form distribution
+    /// override it.
+    ///
+    /// # Arguments
+    /// - `omega`: angular frequency (rad s⁻¹), `> 0`.
+    /// - `u`: uniform variate, `[0, 1]` (clamped).
+    ///
+    /// # Returns
+    /// `θ` (rad) relative to the mean wind direction, in `[−π, π]` (`[−π/2, π/2]` for down-wind
+    /// laws).
+    ///
+    /// # References
+    /// Inverse-transform sampling (Devroye 1986, *Non-Uniform Random Variate Generation*, §II.2).
     fn sample(&self, omega: f64, u: f64) -> f64 {
         const N: usize = 2048;
         let h = 2.0 * PI / N as f64;
@@ -275,6 +298,36 @@ impl Spreading for CosineSquared {
 mod tests {
     use super::*;
 
+    /// `∫D dθ = 1` by the midpoint rule on 20 000 cells. Smooth periodic integrands (or a kink at
+    /// `±π/2` for the down-wind fold) converge fast; cos-2s with `s < ½` (Hasselmann and Mitsuyasu
+    /// well below the peak) has an infinite slope at `±π`, where the rule converges only as
+    /// `h^{1+2s}`: 2×10⁻⁶ at 20 000 cells for `s = 0.017`.
+    const NORMALISATION_ABS: f64 = 2e-6;
+
+    /// The median of the 2048-trapezoid table of a symmetric law is 0 up to the table's linear
+    /// interpolation: a fraction of its cell `2π/2048` = 3×10⁻³ rad.
+    const MEDIAN_TABLE_RAD: f64 = 2e-3;
+
+    /// The closed-form distribution against a 40 000-cell midpoint quadrature (kinks only at
+    /// `±π/2`: error below 10⁻⁸) and the Newton inversion (10⁻¹³).
+    const CDF_QUADRATURE_ABS: f64 = 1e-7;
+
+    /// Below `r = 0.56` the law is held at its branch value `2.61·0.56^{1.3}`, so it is continuous
+    /// there: the two sides differ by the slope (≈ 2.9) times the 2×10⁻¹² step, plus rounding.
+    const CONTINUITY_ABS: f64 = 1e-9;
+
+    /// Donelan et al. 1985's two branches meet within 2 % at `r = 0.95` (their own fit).
+    const DONELAN_BRANCH_REL: f64 = 0.02;
+
+    /// Banner's extension meets Donelan's branch at `r = 1.6` to the 4 printed digits (1.238).
+    const BANNER_BRANCH_REL: f64 = 1e-3;
+
+    /// The same `pow` expression two ways.
+    const ROUND_ABS: f64 = 1e-10;
+
+    /// `s_max = 17.01` printed to 2 decimals.
+    const PRINTED_2_DECIMALS: f64 = 0.005;
+
     /// `∫_{−π}^{π} D dθ` by the midpoint rule on `n` cells.
     fn integral(d: &dyn Spreading, omega: f64, n: usize) -> f64 {
         let h = 2.0 * PI / n as f64;
@@ -286,9 +339,7 @@ mod tests {
         for omega in [0.3, 0.8, 1.0, 2.0, 5.0] {
             let d = CosineTwoS::hasselmann(1.0).unwrap();
             let total = integral(&d, omega, 20_000);
-            // For s < ½ the integrand |cos(θ/2)|^{2s} has an infinite slope at ±π, where the
-            // midpoint rule converges only as h^{1+2s}: 2·10⁻⁶ at 20 000 cells for s = 0.017.
-            assert!((total - 1.0).abs() < 2e-6, "ω = {omega}: ∫D = {total}");
+            assert!((total - 1.0).abs() < NORMALISATION_ABS, "ω = {omega}: ∫D = {total}");
         }
     }
 
@@ -304,10 +355,7 @@ mod tests {
         for d in &list {
             for omega in [0.3, 0.7, 0.8, 1.1, 2.0, 6.0] {
                 let total = integral(d.as_ref(), omega, 20_000);
-                // Smooth periodic integrands (or a kink at ±π/2 for the down-wind fold) converge
-                // fast; cos-2s with s < ½ (Mitsuyasu well below the peak) has an infinite slope at
-                // ±π and converges as h^{1+2s}: 2·10⁻⁶ at 20 000 cells, as above.
-                assert!((total - 1.0).abs() < 2e-6, "ω = {omega}: ∫D = {total}");
+                assert!((total - 1.0).abs() < NORMALISATION_ABS, "ω = {omega}: ∫D = {total}");
             }
         }
     }
@@ -315,8 +363,8 @@ mod tests {
     #[test]
     fn cos2s_is_symmetric_and_sampling_is_centred() {
         let d = CosineTwoS::hasselmann(1.0).unwrap();
-        assert!((d.density(0.4, 1.0) - d.density(-0.4, 1.0)).abs() < 1e-15);
-        assert!(d.sample(1.0, 0.5).abs() < 2e-3);
+        assert_eq!(d.density(0.4, 1.0).to_bits(), d.density(-0.4, 1.0).to_bits());
+        assert!(d.sample(1.0, 0.5).abs() < MEDIAN_TABLE_RAD);
         assert!(d.sample(1.0, 0.1) < 0.0 && d.sample(1.0, 0.9) > 0.0);
     }
 
@@ -333,8 +381,7 @@ mod tests {
                 let n = 40_000;
                 let h = (theta + PI) / n as f64;
                 let c: f64 = (0..n).map(|j| d.density(-PI + (j as f64 + 0.5) * h, 1.3) * h).sum();
-                // Midpoint rule on 40 000 cells (kinks only at ±π/2): error below 10⁻⁸.
-                assert!((c - u).abs() < 1e-7, "u = {u}: C(θ) = {c}");
+                assert!((c - u).abs() < CDF_QUADRATURE_ABS, "u = {u}: C(θ) = {c}");
             }
         }
     }
@@ -342,12 +389,12 @@ mod tests {
     #[test]
     fn donelan_banner_beta_is_continuous_at_the_branch_points() {
         let d = DonelanBanner::new(1.0).unwrap();
-        assert!((d.beta(0.56 - 1e-12) - d.beta(0.56 + 1e-12)).abs() < 1e-9);
+        assert!((d.beta(0.56 - 1e-12) - d.beta(0.56 + 1e-12)).abs() < CONTINUITY_ABS);
         // Donelan's two branches meet within 2 % at r = 0.95 (2.61·0.95^1.3 = 2.446, 2.28·0.95^−1.3 = 2.437).
-        assert!((d.beta(0.95 - 1e-9) / d.beta(0.95) - 1.0).abs() < 0.02);
+        assert!((d.beta(0.95 - 1e-9) / d.beta(0.95) - 1.0).abs() < DONELAN_BRANCH_REL);
         // Banner's extension meets Donelan's branch at r = 1.6: 10^(−0.4 + 0.8393·2.56^−0.567) = 1.238,
         // 2.28·1.6^−1.3 = 1.238.
-        assert!((d.beta(1.6) / d.beta(1.6 - 1e-9) - 1.0).abs() < 1e-3);
+        assert!((d.beta(1.6) / d.beta(1.6 - 1e-9) - 1.0).abs() < BANNER_BRANCH_REL);
     }
 
     #[test]
@@ -357,7 +404,7 @@ mod tests {
         let wp = 0.855 * crate::G / u;
         let d = CosineTwoS::mitsuyasu(wp, u).unwrap();
         let expected = 11.5 * 0.855f64.powf(-2.5);
-        assert!((d.exponent(wp) - expected).abs() < 1e-10);
-        assert!((expected - 17.01).abs() < 0.005);
+        assert!((d.exponent(wp) - expected).abs() < ROUND_ABS);
+        assert!((expected - 17.01).abs() < PRINTED_2_DECIMALS);
     }
 }

@@ -6,14 +6,84 @@
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
 
 use brine_waves::{
-    CosineSquared, CosineTwoS, Directions, Elfouhaily, FFT_DEFAULT_TILE_RATIO, FftOcean, FftOptions, FftRestFields,
-    FftSlopeFilter, Jonswap, Phillips, Spectrum, Spreading, directional_spectrum,
+    CosineSquared, CosineTwoS, Directions, Elfouhaily, FFT_CASCADE_CUT_INDEX, FFT_DEFAULT_TILE_RATIO, FftOcean,
+    FftOptions, FftRestFields, FftSlopeFilter, Jonswap, Phillips, Spectrum, Spreading, directional_spectrum,
 };
 
 /// Simpson pairs per angular segment and along `ln k` of the polar reference quadrature: a step
 /// of at most π/400 in angle and 0.01–0.02 in `ln k`, far finer than any feature of these
 /// spectra (the narrowest is JONSWAP's peak, `σ = 0.07` in `ω`).
 const POLAR_PAIRS: usize = 100;
+
+/// Two angular break points closer than this (rad) are one (rounding of `θ_w ± π/2` reduced to
+/// `(−π, π]`).
+const SAME_ANGLE_RAD: f64 = 1e-12;
+
+/// The cascades hold the spectrum but for the waves longer than the first tile: with the peak 8
+/// wavelengths into it, they miss `e⁻⁸⁰`-small variance below the fundamental and less than 10⁻³
+/// of `m₀` in all (the square band's corners and the last Nyquist band).
+const M0_COVERED: f64 = 0.999;
+
+/// The `k = 0` cell is empty: the spatial mean of a realisation vanishes to the FFT's rounding
+/// (`~N² ε` of the rms over the `N²` sums, with margin).
+const ZERO_MEAN_REL: f64 = 1e-13;
+
+/// The ensemble test needs a standard error below 10 % of the expected variance to mean anything.
+const STDERR_USEFUL_REL: f64 = 0.1;
+
+/// Two evaluations of the same trig polynomial through the FFT (another time, another grid): FFT
+/// rounding, ~10⁻¹⁵ of `Σ|h̃|` times the butterflies' `log N` growth.
+const FFT_ROUNDING_REL: f64 = 1e-12;
+
+/// A looping frame equals itself one period later: f32 heights (rounding ~10⁻⁷ of a ~2 m range).
+const F32_FRAME_ABS: f64 = 1e-6;
+
+/// Without looping, 30 s later the mean absolute change of the heights exceeds 10⁻³ of the field's
+/// scale (it is of order 1: the waves have moved by several wavelengths).
+const MOTION_REL: f64 = 1e-3;
+
+/// Periodicity of a cascade: the cell coordinate of `x + nL` is computed from a larger number,
+/// a few ulps of it times the slope.
+const PERIODIC_ABS: f64 = 1e-9;
+
+/// `E[J] = 1` exactly (no `k = 0` term in the linear part, the quadratic part vanishes by
+/// Parseval): rounding of `N²` terms.
+const MEAN_JACOBIAN_ABS: f64 = 1e-12;
+
+/// Parseval's `⟨(Dxx + Dzz)²⟩ = ⟨|∇h|²⟩` on the same grid: rounding of `N²` squared terms.
+const PARSEVAL_REL: f64 = 1e-10;
+
+/// The Newton inversion of `u + λD(u) = x` on the trig sums stops at this residual (m).
+const DISPLACED_NEWTON_M: f64 = 1e-13;
+
+/// Second order: the error falls 4× per halving of the mesh asymptotically (ratio 0.25); 0.3
+/// allows the pre-asymptotic 20 % measured above it.
+const SECOND_ORDER_RATIO: f64 = 0.3;
+
+/// The resampled maximum never exceeds the rest maximum beyond the f32 storage of the heights.
+const F32_HEIGHT_M: f64 = 1e-6;
+
+/// …and the crest still lands within the cell of its vertex: over half of the rest maximum.
+const CREST_KEPT_REL: f64 = 0.5;
+
+/// Fourth order: the spline's interpolation error falls 16× per halving (ratio 1/16); 0.1 allows
+/// the pre-asymptotic constant (measured 0.037).
+const FOURTH_ORDER_RATIO: f64 = 0.1;
+
+/// …and at 256² it is below 10⁻³ of the range (measured 10⁻⁵; a bilinear grid gives 10⁻²).
+const SPLINE_ERROR_REL: f64 = 1e-3;
+
+/// At a grid point of every cascade with no footprint the filter returns the gradient exactly
+/// (rounding of a few f32-stored terms summed in f64) and no covariance.
+const GRID_POINT_ABS: f64 = 1e-12;
+const NO_COVARIANCE_ABS: f64 = 1e-15;
+
+/// Beyond the largest tile the mean gradient vanishes (no `k = 0` term): f32 slopes averaged over
+/// a whole tile, ~10⁻⁷ of slopes of order 0.1.
+const ZERO_MEAN_SLOPE: f64 = 1e-6;
+
+/// A covariance is positive semi-definite up to the rounding of `c_x c_z − c_y²` (terms ~10⁻³).
+const PSD_ABS: f64 = 1e-15;
 
 /// Composite Simpson rule on `[a, b]` with `pairs` pairs.
 fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, pairs: usize) -> f64 {
@@ -40,7 +110,7 @@ fn polar_band_integral(s: &dyn Spectrum, d: &dyn Spreading, wind: f64, lo: f64, 
         breaks.push(w);
     }
     breaks.sort_by(f64::total_cmp);
-    breaks.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
+    breaks.dedup_by(|a, b| (*a - *b).abs() < SAME_ANGLE_RAD);
     // Radially, the spreading may jump at the peak (Hasselmann's s goes from 6.97 to 9.77 there).
     let k_p = s.dispersion().wavenumber(s.peak_omega());
     let radial = |theta: f64| {
@@ -121,9 +191,8 @@ fn cascades_hold_the_spectrum_between_the_first_tile_and_the_last_nyquist_band()
     let big_k = ocean.k_max();
     let (lower, upper) = (band(a * 2f64.sqrt(), big_k), band(a, 2f64.sqrt() * big_k));
     assert!(total >= lower * (1.0 - TOTAL_REL) && total <= upper * (1.0 + TOTAL_REL), "{lower} ≤ {total} ≤ {upper}");
-    // The peak is 8 wavelengths into the first tile: the grids miss less than 10⁻³ of m₀.
     let m0 = elf.m0();
-    assert!(total / m0 > 0.999, "{total} of m₀ = {m0}");
+    assert!(total / m0 > M0_COVERED, "{total} of m₀ = {m0}");
 }
 
 /// Sample standard deviations of the ensemble mean allowed (a 5σ test fails by chance with
@@ -148,8 +217,10 @@ fn realised_variance_over_many_seeds_matches_the_spectrum_and_the_mean_is_zero()
         let ocean = FftOcean::new(&elf, &d, &FftOptions { seed, ..base.clone() }).unwrap();
         for (c, f) in ocean.rest_fields(12.5).iter().enumerate() {
             let (mean, var) = mean_and_variance(&f.height);
-            // The k = 0 cell is empty: the spatial mean vanishes to the FFT's rounding.
-            assert!(mean.abs() < 1e-13 * var.sqrt().max(1e-300), "seed {seed}, cascade {c}: mean {mean:e}");
+            assert!(
+                mean.abs() < ZERO_MEAN_REL * var.sqrt().max(f64::MIN_POSITIVE),
+                "seed {seed}, cascade {c}: mean {mean:e}"
+            );
             per_cascade[c].push(var);
             expected[c] = ocean.expected_variance(c);
         }
@@ -164,7 +235,7 @@ fn realised_variance_over_many_seeds_matches_the_spectrum_and_the_mean_is_zero()
         );
         // One realisation is a chi-square variable over the few dozen peak cells: its spread is
         // large for the first cascade, small for the others.
-        assert!(stderr < 0.1 * expected[c], "cascade {c}: the estimator is too noisy to test");
+        assert!(stderr < STDERR_USEFUL_REL * expected[c], "cascade {c}: the estimator is too noisy to test");
     }
 }
 
@@ -183,7 +254,7 @@ fn tiles_are_periodic_and_the_sea_loops_exactly() {
     for t in [0.0, 7.3, 1234.5] {
         let (a, b) = (looping.rest_fields(t), looping.rest_fields(t + 30.0));
         for (fa, fb) in a.iter().zip(&b) {
-            let tol = 1e-12 * scale(fa);
+            let tol = FFT_ROUNDING_REL * scale(fa);
             for (x, y) in fa.height.iter().zip(&fb.height).chain(fa.dxx.iter().zip(&fb.dxx)) {
                 assert!((x - y).abs() <= tol, "t = {t}: {x} vs {y}");
             }
@@ -191,12 +262,12 @@ fn tiles_are_periodic_and_the_sea_loops_exactly() {
         let (fa, fb) = (looping.at_time(t), looping.at_time(t + 30.0));
         for i in 0..50 {
             let (x, z) = (i as f64 * 3.7 - 80.0, i as f64 * -1.3 + 11.0);
-            assert!((fa.height(x, z) - fb.height(x, z)).abs() < 1e-6, "frame at ({x}, {z})");
+            assert!((fa.height(x, z) - fb.height(x, z)).abs() < F32_FRAME_ABS, "frame at ({x}, {z})");
         }
         // Without looping, 30 s later the sea has moved.
         let (ga, gb) = (free.rest_fields(t), free.rest_fields(t + 30.0));
         let diff: f64 = ga[0].height.iter().zip(&gb[0].height).map(|(x, y)| (x - y).abs()).sum();
-        assert!(diff > 1e-3 * scale(&ga[0]) * ga[0].height.len() as f64, "t = {t}: no motion");
+        assert!(diff > MOTION_REL * scale(&ga[0]) * ga[0].height.len() as f64, "t = {t}: no motion");
     }
     // Each cascade's traced surface repeats with its tile.
     let frame = free.at_time(3.0);
@@ -206,8 +277,7 @@ fn tiles_are_periodic_and_the_sea_loops_exactly() {
             let (x, z) = (i as f64 * 0.731 - 9.0, i as f64 * 1.917 + 2.0);
             for (sx, sz) in [(1.0, 0.0), (0.0, 1.0), (-3.0, 2.0)] {
                 let shifted = c.height(x + sx * l, z + sz * l);
-                // The cell coordinate of x + nL is computed from a larger number: a few ulps of it.
-                assert!((shifted - c.height(x, z)).abs() < 1e-9, "tile {l} at ({x}, {z})");
+                assert!((shifted - c.height(x, z)).abs() < PERIODIC_ABS, "tile {l} at ({x}, {z})");
             }
         }
     }
@@ -232,7 +302,7 @@ fn a_finer_grid_keeps_the_large_waves() {
     // grid points is the coarse field (the same trig polynomial, sampled twice as densely).
     let (a, b) = (coarse.rest_fields(4.0), fine.rest_fields(4.0));
     for c in 0..2 {
-        let tol = 1e-12 * scale(&a[c]);
+        let tol = FFT_ROUNDING_REL * scale(&a[c]);
         for j in 0..128 {
             for i in 0..128 {
                 let (x, y) = (a[c].height[j * 128 + i], b[c].height[2 * j * 256 + 2 * i]);
@@ -255,9 +325,9 @@ fn a_finer_grid_keeps_the_large_waves() {
     };
     for (nx, nz) in [(4, 0), (5, -3), (-7, 9), (20, 31), (-40, -12), (62, 1)] {
         let (ca, cb) = (coefficient(&a[2], nx, nz), coefficient(&b[2], nx, nz));
-        let tol = 1e-12 * scale(&b[2]);
+        let tol = FFT_ROUNDING_REL * scale(&b[2]);
         assert!((ca.0 - cb.0).abs() < tol && (ca.1 - cb.1).abs() < tol, "({nx}, {nz}): {ca:?} vs {cb:?}");
-        assert!(ca.0.abs() + ca.1.abs() > 0.0 || (nx.abs().max(nz.abs()) as f64) < 4.0);
+        assert!(ca.0.abs() + ca.1.abs() > 0.0 || (nx.abs().max(nz.abs()) as f64) < FFT_CASCADE_CUT_INDEX);
     }
 }
 
@@ -298,14 +368,14 @@ fn positive_choppiness_compresses_the_crests_and_the_mean_jacobian_is_one() {
         let mean_j = j.iter().sum::<f64>() / n2;
         // E[J] = 1 + λ(⟨Dxx⟩ + ⟨Dzz⟩) + λ²⟨DxxDzz − Dxz²⟩: the linear terms have no k = 0 term, and by
         // Parseval the quadratic one is Σ (kₓ²k_z² − (kₓk_z)²)|h̃|²/k² = 0. Exact to rounding.
-        assert!((mean_j - 1.0).abs() < 1e-12, "mean J = {mean_j}");
+        assert!((mean_j - 1.0).abs() < MEAN_JACOBIAN_ABS, "mean J = {mean_j}");
         // cov(h, J) = −λ Σ k|h̃|² < 0: the crests are compressed.
         let cov: f64 = f.height.iter().zip(&j).map(|(h, jj)| h * (jj - 1.0)).sum::<f64>() / n2;
         assert!(cov < 0.0, "cov(h, J) = {cov}");
         // Parseval: ⟨(Dxx + Dzz)²⟩ = Σ k²|h̃|² = ⟨|∇h|²⟩.
         let lhs: f64 = f.dxx.iter().zip(&f.dzz).map(|(a, b)| (a + b) * (a + b)).sum::<f64>() / n2;
         let rhs: f64 = f.slope_x.iter().zip(&f.slope_z).map(|(a, b)| a * a + b * b).sum::<f64>() / n2;
-        assert!((lhs / rhs - 1.0).abs() < 1e-10, "{lhs} vs {rhs}");
+        assert!((lhs / rhs - 1.0).abs() < PARSEVAL_REL, "{lhs} vs {rhs}");
     }
 }
 
@@ -335,7 +405,7 @@ fn displaced_height(ocean: &FftOcean, t: f64, lambda: f64, x: f64, z: f64) -> f6
         let det = a * d - b * b;
         ux -= (d * rx - b * rz) / det;
         uz -= (a * rz - b * rx) / det;
-        if rx.hypot(rz) < 1e-13 {
+        if rx.hypot(rz) < DISPLACED_NEWTON_M {
             break;
         }
     }
@@ -345,8 +415,8 @@ fn displaced_height(ocean: &FftOcean, t: f64, lambda: f64, x: f64, z: f64) -> f6
 #[test]
 fn the_resampled_displaced_surface_converges_at_second_order() {
     // Cascade 0's band does not depend on N: doubling N halves the mesh spacing of the same
-    // surface, and the error of the traced surface (linear on the displaced mesh, then bilinear
-    // on the grid) must fall about 4×. Measured: 0.075, 0.025, 0.0085, 0.0020 m at N = 64, 128,
+    // surface, and the error of the traced surface (linear on the displaced mesh, then the cubic
+    // B-spline on the grid) must fall about 4×. Measured: 0.075, 0.025, 0.0085, 0.0020 m at N = 64, 128,
     // 256, 512 (ratios 0.33, 0.35, 0.23: the asymptotic 0.25 once the band's shortest waves,
     // 27 cells per tile, have 9 samples or more); the bound 0.3 allows 20 % above it.
     let elf = Elfouhaily::from_fetch(10.0, 1e5).unwrap();
@@ -367,7 +437,7 @@ fn the_resampled_displaced_surface_converges_at_second_order() {
         errors.push(worst);
     }
     let ratio = errors[1] / errors[0];
-    assert!(ratio < 0.3, "errors {errors:?}: ratio {ratio}");
+    assert!(ratio < SECOND_ORDER_RATIO, "errors {errors:?}: ratio {ratio}");
 }
 
 #[test]
@@ -392,8 +462,8 @@ fn the_upper_envelope_covers_every_point_of_a_folding_sea() {
     let rest_max = rest[0].height.iter().fold(f64::NEG_INFINITY, |m, &h| m.max(h));
     // The crest vertex lands somewhere between grid points: the resampled maximum is within the
     // mesh's linear interpolation of it, never above it (f32 storage: 10⁻⁶ m).
-    assert!(hi <= rest_max + 1e-6, "{hi} > {rest_max}");
-    assert!(hi > 0.5 * rest_max, "{hi} vs {rest_max}");
+    assert!(hi <= rest_max + F32_HEIGHT_M, "{hi} > {rest_max}");
+    assert!(hi > CREST_KEPT_REL * rest_max, "{hi} vs {rest_max}");
 }
 
 #[test]
@@ -418,8 +488,8 @@ fn without_choppiness_the_traced_spline_converges_to_the_trig_polynomial_at_four
         errors.push(worst);
         range = c0.height_bounds().1 - c0.height_bounds().0;
     }
-    assert!(errors[1] / errors[0] < 0.1, "errors {errors:?}");
-    assert!(errors[1] < 1e-3 * range, "errors {errors:?}, range {range}");
+    assert!(errors[1] / errors[0] < FOURTH_ORDER_RATIO, "errors {errors:?}");
+    assert!(errors[1] < SPLINE_ERROR_REL * range, "errors {errors:?}, range {range}");
 }
 
 /// Spread of one realisation's mean-square slope around its expectation: `Σ k²|h̃|²` over the
@@ -436,11 +506,14 @@ fn filtered_slopes_span_the_gradient_and_the_whole_sea_mean_square_slope() {
     let filter = FftSlopeFilter::new(&frame);
     // No footprint, at a grid point of every cascade: the gradient, no hidden slope.
     let f0 = filter.filtered(0.0, 0.0, 0.0);
-    assert!((f0.gradient - frame.gradient(0.0, 0.0)).length() < 1e-12 && f0.covariance.length() < 1e-15);
+    assert!(
+        (f0.gradient - frame.gradient(0.0, 0.0)).length() < GRID_POINT_ABS
+            && f0.covariance.length() < NO_COVARIANCE_ABS
+    );
     // Beyond the largest tile: zero mean (no k = 0 term) and the sea's mean-square slope, which
     // a single realisation draws around Σ E(k) k² (the cascades' expected covariances).
     let all = filter.filtered(5.0, -3.0, 1e6);
-    assert!(all.gradient.length() < 1e-6, "{}", all.gradient);
+    assert!(all.gradient.length() < ZERO_MEAN_SLOPE, "{}", all.gradient);
     let expected: f64 = (0..3).map(|c| ocean.expected_slope_covariance(c)).map(|v| v[0] + v[2]).sum();
     let got = all.covariance.x + all.covariance.z;
     assert!((got / expected - 1.0).abs() < MSS_REL, "mss {got} vs expected {expected}");
@@ -450,7 +523,7 @@ fn filtered_slopes_span_the_gradient_and_the_whole_sea_mean_square_slope() {
         let (x, z) = (i as f64 * 3.17 - 90.0, i as f64 * -1.91 + 40.0);
         for s in [0.0, 0.05, 0.3, 2.0, 20.0] {
             let c = filter.filtered(x, z, s).covariance;
-            assert!(c.x >= 0.0 && c.z >= 0.0 && c.x * c.z - c.y * c.y >= -1e-15, "{c} at s = {s}");
+            assert!(c.x >= 0.0 && c.z >= 0.0 && c.x * c.z - c.y * c.y >= -PSD_ABS, "{c} at s = {s}");
         }
         small += filter.filtered(x, z, 0.05).covariance.x;
         large += filter.filtered(x, z, 2.0).covariance.x;

@@ -16,6 +16,24 @@ use proptest::prelude::*;
 const SLACK_REL: f64 = 1e-9;
 const SLACK_ABS: f64 = 1e-12;
 
+/// Central-difference step (m) of the derivative and curvature checks.
+const FD_STEP: f64 = 1e-4;
+
+/// The central difference is the mean of the derivative over `[−h, h]`, within `K h/2` of it; the
+/// absolute part covers its rounding `ε·|n|/h` ≈ 10⁻¹¹ and the f32 coefficients' derivative.
+const DERIVATIVE_ABS: f64 = 1e-9;
+
+/// The second difference against the curvature bound: rounding `4ε|n|/h²` ≈ 10⁻⁸ (covered by
+/// the absolute part) and the bound's own 10⁻¹² margin (relative part).
+const CURVATURE_REL: f64 = 1e-6;
+const CURVATURE_ABS: f64 = 1e-6;
+
+/// `F(p)` against the sum of its components: rounding of a few terms of order 1.
+const SUM_ABS: f64 = 1e-12;
+
+/// `F` within rounding of zero at a hit (the f64 evaluation of f32-stored splines near a root).
+const AT_ROOT_ABS: f64 = 1e-9;
+
 /// Frames with choppiness 0, 1 and 2.5 (the last folds here and there), two seeds each: three
 /// cascades of 64² over 80 m, 11.7 m and 1.70 m (finest spacing 2.7 cm).
 fn frames() -> &'static [(f64, FftFrame)] {
@@ -65,24 +83,23 @@ proptest! {
             prop_assert!((np - nq).abs() <= l * step * (1.0 + SLACK_REL) + SLACK_ABS, "component {i}: Lipschitz {} > {}", (np - nq).abs() / step, l);
             let ld = frame.component_directional_lipschitz(i, d);
             prop_assert!((np - nq).abs() <= ld * step * (1.0 + SLACK_REL) + SLACK_ABS, "component {i}: directional {} > {ld}", (np - nq).abs() / step);
-            prop_assert!(ld <= l * (1.0 + 1e-12));
+            prop_assert!(ld <= l * (1.0 + SLACK_ABS));
             let (lo, hi) = (frame.component_min(i, p, q), frame.component_max(i, p, q));
             prop_assert!(np >= lo - SLACK_ABS && np <= hi + SLACK_ABS && nq >= lo - SLACK_ABS && nq <= hi + SLACK_ABS);
         }
-        // Derivative along d (exact) against a central difference, which is the mean of the
-        // derivative over [−h, h], within K h/2 of it; the curvature bound against a second
-        // difference (step 10⁻⁴ m; rounding 10⁻¹⁶/h² = 10⁻⁸).
+        // Derivative along d (exact) against a central difference; the curvature bound against a
+        // second difference.
         for i in 0..frame.component_count() {
-            let h = 1e-4;
+            let h = FD_STEP;
             let (np, nm, n0) = (frame.component(i, p + h * d), frame.component(i, p - h * d), frame.component(i, p));
             let fd = (np - nm) / (2.0 * h);
             let k = frame.component_directional_curvature(i, d);
             let derivative = frame.component_directional_derivative(i, p, d).unwrap();
-            prop_assert!((derivative - fd).abs() <= 0.5 * k * h + 1e-9, "component {i}: derivative {derivative} vs {fd}");
+            prop_assert!((derivative - fd).abs() <= 0.5 * k * h + DERIVATIVE_ABS, "component {i}: derivative {derivative} vs {fd}");
             let second = (np - 2.0 * n0 + nm) / (h * h);
-            prop_assert!(second.abs() <= k * (1.0 + 1e-6) + 1e-6, "component {i}: curvature {second} > {k}");
+            prop_assert!(second.abs() <= k * (1.0 + CURVATURE_REL) + CURVATURE_ABS, "component {i}: curvature {second} > {k}");
         }
-        prop_assert!((sum - frame.value(p)).abs() < 1e-12);
+        prop_assert!((sum - frame.value(p)).abs() < SUM_ABS);
         let h = frame.height(p.x, p.z);
         let b = frame.zero_set_bounds();
         prop_assert!(h >= b.min.y - SLACK_ABS && h <= b.max.y + SLACK_ABS);
@@ -166,7 +183,7 @@ fn check(frame: &FftFrame, ray: &Ray, method: Method, footprint: f64) -> Result<
     // A crossing the tracer reports must be real: F changes sign across it.
     let real = |t: f64| {
         let h = 2.0 * HIT_TOLERANCE;
-        f((t - h).max(0.0)).signum() != f(t + h).signum() || f(t).abs() < 1e-9
+        f((t - h).max(0.0)).signum() != f(t + h).signum() || f(t).abs() < AT_ROOT_ABS
     };
     match (hit, reference) {
         (Some(h), Some(r)) => {

@@ -22,6 +22,49 @@ const CASES: u32 = 64;
 const SLACK_REL: f64 = 1e-9;
 const SLACK_ABS: f64 = 1e-9;
 
+/// Rounding of a height (a sum of at most 12 terms below 2 m: ~10⁻¹⁵ m) or of a unit vector's
+/// length, with margin.
+const ROUND_ABS: f64 = 1e-12;
+
+/// SIMD lanes against the scalar sums, relative to `1 + ΣA`: the same terms summed in another
+/// order, each within a few ulp (`lanes.rs`, `gerstner_lanes.rs`).
+const LANES_ABS: f64 = 1e-13;
+
+/// Central-difference step (m, s) of the derivative checks, and their tolerance relative to
+/// `1 + L` (truncation `h²|h'''|/6` stays below 10⁻⁶ of the slope scale even at `Q = 0.95`,
+/// where `|h'''|/|h'| ≲ k²/(1 − Q)⁴ ≈ 10⁷ m⁻²`; rounding `~10⁻¹⁶ ΣA/h ≈ 10⁻⁹`).
+const FD_STEP: f64 = 1e-6;
+const FD_REL: f64 = 1e-5;
+
+/// The Gerstner inversion's miss `|forward(inverse(x)) − x|`: its stopping rule
+/// `10⁻¹² m + 10⁻¹⁴(|x| + ΣA)` is at most 5.5×10⁻¹² m on this domain (`|x| ≤ 425` m).
+const INVERSION_MISS_M: f64 = 1e-11;
+
+/// `inverse(forward(u))` against `u`: the inversion's residual over the smallest singular value
+/// `1 − ΣQ` of the map, with the rounding of `forward`; divided by `1 − ΣQ` in the test.
+const ROUND_TRIP_M: f64 = 1e-10;
+
+/// Jacobian against the determinant of the central-difference derivative of the forward map
+/// (step [`FD_STEP`]: truncation `h²k²ΣQ ≈ 10⁻¹¹`, rounding `10⁻¹⁶·400 m/h ≈ 4×10⁻⁸` per entry).
+const JACOBIAN_FD_ABS: f64 = 1e-6;
+
+/// One trochoid's Jacobian against the central difference of the particle map `dx/du`
+/// (rounding `10⁻¹⁶·100 m/10⁻⁶ m = 10⁻⁸`), and its displacement against `x(u) − u` (rounding of
+/// coordinates up to 100 m).
+const ONE_WAVE_J_ABS: f64 = 1e-7;
+const ONE_WAVE_D_ABS: f64 = 1e-9;
+
+/// A directional Lipschitz constant may not exceed the full one beyond rounding.
+const DIRECTIONAL_REL: f64 = 1e-12;
+const DIRECTIONAL_ABS: f64 = 1e-15;
+
+/// `k(ω(k)) = k` through the safeguarded Newton inversion (it stops at 10⁻¹⁴ relative; the
+/// `tanh` of `kh` rounds the rest).
+const DISPERSION_REL: f64 = 1e-11;
+
+/// The acceptance bound on a fitted set's variance against `∫ S dω` over the band.
+const VARIANCE_REL: f64 = 0.01;
+
 /// A random wave set: 1–12 waves, amplitudes 0.01–1.5 m, wavelengths 2–125 m, any direction and
 /// phase, deep-water frequencies, steepnesses sharing a random total `Σ Q ∈ [0, 0.95]` (so `Qᵢ`
 /// and `kᵢAᵢ` are unrelated, as with choppiness ≠ 1).
@@ -72,7 +115,7 @@ fn check_lipschitz_sum(f: &dyn LipschitzSum, p: DVec3, q: DVec3, d: DVec3, t: f6
         prop_assert!(np.is_finite() && l.is_finite());
         prop_assert!((np - nq).abs() <= l * (p - q).length() * (1.0 + SLACK_REL) + SLACK_ABS, "component {i}: L");
         let ld = f.component_directional_lipschitz(i, d);
-        prop_assert!(ld <= l * (1.0 + 1e-12) + 1e-15, "component {i}: L(d) = {ld} > L = {l}");
+        prop_assert!(ld <= l * (1.0 + DIRECTIONAL_REL) + DIRECTIONAL_ABS, "component {i}: L(d) = {ld} > L = {l}");
         let nt = f.component(i, p + t * d);
         prop_assert!((nt - np).abs() <= ld * t.abs() * (1.0 + SLACK_REL) + SLACK_ABS, "component {i}: L(d)");
         let m = f.component_min(i, p, q);
@@ -82,9 +125,10 @@ fn check_lipschitz_sum(f: &dyn LipschitzSum, p: DVec3, q: DVec3, d: DVec3, t: f6
         }
     }
     let v = f.value(p);
-    prop_assert!((v - sum).abs() <= 1e-12 * (1.0 + v.abs()) + SLACK_ABS, "value {v} ≠ Σ components {sum}");
+    prop_assert!((v - sum).abs() <= ROUND_ABS * (1.0 + v.abs()) + SLACK_ABS, "value {v} ≠ Σ components {sum}");
     // Above the box F > 0, below it F < 0: no zero outside.
-    let (top, bottom) = (DVec3::new(p.x, bounds.max.y + 1e-6, p.z), DVec3::new(p.x, bounds.min.y - 1e-6, p.z));
+    // A micrometre outside the slab, far beyond the rounding of the height.
+    let (top, bottom) = (DVec3::new(p.x, bounds.max.y + FD_STEP, p.z), DVec3::new(p.x, bounds.min.y - FD_STEP, p.z));
     prop_assert!(f.value(top) > 0.0 && f.value(bottom) < 0.0);
     Ok(())
 }
@@ -97,11 +141,11 @@ proptest! {
         for (name, s) in surfaces(&set) {
             let (lo, hi) = s.height_bounds();
             let h = s.height(x, z, t);
-            prop_assert!(h.is_finite() && lo - 1e-12 <= h && h <= hi + 1e-12, "{name}: {h} ∉ [{lo}, {hi}]");
+            prop_assert!(h.is_finite() && lo - ROUND_ABS <= h && h <= hi + ROUND_ABS, "{name}: {h} ∉ [{lo}, {hi}]");
             prop_assert!(s.gradient(x, z, t).is_finite() && s.velocity(x, z, t).is_finite());
             prop_assert!(s.displacement(x, z, t).is_finite() && s.jacobian(x, z, t).is_finite());
             let n = s.normal(x, z, t);
-            prop_assert!((n.length() - 1.0).abs() < 1e-12 && n.y > 0.0);
+            prop_assert!((n.length() - 1.0).abs() < ROUND_ABS && n.y > 0.0);
         }
     }
 
@@ -118,9 +162,7 @@ proptest! {
 
     #[test]
     fn gradients_match_central_differences(set in wave_set(), (x, z, t) in point()) {
-        // Step 10⁻⁶ m: truncation ~ h²|h'''|/6 stays below 10⁻⁶ of the slope scale even at
-        // Q = 0.95 (|h'''|/|h'| ≲ k²/(1 − Q)⁴ ≈ 10⁷ m⁻²); rounding ~ 10⁻¹⁶ ΣA/h ≈ 10⁻⁹.
-        let h = 1e-6;
+        let h = FD_STEP;
         for (name, s) in surfaces(&set) {
             let g = s.gradient(x, z, t);
             let fd = DVec2::new(
@@ -128,7 +170,7 @@ proptest! {
                 (s.height(x, z + h, t) - s.height(x, z - h, t)) / (2.0 * h),
             );
             let scale = 1.0 + s.max_slope();
-            prop_assert!((g - fd).length() <= 1e-5 * scale, "{name}: ∇h = {g}, FD {fd}");
+            prop_assert!((g - fd).length() <= FD_REL * scale, "{name}: ∇h = {g}, FD {fd}");
         }
     }
 
@@ -141,21 +183,21 @@ proptest! {
         prop_assert!(inv.iterations < brine_waves::GERSTNER_MAX_ITERATIONS);
         let p = f.forward(inv.rest);
         let miss = DVec2::new(p.x - x, p.z - z).length();
-        prop_assert!(miss <= 1e-11, "forward(inverse) off by {miss}");
-        prop_assert!((p.y - f.height(x, z)).abs() < 1e-12);
+        prop_assert!(miss <= INVERSION_MISS_M, "forward(inverse) off by {miss}");
+        prop_assert!((p.y - f.height(x, z)).abs() < ROUND_ABS);
         // …and the forward map of a rest position inverts back to it (the map is one-to-one).
         let u = DVec2::new(z * 0.7 + 3.0, x * 0.3 - 5.0);
         let fu = f.forward(u);
         let back = f.rest_position(fu.x, fu.z);
         let off = (back - u).length();
-        prop_assert!(off <= 1e-10 / (1.0 - g.total_steepness()), "round trip off by {off}");
+        prop_assert!(off <= ROUND_TRIP_M / (1.0 - g.total_steepness()), "round trip off by {off}");
         // Jacobian: det of the central-difference derivative of u ↦ x at the rest position.
-        let h = 1e-6;
+        let h = FD_STEP;
         let dx = (f.forward(inv.rest + DVec2::X * h) - f.forward(inv.rest - DVec2::X * h)) / (2.0 * h);
         let dz = (f.forward(inv.rest + DVec2::Y * h) - f.forward(inv.rest - DVec2::Y * h)) / (2.0 * h);
         let det = dx.x * dz.z - dx.z * dz.x;
-        prop_assert!((det - f.jacobian(x, z)).abs() < 1e-6, "J = {}, FD {det}", f.jacobian(x, z));
-        prop_assert!(f.jacobian(x, z) >= 1.0 - g.total_steepness() - 1e-12);
+        prop_assert!((det - f.jacobian(x, z)).abs() < JACOBIAN_FD_ABS, "J = {}, FD {det}", f.jacobian(x, z));
+        prop_assert!(f.jacobian(x, z) >= 1.0 - g.total_steepness() - ROUND_ABS);
     }
 
     #[test]
@@ -168,29 +210,30 @@ proptest! {
         let w = Trochoid::new(a, k, dir, (G * k).sqrt(), ph, q).unwrap();
         let sum = TrochoidSum::new(&TrochoidSet::new(vec![w]));
         let along = |s: f64| s - q / k * (k * s + ph).sin();
-        let h = 1e-6;
+        let h = FD_STEP;
         let fd = (along(u + h) - along(u - h)) / (2.0 * h);
         let d = w.direction_vector();
         let x = along(u) * d;
-        prop_assert!((sum.jacobian(x.x, x.y, 0.0) - fd).abs() < 1e-7);
+        prop_assert!((sum.jacobian(x.x, x.y, 0.0) - fd).abs() < ONE_WAVE_J_ABS);
         let disp = sum.displacement(x.x, x.y, 0.0);
-        prop_assert!((disp - (along(u) - u) * d).length() < 1e-9);
+        prop_assert!((disp - (along(u) - u) * d).length() < ONE_WAVE_D_ABS);
     }
 
     #[test]
     fn particle_velocity_satisfies_the_kinematic_condition(set in wave_set(), (x, z, t) in point()) {
         // A surface particle stays on the surface: v_y = ∂h/∂t + ∇h·v_xz (exact for the Gerstner
-        // sum; for a sine set v_y = ∂h/∂t, its points moving only vertically).
-        let dt = 1e-6;
+        // sum; for a sine set v_y = ∂h/∂t, its points moving only vertically). The trochoid sum
+        // has its own tests (tests/kinematics.rs).
+        let dt = FD_STEP;
         let g = GerstnerSurface::new(&set).unwrap();
         let v = g.velocity(x, z, t);
         let dhdt = (g.height(x, z, t + dt) - g.height(x, z, t - dt)) / (2.0 * dt);
         let rhs = dhdt + g.gradient(x, z, t).dot(DVec2::new(v.x, v.z));
         let scale: f64 = set.waves().iter().map(|w| w.amplitude() * w.omega()).sum::<f64>() * (1.0 + g.slope_bound());
-        prop_assert!((v.y - rhs).abs() < 1e-5 * scale, "Gerstner: v_y = {}, ∂h/∂t + ∇h·v = {rhs}", v.y);
+        prop_assert!((v.y - rhs).abs() < FD_REL * scale, "Gerstner: v_y = {}, ∂h/∂t + ∇h·v = {rhs}", v.y);
         let s = SineSet::new(&set);
         let dhdt = (s.height(x, z, t + dt) - s.height(x, z, t - dt)) / (2.0 * dt);
-        prop_assert!((s.velocity(x, z, t).y - dhdt).abs() < 1e-5 * scale);
+        prop_assert!((s.velocity(x, z, t).y - dhdt).abs() < FD_REL * scale);
     }
 
     #[test]
@@ -220,15 +263,27 @@ proptest! {
         let scale = set.total_amplitude();
         let sum = TrochoidSum::new(&set);
         let f = sum.at_time(t);
-        prop_assert!((f.height_lanes(x, z) - f.height(x, z)).abs() <= 1e-13 * (1.0 + scale));
+        prop_assert!((f.height_lanes(x, z) - f.height(x, z)).abs() <= LANES_ABS * (1.0 + scale));
         let sine = SineSet::new(&set);
         let g = sine.at_time(t);
-        prop_assert!((g.height_lanes(x, z) - g.height(x, z)).abs() <= 1e-13 * (1.0 + scale));
+        prop_assert!((g.height_lanes(x, z) - g.height(x, z)).abs() <= LANES_ABS * (1.0 + scale));
+        // Gerstner: two inversions that both stop at |u + D(u) − x| ≤ τ give heights within 2τL
+        // (GerstnerField::height_lanes), plus the rounding of the sums.
+        let gerstner = GerstnerSurface::new(&set).unwrap();
+        let h = gerstner.at_time(t);
+        let tau = brine_waves::GERSTNER_TOLERANCE_M
+            + brine_waves::GERSTNER_TOLERANCE_REL * (DVec2::new(x, z).length() + scale);
+        let bound = 2.0 * tau * gerstner.slope_bound() + LANES_ABS * (1.0 + scale);
+        prop_assert!((h.height_lanes(x, z) - h.height(x, z)).abs() <= bound);
         let (xs, zs) = ([x, x + 1.0, x - 7.5], [z, z * 0.5, -z]);
         let mut out = [0.0; 3];
-        sum.heights(&xs, &zs, t, &mut out);
-        for j in 0..3 {
-            prop_assert!((out[j] - sum.height(xs[j], zs[j], t)).abs() <= 1e-13 * (1.0 + scale));
+        let list: [(&dyn WaveSurface, f64); 3] =
+            [(&sum, LANES_ABS * (1.0 + scale)), (&sine, LANES_ABS * (1.0 + scale)), (&gerstner, 2.0 * bound)];
+        for (s, tol) in list {
+            s.heights(&xs, &zs, t, &mut out);
+            for j in 0..3 {
+                prop_assert!((out[j] - s.height(xs[j], zs[j], t)).abs() <= tol);
+            }
         }
     }
 
@@ -268,7 +323,7 @@ proptest! {
         ];
         for (d, half) in &list {
             let th = d.sample(omega, u);
-            prop_assert!(th.is_finite() && th.abs() <= half + 1e-12, "θ = {th}");
+            prop_assert!(th.is_finite() && th.abs() <= half + ROUND_ABS, "θ = {th}");
             let dens = d.density(th, omega);
             prop_assert!(dens.is_finite() && dens >= 0.0);
         }
@@ -283,7 +338,7 @@ proptest! {
         };
         let w = d.omega(k);
         prop_assert!(w.is_finite() && w > 0.0);
-        prop_assert!((d.wavenumber(w) / k - 1.0).abs() < 1e-11);
+        prop_assert!((d.wavenumber(w) / k - 1.0).abs() < DISPERSION_REL);
         prop_assert!(d.group_velocity(k) > 0.0);
     }
 }
@@ -311,14 +366,14 @@ proptest! {
         let o = FitOptions { choppiness, wind_direction, ..FitOptions::default() };
         let set = fit_trochoids(s.as_ref(), &d, n, seed, &o).unwrap();
         prop_assert_eq!(set.len(), n);
-        prop_assert!(set.total_steepness() <= o.max_total_steepness + 1e-12);
+        prop_assert!(set.total_steepness() <= o.max_total_steepness + ROUND_ABS);
         for w in set.waves() {
             prop_assert!(w.amplitude().is_finite() && w.wavenumber() > 0.0 && w.phase() >= 0.0 && w.phase() < TAU);
-            prop_assert!((w.direction() - wind_direction).abs() <= PI + 1e-12);
+            prop_assert!((w.direction() - wind_direction).abs() <= PI + ROUND_ABS);
         }
         let wp = s.peak_omega();
         let band = s.variance_between(0.5 * wp, 12.0 * wp);
-        prop_assert!((set.variance() / band - 1.0).abs() < 0.01);
+        prop_assert!((set.variance() / band - 1.0).abs() < VARIANCE_REL);
         prop_assert!(GerstnerSurface::new(&set).is_ok());
     }
 }
