@@ -37,7 +37,13 @@ impl MoonPosition {
         Horizontal { altitude: self.altitude, azimuth: self.azimuth }
     }
 
-    /// Angular radius of the disc seen by the observer, `asin(R_moon/Δ_topo)` (rad), about 0.26°.
+    /// Angular radius of the disc seen by the observer, `ρ = asin(R_moon/Δ_topo)`.
+    ///
+    /// # Returns
+    /// `ρ` (rad): 0.24°–0.29° (apogee to perigee), about 0.26°.
+    ///
+    /// # References
+    /// IAU mean lunar radius 1737.4 km; Meeus 1998 ch. 55.
     pub fn angular_radius(&self) -> f64 {
         (MOON_RADIUS_KM / self.topocentric_distance_km).asin()
     }

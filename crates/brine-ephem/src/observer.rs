@@ -25,6 +25,9 @@ impl Observer {
     /// - `longitude_deg`: `[−180, 360]`, east positive.
     /// - `height_m`: height above the ellipsoid, `[−500, 10 000]` m.
     ///
+    /// # Returns
+    /// The [`Observer`] (angles stored in radians).
+    ///
     /// # Errors
     /// [`EphemError::OutOfRange`] naming the parameter outside its range.
     pub fn from_degrees(latitude_deg: f64, longitude_deg: f64, height_m: f64) -> Result<Self, EphemError> {

@@ -24,6 +24,9 @@ impl Atmosphere {
     /// - `pressure_hpa`: local (not sea-level-reduced) pressure, `(0, 2000]` hPa.
     /// - `temperature_c`: air temperature, `(−273, 100]` °C.
     ///
+    /// # Returns
+    /// The [`Atmosphere`], scaling the refraction by `(P/1010)(283/(273 + T))`.
+    ///
     /// # Errors
     /// [`EphemError::OutOfRange`] naming the parameter.
     pub fn new(pressure_hpa: f64, temperature_c: f64) -> Result<Self, EphemError> {

@@ -149,7 +149,13 @@ pub struct MoonOrbit {
 }
 
 impl MoonOrbit {
-    /// The perturbed position `(λ + Δλ, β + Δβ, r + Δr)`.
+    /// The perturbed position `(λ + Δλ, β + Δβ, r + Δr)`, λ reduced to `[0, 2π)`.
+    ///
+    /// # Returns
+    /// The [`MoonEcliptic`] position (radians; Earth equatorial radii).
+    ///
+    /// # References
+    /// Schlyter §9; tutorial §8 (306.9484°, −0.5856°, 60.6779 for 1990-04-19).
     pub fn ecliptic(&self) -> MoonEcliptic {
         MoonEcliptic {
             longitude: rev(self.longitude + self.longitude_perturbation),
