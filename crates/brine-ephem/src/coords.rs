@@ -39,17 +39,24 @@ pub struct Horizontal {
 }
 
 impl Horizontal {
-    /// Altitude and azimuth of an hour angle `H` and declination `δ` at latitude `φ`:
+    /// The direction in the observer's sky of a body at hour angle `H` and declination `δ`, seen
+    /// from latitude `φ` (a rotation of the equatorial frame about the east–west axis):
     /// `x = cos H cos δ`, `y = sin H cos δ`, `z = sin δ`; `x_hor = x sin φ − z cos φ`,
-    /// `z_hor = x cos φ + z sin φ`; `az = atan2(y, x_hor) + π`, `alt = asin(z_hor)`.
+    /// `z_hor = x cos φ + z sin φ`; `A = atan2(y, x_hor) + π`, `h = asin(z_hor)`.
     ///
     /// # Arguments
-    /// - `hour_angle`: `H` (rad), west positive.
-    /// - `declination`: `δ` (rad).
-    /// - `latitude`: `φ` (rad).
+    /// - `hour_angle`: `H` (rad), any value, west positive (`H = LST − α`).
+    /// - `declination`: `δ` (rad), `[−π/2, π/2]`.
+    /// - `latitude`: `φ` (rad), `[−π/2, π/2]`, north positive.
+    ///
+    /// # Returns
+    /// The [`Horizontal`] direction: altitude `h` (rad), `[−π/2, π/2]`; azimuth `A` from north
+    /// through east (rad), `[0, 2π)`.
     ///
     /// # References
-    /// Schlyter, "How to compute planetary positions", §12 (equation sheet §13).
+    /// Schlyter, "How to compute planetary positions", §12b, and his tutorial §6 (worked
+    /// example: H = 195.1808°, δ = 11.0084°, φ = 60° → A = 15.6767°, h = −17.9570°); equation
+    /// sheet §13.
     pub fn from_equatorial(hour_angle: f64, declination: f64, latitude: f64) -> Self {
         let (sh, ch) = hour_angle.sin_cos();
         let (sd, cd) = declination.sin_cos();
@@ -60,7 +67,7 @@ impl Horizontal {
         Self { altitude: z_hor.clamp(-1.0, 1.0).asin(), azimuth: rev(y.atan2(x_hor) + PI) }
     }
 
-    /// Altitude in degrees.
+    /// Altitude in degrees, `h · 180/π`, `[−90, 90]`.
     pub fn altitude_deg(&self) -> f64 {
         self.altitude.to_degrees()
     }
@@ -72,6 +79,9 @@ impl Horizontal {
 
     /// The unit vector toward this direction in Brine's world frame (y up, x east, z south):
     /// `(sin A cos h, sin h, −cos A cos h)`.
+    ///
+    /// # Returns
+    /// `[x, y, z]`, a unit vector (dimensionless).
     pub fn direction(&self) -> [f64; 3] {
         let (sa, ca) = self.azimuth.sin_cos();
         let (sh, ch) = self.altitude.sin_cos();
@@ -95,19 +105,24 @@ pub(crate) fn topocentric(geocentric: [f64; 3], local_sidereal_time: f64, observ
 mod tests {
     use super::*;
 
+    /// Exact identities evaluated in double precision: a few ulps of the angles involved.
+    const ROUNDING: f64 = 1e-12;
+    /// The azimuth at the meridian comes from `atan2` of a rounding-level `y`: looser.
+    const AZIMUTH_ROUNDING_DEG: f64 = 1e-9;
+
     #[test]
     fn meridian_transit_is_due_south_north_of_the_declination() {
         let h = Horizontal::from_equatorial(0.0, 10f64.to_radians(), 50f64.to_radians());
-        assert!((h.altitude_deg() - 50.0).abs() < 1e-12);
-        assert!((h.azimuth_deg() - 180.0).abs() < 1e-9);
+        assert!((h.altitude_deg() - 50.0).abs() < ROUNDING);
+        assert!((h.azimuth_deg() - 180.0).abs() < AZIMUTH_ROUNDING_DEG);
         let d = h.direction();
-        assert!(d[2] > 0.0 && d[0].abs() < 1e-12, "south is +z: {d:?}");
+        assert!(d[2] > 0.0 && d[0].abs() < ROUNDING, "south is +z: {d:?}");
     }
 
     #[test]
     fn spherical_round_trip() {
         let v = rectangular(1.0, -0.3, 2.0);
         let (l, b, r) = spherical(v);
-        assert!((l - 1.0).abs() < 1e-14 && (b + 0.3).abs() < 1e-14 && (r - 2.0).abs() < 1e-14);
+        assert!((l - 1.0).abs() < ROUNDING && (b + 0.3).abs() < ROUNDING && (r - 2.0).abs() < ROUNDING);
     }
 }

@@ -42,6 +42,12 @@ pub fn parse_utc(text: &str) -> Result<Timestamp, EphemError> {
 
 /// Checks that `t` lies in the supported range, 1800-01-01 .. 2200-01-01 UTC.
 ///
+/// # Arguments
+/// - `t`: the instant.
+///
+/// # Returns
+/// `t` unchanged.
+///
 /// # Errors
 /// [`EphemError::Time`] outside the range.
 pub fn check_range(t: Timestamp) -> Result<Timestamp, EphemError> {
@@ -90,12 +96,33 @@ pub fn schlyter_day(t: Timestamp) -> f64 {
     julian_date(t) - JD_SCHLYTER_EPOCH
 }
 
-/// Universal time of day in hours, `[0, 24)`.
+/// Universal time of day: the hours elapsed since the last 0h UTC, `UT = (t_unix mod 86400)/3600`
+/// (UTC taken as UT; leap seconds are not counted, as in `jiff`'s Unix timestamps).
+///
+/// # Arguments
+/// - `t`: the instant.
+///
+/// # Returns
+/// `UT` (h), `[0, 24)`.
+///
+/// # References
+/// Schlyter, "How to compute planetary positions" §5b (`SIDTIME = GMST0 + UT + LON/15`).
 pub fn ut_hours(t: Timestamp) -> f64 {
     unix_seconds(t).rem_euclid(SECONDS_PER_DAY) / 3600.0
 }
 
-/// Decimal year `2000 + (JD − 2451545)/365.25`, the argument of the ΔT estimate.
+/// The instant as a decimal year, `y = 2000 + (JD − 2451545)/365.25` (Julian years from J2000):
+/// the argument of the Espenak–Meeus ΔT polynomials.
+///
+/// # Arguments
+/// - `t`: the instant.
+///
+/// # Returns
+/// `y` (years): 2000.0 at 2000-01-01 12h UT.
+///
+/// # References
+/// Espenak F., Meeus J. 2006, "Five millennium canon of solar eclipses", NASA/TP-2006-214141
+/// (`y = year + (month − 0.5)/12`; the Julian-year form differs by < 0.05 yr, < 0.1 s of ΔT).
 pub fn decimal_year(t: Timestamp) -> f64 {
     2000.0 + (julian_date(t) - 2_451_545.0) / 365.25
 }
@@ -104,14 +131,21 @@ pub fn decimal_year(t: Timestamp) -> f64 {
 mod tests {
     use super::*;
 
+    /// A Julian date near 2.4×10⁶ days carries 5×10⁻¹⁰ day of double-precision rounding.
+    const JD_ROUNDING_DAYS: f64 = 1e-9;
+    /// Meeus prints JD 2436116.31 for 1957 October 4.81 exactly (19:26:24 UT); 10⁻⁶ day = 0.09 s.
+    const MEEUS_JD_DAYS: f64 = 1e-6;
+    /// `ut_hours` of a whole hour: exact up to rounding.
+    const HOURS_ROUNDING: f64 = 1e-12;
+
     #[test]
     fn schlyter_day_of_his_worked_example() {
         // Schlyter §3: 1990 April 19, 0:00 UT is d = −3543.
         let t = parse_utc("1990-04-19T00:00:00Z").unwrap();
-        assert!((schlyter_day(t) + 3543.0).abs() < 1e-9);
+        assert!((schlyter_day(t) + 3543.0).abs() < JD_ROUNDING_DAYS);
         // Meeus Example 7.a: 1957 October 4.81 is JD 2436116.31.
         let t = parse_utc("1957-10-04T19:26:24Z").unwrap();
-        assert!((julian_date(t) - 2_436_116.31).abs() < 1e-6);
+        assert!((julian_date(t) - 2_436_116.31).abs() < MEEUS_JD_DAYS);
     }
 
     #[test]
@@ -119,7 +153,7 @@ mod tests {
         let a = parse_utc("2024-06-21T14:00:00+02:00").unwrap();
         let b = parse_utc("2024-06-21T12:00:00Z").unwrap();
         assert_eq!(a, b);
-        assert!((ut_hours(b) - 12.0).abs() < 1e-12);
+        assert!((ut_hours(b) - 12.0).abs() < HOURS_ROUNDING);
         assert!(parse_utc("2024-06-21 noon").is_err());
         assert!(parse_utc("2024-06-21T12:00:00").is_err(), "a civil time without offset is ambiguous");
         assert!(parse_utc("2300-01-01T00:00:00Z").is_err());

@@ -77,6 +77,19 @@ const FULL_MOONS_2024: [&str; 12] = [
     "2024-12-15T09:02:00Z",
 ];
 
+/// Smallest Sun–Moon separation at full moon: 180° less the Moon's greatest ecliptic latitude
+/// (5.3°) and its parallax (1°), plus 0.2° for the topocentric Sun and the 1-minute catalogue
+/// rounding (the Moon moves 0.55′ per minute relative to the Sun).
+const FULL_MOON_MIN_SEPARATION_DEG: f64 = 173.5;
+/// Smallest illuminated fraction at full moon: the elongation is at least 180° − 5.3°, so
+/// `k ≥ cos²(5.3°/2) = 0.9979`; 0.997 leaves the 0.0008 measured error of `k`.
+const FULL_MOON_MIN_FRACTION: f64 = 0.997;
+/// Largest phase angle at full moon: the Moon's latitude 5.3° plus 0.3° (minute rounding and the
+/// Meeus phase-angle correction with the distances).
+const FULL_MOON_MAX_PHASE_DEG: f64 = 5.6;
+/// Largest illuminated fraction at new moon: `(1 − cos 5.6°)/2 = 0.0024`, rounded up.
+const NEW_MOON_MAX_FRACTION: f64 = 0.003;
+
 #[test]
 fn full_moon_is_opposite_the_sun() {
     let o = Observer::from_degrees(43.6, 1.44, 0.0).unwrap();
@@ -86,26 +99,32 @@ fn full_moon_is_opposite_the_sun() {
         let s = sun_position(t, &o, SunModel::Spa, &Options::default()).unwrap();
         // Opposite within the Moon's latitude (≤ 5.3°) and its parallax (≤ 1°).
         let sep = angle_deg(m.horizontal(), s.horizontal());
-        assert!(sep > 173.5, "{when}: sun–moon {sep}°");
+        assert!(sep > FULL_MOON_MIN_SEPARATION_DEG, "{when}: sun–moon {sep}°");
         // The elongation is 180° − |β| at opposition: illuminated fraction ≥ cos²(5.3°/2) = 0.9979.
-        assert!(m.illuminated_fraction > 0.997, "{when}: k = {}", m.illuminated_fraction);
-        assert!(m.phase_angle.to_degrees() < 5.6, "{when}: i = {}", m.phase_angle.to_degrees());
+        assert!(m.illuminated_fraction > FULL_MOON_MIN_FRACTION, "{when}: k = {}", m.illuminated_fraction);
+        assert!(m.phase_angle.to_degrees() < FULL_MOON_MAX_PHASE_DEG, "{when}: i = {}", m.phase_angle.to_degrees());
     }
     // A new moon (2024-06-06 12:38 UTC) is dark.
     let t = parse_utc("2024-06-06T12:38:00Z").unwrap();
     let m = moon_position(t, &o, &Options::default()).unwrap();
-    assert!(m.illuminated_fraction < 0.003, "k = {}", m.illuminated_fraction);
+    assert!(m.illuminated_fraction < NEW_MOON_MAX_FRACTION, "k = {}", m.illuminated_fraction);
 }
+
+/// Largest motion across the sky in one minute: the Earth's rotation moves the Sun and the Moon
+/// by at most 0.25° (0.2507° sidereal), plus 0.01° for the Moon's parallax change and own motion.
+const MOTION_PER_MINUTE_DEG: f64 = 0.26;
+/// The refraction stretches the apparent altitude near the horizon by up to 1 + 0.57 (its fade
+/// below −0.83°): 1.6.
+const REFRACTION_STRETCH: f64 = 1.6;
 
 #[test]
 fn positions_are_continuous_over_a_day() {
-    // Over one minute the Sun and the Moon move by at most 0.25° + 0.01° across the sky; the
-    // refraction stretches altitudes near the horizon by up to 1 + 0.57 (its fade below −0.83°).
     for ((lat, lon), refraction) in [(43.6, 1.44), (-70.0, 30.0), (89.0, 0.0), (0.0, 179.9)]
         .into_iter()
         .flat_map(|p| [(p, None), (p, Some(Atmosphere::standard()))])
     {
-        let limit = if refraction.is_some() { 0.26 * 1.6 } else { 0.26 };
+        let limit =
+            if refraction.is_some() { MOTION_PER_MINUTE_DEG * REFRACTION_STRETCH } else { MOTION_PER_MINUTE_DEG };
         let o = Observer::from_degrees(lat, lon, 0.0).unwrap();
         let start = parse_utc("2024-06-21T00:00:00Z").unwrap();
         let opts = Options { refraction, delta_t_s: None };
@@ -126,6 +145,18 @@ fn positions_are_continuous_over_a_day() {
     }
 }
 
+/// Earth–Sun distance range (AU): perihelion 0.98329, aphelion 1.01671 (1950–2050), widened by the
+/// 7.6×10⁻⁵ AU error of Schlyter's elements.
+const SUN_DISTANCE_AU: std::ops::RangeInclusive<f64> = 0.9832..=1.0168;
+/// Geocentric Moon distance range (km): perigee 356 371 km and apogee 406 720 km are the
+/// extremes of 1950–2050 (Meeus ch. 50), widened by the model's 0.33 % (about 1 300 km) error.
+const MOON_DISTANCE_KM: std::ops::RangeInclusive<f64> = 355_000.0..=408_000.0;
+/// The observer is at most one Earth radius plus 5 km from the centre: 6 400 km.
+const TOPOCENTRIC_OFFSET_KM: f64 = 6_400.0;
+/// The Moon's angular radius (degrees): from 0.24° (apogee, seen from the far side, 413 100 km)
+/// to 0.29° (perigee overhead, 350 000 km).
+const MOON_RADIUS_DEG: std::ops::Range<f64> = 0.24..0.29;
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
 
@@ -144,18 +175,15 @@ proptest! {
             let s = sun_position(t, &o, model, &opts).unwrap();
             prop_assert!(s.altitude.abs() <= std::f64::consts::FRAC_PI_2);
             prop_assert!((0.0..std::f64::consts::TAU).contains(&s.azimuth));
-            // Perihelion 0.98329 AU, aphelion 1.01671 AU.
-            prop_assert!((0.9832..=1.0168).contains(&s.distance_au), "r = {}", s.distance_au);
+            prop_assert!(SUN_DISTANCE_AU.contains(&s.distance_au), "r = {}", s.distance_au);
         }
         let m = moon_position(t, &o, &opts).unwrap();
         prop_assert!(m.altitude.abs() <= std::f64::consts::FRAC_PI_2);
         prop_assert!((0.0..std::f64::consts::TAU).contains(&m.azimuth));
-        // Perigee and apogee extremes of 1950–2050: 356 371 km and 406 720 km (Meeus ch. 50).
-        prop_assert!((355_500.0..=407_500.0).contains(&m.distance_km), "Δ = {}", m.distance_km);
-        prop_assert!((m.topocentric_distance_km - m.distance_km).abs() <= 6_400.0);
+        prop_assert!(MOON_DISTANCE_KM.contains(&m.distance_km), "Δ = {}", m.distance_km);
+        prop_assert!((m.topocentric_distance_km - m.distance_km).abs() <= TOPOCENTRIC_OFFSET_KM);
         prop_assert!((0.0..=1.0).contains(&m.illuminated_fraction));
         prop_assert!((0.0..=std::f64::consts::PI).contains(&m.phase_angle));
-        // Apogee seen from the far side (413 100 km) to perigee overhead (350 000 km).
-        prop_assert!((0.24..0.29).contains(&m.angular_radius().to_degrees()), "{}", m.angular_radius().to_degrees());
+        prop_assert!(MOON_RADIUS_DEG.contains(&m.angular_radius().to_degrees()), "{}", m.angular_radius().to_degrees());
     }
 }

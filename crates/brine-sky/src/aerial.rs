@@ -6,6 +6,7 @@ use std::f64::consts::PI;
 use glam::DVec3;
 
 use crate::RGB_WAVELENGTHS_NM;
+use crate::error::{SkyError, check};
 
 /// Refractive index of air `n` used by Preetham et al. (1.000278 at 550 nm is closer).
 pub const AIR_REFRACTIVE_INDEX: f64 = 1.0003;
@@ -63,10 +64,15 @@ pub fn mie_beta(wavelength_nm: f64, turbidity: f64, k: f64) -> f64 {
     0.434 * c * PI * (2.0 * PI / lambda).powf(JUNGE_EXPONENT - 2.0) * k * 0.01f64.powf(JUNGE_EXPONENT - 3.0)
 }
 
-/// Rayleigh phase function `Φ_R(θ) = 3/(16π)(1 + cos²θ)` (sr⁻¹, integrates to 1).
+/// Angular distribution of light scattered by molecules (much smaller than the wavelength),
+/// normalised over the sphere: `Φ_R(θ) = 3/(16π)(1 + cos²θ)`.
 ///
 /// # Arguments
-/// - `cos_theta`: cosine of the scattering angle, `[−1, 1]`.
+/// - `cos_theta`: cosine of the scattering angle `θ` between the incident and scattered
+///   directions, `[−1, 1]`.
+///
+/// # Returns
+/// `Φ_R` (sr⁻¹), `[3/(16π), 3/(8π)]` = `[0.0597, 0.119]`; `∫ Φ_R dω = 1`.
 ///
 /// # References
 /// Hoffman & Preetham 2002; equation sheet §8 (Chen et al.'s `3/π` is an erratum).
@@ -74,12 +80,15 @@ pub fn rayleigh_phase(cos_theta: f64) -> f64 {
     3.0 / (16.0 * PI) * (1.0 + cos_theta * cos_theta)
 }
 
-/// Normalised Henyey–Greenstein phase function
-/// `Φ_HG(θ) = (1 − g²)/(4π (1 + g² − 2g cos θ)^{3/2})` (sr⁻¹, integrates to 1).
+/// Angular distribution of light scattered by haze particles, a one-parameter forward lobe
+/// normalised over the sphere: `Φ_HG(θ) = (1 − g²)/(4π (1 + g² − 2g cos θ)^{3/2})`.
 ///
 /// # Arguments
-/// - `cos_theta`: cosine of the scattering angle, `[−1, 1]`.
-/// - `g`: asymmetry, `(−1, 1)`.
+/// - `cos_theta`: cosine of the scattering angle `θ`, `[−1, 1]`.
+/// - `g`: asymmetry `⟨cos θ⟩`, `(−1, 1)` (0 isotropic; haze 0.7–0.8, [`HAZE_ASYMMETRY`]).
+///
+/// # Returns
+/// `Φ_HG` (sr⁻¹), `> 0`: `1/(4π)` for `g = 0`, `(1 + g)/(4π(1 − g)²)` forward; `∫ Φ_HG dω = 1`.
 ///
 /// # References
 /// Henyey & Greenstein 1941, Astrophys. J. 93:70; equation sheet §8 (Hoffman & Preetham and Chen et al.
@@ -120,7 +129,16 @@ pub struct AerialPerspective {
 }
 
 impl AerialPerspective {
-    /// `L = L₀ F_ex + L_in`.
+    /// The radiance of an object seen through the segment, `L = L₀ ⊙ F_ex + L_in`.
+    ///
+    /// # Arguments
+    /// - `l0`: radiance leaving the object (linear sRGB, kcd m⁻²), `≥ 0`.
+    ///
+    /// # Returns
+    /// `L` at the eye (linear sRGB, kcd m⁻²).
+    ///
+    /// # References
+    /// Hoffman & Preetham 2002; Chen et al. 2007, Eq. 2.
     pub fn apply(&self, l0: DVec3) -> DVec3 {
         l0 * self.extinction + self.inscatter
     }
@@ -136,22 +154,48 @@ pub struct Scattering {
 }
 
 impl Scattering {
-    /// The coefficients for turbidity `T` ([`rayleigh_beta`], [`mie_beta`] at
-    /// [`RGB_WAVELENGTHS_NM`]).
-    pub fn new(turbidity: f64) -> Self {
+    /// The sea-level coefficients for turbidity `T`: `β_R(λ)` ([`rayleigh_beta`]) and
+    /// `β_M(λ, T)` ([`mie_beta`] with Preetham's `K(λ)` = 0.686, 0.678, 0.666) at the three
+    /// [`RGB_WAVELENGTHS_NM`] (680, 550, 450 nm).
+    ///
+    /// # Arguments
+    /// - `turbidity`: `T`, `[1.7, 10]` (Preetham's domain).
+    ///
+    /// # Returns
+    /// The [`Scattering`] coefficients (m⁻¹).
+    ///
+    /// # Errors
+    /// [`SkyError::OutOfRange`] naming `turbidity` outside `[1.7, 10]` or not finite.
+    ///
+    /// # References
+    /// Preetham et al. 1999, Appendix A.3; Hoffman & Preetham 2002.
+    pub fn new(turbidity: f64) -> Result<Self, SkyError> {
+        let turbidity = check("turbidity", turbidity, (1.7..=10.0).contains(&turbidity), "[1.7, 10]")?;
         let [r, g, b] = RGB_WAVELENGTHS_NM;
-        Self {
+        Ok(Self {
             rayleigh: DVec3::new(rayleigh_beta(r), rayleigh_beta(g), rayleigh_beta(b)),
             mie: DVec3::new(
                 mie_beta(r, turbidity, MIE_K_RGB[0]),
                 mie_beta(g, turbidity, MIE_K_RGB[1]),
                 mie_beta(b, turbidity, MIE_K_RGB[2]),
             ),
-        }
+        })
     }
 
     /// Optical depths `(τ_R, τ_M)` per channel of the segment from height `h₀` in direction `d`
-    /// over `s` ([`optical_depth`] for each species).
+    /// over `s`: `τ = β₀ e^{−h₀/H}(1 − e^{−s d_y/H})/(d_y/H)` for each species ([`optical_depth`],
+    /// `H` = 8803 m and 1200 m).
+    ///
+    /// # Arguments
+    /// - `height_m`: `h₀` (m).
+    /// - `direction`: unit direction of the segment (its `y` is `cos θ`).
+    /// - `length_m`: `s ≥ 0` (m).
+    ///
+    /// # Returns
+    /// `(τ_R, τ_M)` per RGB channel (dimensionless, `≥ 0`).
+    ///
+    /// # References
+    /// Preetham et al. 1999, Appendix A.3.
     pub fn optical_depths(&self, height_m: f64, direction: DVec3, length_m: f64) -> (DVec3, DVec3) {
         let c = direction.y;
         let fr = optical_depth(1.0, RAYLEIGH_SCALE_HEIGHT_M, height_m, c, length_m);
@@ -216,6 +260,16 @@ mod tests {
 
     /// The sheet's oracles are printed to 5 significant digits.
     const ORACLE: f64 = 1e-4;
+    /// 3/(16π) = 0.0596831 and 1/(4π) = 0.0795775 printed to 6 significant digits.
+    const SIX_DIGITS: f64 = 1e-6;
+    /// Midpoint rule in μ over 20 000 cells: < 10⁻⁶ for Rayleigh, < 10⁻⁴ for the g = 0.76 lobe.
+    const QUADRATURE_RAYLEIGH: f64 = 1e-6;
+    const QUADRATURE_HG: f64 = 1e-4;
+    /// Closed forms evaluated in double precision.
+    const ROUNDING: f64 = 1e-12;
+    /// The optical depth at cos θ = 10⁻⁹ against the horizontal limit: the first-order term
+    /// `α s cos θ/2` is 2×10⁻⁵ × 10⁻⁹ here; 10⁻⁶ leaves rounding room.
+    const GRAZING_LIMIT: f64 = 1e-6;
 
     #[test]
     fn coefficient_oracles() {
@@ -223,8 +277,8 @@ mod tests {
         assert_relative_eq!(rayleigh_beta(450.0), 3.0266e-5, max_relative = ORACLE);
         assert_relative_eq!(rayleigh_beta(650.0), 6.9526e-6, max_relative = ORACLE);
         assert_relative_eq!(mie_beta(550.0, 2.0, 0.678), 7.936e-5, max_relative = ORACLE);
-        assert_relative_eq!(rayleigh_phase(0.0), 0.0596831, max_relative = 1e-6);
-        assert_relative_eq!(henyey_greenstein(0.5, 0.0), 0.0795775, max_relative = 1e-6);
+        assert_relative_eq!(rayleigh_phase(0.0), 0.0596831, max_relative = SIX_DIGITS);
+        assert_relative_eq!(henyey_greenstein(0.5, 0.0), 0.0795775, max_relative = SIX_DIGITS);
     }
 
     #[test]
@@ -237,27 +291,36 @@ mod tests {
             r += rayleigh_phase(mu) * 2.0 * PI * 2.0 / n as f64;
             h += henyey_greenstein(mu, HAZE_ASYMMETRY) * 2.0 * PI * 2.0 / n as f64;
         }
-        assert!((r - 1.0).abs() < 1e-6 && (h - 1.0).abs() < 1e-4, "{r} {h}");
+        assert!((r - 1.0).abs() < QUADRATURE_RAYLEIGH && (h - 1.0).abs() < QUADRATURE_HG, "{r} {h}");
     }
 
     #[test]
     fn optical_depth_limits() {
         // Horizontal: τ = β₀ e^{−h/H} s. Vertical to infinity: τ = β₀ H e^{−h/H}.
         let t = optical_depth(2.0, 1000.0, 0.0, 0.0, 500.0);
-        assert_relative_eq!(t, 1000.0, max_relative = 1e-12);
+        assert_relative_eq!(t, 1000.0, max_relative = ROUNDING);
         let t = optical_depth(1e-5, 8803.0, 100.0, 1.0, 1e9);
-        assert_relative_eq!(t, 1e-5 * 8803.0 * (-100.0f64 / 8803.0).exp(), max_relative = 1e-12);
+        assert_relative_eq!(t, 1e-5 * 8803.0 * (-100.0f64 / 8803.0).exp(), max_relative = ROUNDING);
         // Continuity through cos θ = 0.
         let a = optical_depth(1e-5, 1200.0, 10.0, 1e-9, 5e4);
         let b = optical_depth(1e-5, 1200.0, 10.0, 0.0, 5e4);
-        assert_relative_eq!(a, b, max_relative = 1e-6);
+        assert_relative_eq!(a, b, max_relative = GRAZING_LIMIT);
+    }
+
+    #[test]
+    fn bad_turbidity_is_named() {
+        for t in [1.0, 12.0, f64::NAN] {
+            let e = Scattering::new(t).unwrap_err();
+            assert!(e.to_string().contains("turbidity"), "{e}");
+        }
+        assert!(Scattering::new(1.7).is_ok() && Scattering::new(10.0).is_ok());
     }
 
     #[test]
     fn homogeneous_limit_is_hoffman_preetham() {
         // A horizontal ray at constant height sees a homogeneous medium: L_in must be the closed
         // form [β_R Φ_R + β_M Φ_M]/(β_R + β_M) E (1 − e^{−(β_R+β_M)s}).
-        let sc = Scattering::new(3.0);
+        let sc = Scattering::new(3.0).unwrap();
         let d = DVec3::X;
         let sun = DVec3::new(0.6, 0.0, 0.8);
         let e = DVec3::new(80.0, 90.0, 100.0);
@@ -268,7 +331,7 @@ mod tests {
             * e
             * (DVec3::ONE - (-bsum * 20_000.0).exp());
         for k in 0..3 {
-            assert_relative_eq!(ap.inscatter[k], want[k], max_relative = 1e-12);
+            assert_relative_eq!(ap.inscatter[k], want[k], max_relative = ROUNDING);
         }
     }
 }

@@ -21,7 +21,18 @@ pub struct PerezCoefficients {
 }
 
 impl PerezCoefficients {
-    /// Luminance `Y` coefficients for turbidity `T` (Preetham et al. 1999, Appendix A.2).
+    /// The Perez coefficients of the sky luminance `Y`, linear in turbidity:
+    /// `A = 0.1787 T − 1.4630`, `B = −0.3554 T + 0.4275`, `C = −0.0227 T + 5.3251`,
+    /// `D = 0.1206 T − 2.5771`, `E = −0.0670 T + 0.3703`.
+    ///
+    /// # Arguments
+    /// - `t`: turbidity `T`, `[1.7, 10]`.
+    ///
+    /// # Returns
+    /// The [`PerezCoefficients`] (dimensionless; `D` in rad⁻¹).
+    ///
+    /// # References
+    /// Preetham et al. 1999, Appendix A.2 (fit to the Perez et al. 1993 distribution).
     pub fn luminance(t: f64) -> Self {
         Self {
             a: 0.1787 * t - 1.4630,
@@ -32,7 +43,18 @@ impl PerezCoefficients {
         }
     }
 
-    /// Chromaticity `x` coefficients for turbidity `T` (Preetham et al. 1999, Appendix A.2).
+    /// The Perez coefficients of the sky chromaticity `x`, linear in turbidity:
+    /// `A = −0.0193 T − 0.2592`, `B = −0.0665 T + 0.0008`, `C = −0.0004 T + 0.2125`,
+    /// `D = −0.0641 T − 0.8989`, `E = −0.0033 T + 0.0452`.
+    ///
+    /// # Arguments
+    /// - `t`: turbidity `T`, `[1.7, 10]`.
+    ///
+    /// # Returns
+    /// The [`PerezCoefficients`] (dimensionless; `D` in rad⁻¹).
+    ///
+    /// # References
+    /// Preetham et al. 1999, Appendix A.2.
     pub fn chromaticity_x(t: f64) -> Self {
         Self {
             a: -0.0193 * t - 0.2592,
@@ -43,7 +65,18 @@ impl PerezCoefficients {
         }
     }
 
-    /// Chromaticity `y` coefficients for turbidity `T` (Preetham et al. 1999, Appendix A.2).
+    /// The Perez coefficients of the sky chromaticity `y`, linear in turbidity:
+    /// `A = −0.0167 T − 0.2608`, `B = −0.0950 T + 0.0092`, `C = −0.0079 T + 0.2102`,
+    /// `D = −0.0441 T − 1.6537`, `E = −0.0109 T + 0.0529`.
+    ///
+    /// # Arguments
+    /// - `t`: turbidity `T`, `[1.7, 10]`.
+    ///
+    /// # Returns
+    /// The [`PerezCoefficients`] (dimensionless; `D` in rad⁻¹).
+    ///
+    /// # References
+    /// Preetham et al. 1999, Appendix A.2.
     pub fn chromaticity_y(t: f64) -> Self {
         Self {
             a: -0.0167 * t - 0.2608,
@@ -149,9 +182,16 @@ impl PreethamSky {
     /// - `turbidity`: `T`, `[1.7, 10]`.
     /// - `sun_direction`: direction toward the sun, y up; its elevation must be in `[0°, 90°]`.
     ///
+    /// # Returns
+    /// The sky, with the Perez coefficients, the zenith values `Y_z`, `x_z`, `y_z` and the
+    /// normalisations `F(0, θ_s)` computed once.
+    ///
     /// # Errors
     /// [`SkyError::OutOfRange`] for a turbidity outside `[1.7, 10]` or a sun below the horizon
     /// (the daylight model does not hold there).
+    ///
+    /// # References
+    /// Preetham et al. 1999, §3 and Appendix A.2.
     pub fn new(turbidity: f64, sun_direction: DVec3) -> Result<Self, SkyError> {
         let turbidity = check("turbidity", turbidity, (1.7..=10.0).contains(&turbidity), "[1.7, 10]")?;
         let d = sun_direction.normalize_or_zero();
@@ -213,19 +253,46 @@ impl PreethamSky {
         )
     }
 
-    /// Sky radiance as CIE XYZ (kcd m⁻²) for a unit view direction.
+    /// Sky radiance as CIE XYZ for a view direction, from [`PreethamSky::yxy`]:
+    /// `X = xY/y`, `Y`, `Z = (1 − x − y)Y/y` (`Y` clamped at 0).
+    ///
+    /// # Arguments
+    /// - `view`: view direction, y up (normalised here); below [`MIN_COS_VIEW`] it is evaluated
+    ///   at that cosine.
+    ///
+    /// # Returns
+    /// `(X, Y, Z)` in kcd m⁻² (Y is the luminance), finite and `Y ≥ 0`.
+    ///
+    /// # References
+    /// Preetham et al. 1999, Eq. 3–4; CIE 15:2004 (xyY to XYZ).
     pub fn xyz(&self, view: DVec3) -> DVec3 {
         let (lum, x, y) = self.yxy(view);
         xyy_to_xyz(x, y, lum.max(0.0))
     }
 
-    /// Sky radiance as linear sRGB (Y in kcd m⁻²), negative components clipped to 0.
+    /// Sky radiance as linear sRGB, `RGB = M_{XYZ→sRGB} · XYZ` ([`PreethamSky::xyz`], Rec. 709
+    /// primaries, D65), negative components (out of gamut) clipped to 0.
+    ///
+    /// # Arguments
+    /// - `view`: view direction, y up.
+    ///
+    /// # Returns
+    /// Linear sRGB radiance, each channel `≥ 0`, scaled so that its luminance is in kcd m⁻².
+    ///
+    /// # References
+    /// Preetham et al. 1999; IEC 61966-2-1 (sRGB).
     pub fn radiance_rgb(&self, view: DVec3) -> DVec3 {
         xyz_to_linear_srgb(self.xyz(view)).max(DVec3::ZERO)
     }
 
     /// Irradiance from the sky dome on a horizontal surface facing up,
     /// `E = ∫ L(ω) cos θ dω` (linear sRGB, klx), by the midpoint rule on 48 × 96 cells.
+    ///
+    /// # Returns
+    /// `E` per linear sRGB channel (klx), `≥ 0` (the sun's disc excluded).
+    ///
+    /// # References
+    /// Preetham et al. 1999 (the radiance integrated over the upper hemisphere).
     pub fn horizontal_irradiance_rgb(&self) -> DVec3 {
         let (nt, np) = (48, 96);
         let dtheta = std::f64::consts::FRAC_PI_2 / nt as f64;
@@ -253,6 +320,8 @@ mod tests {
     const ORACLE: f64 = 1e-4;
     /// Chromaticity tolerance of the equation sheet (5-digit vs 4-digit matrices).
     const CHROMA: f64 = 5e-4;
+    /// The Perez ratios of the sheet are printed with 4 digits: 2×10⁻⁴ relative.
+    const PEREZ_RATIO: f64 = 2e-4;
 
     #[test]
     fn zenith_values() {
@@ -270,9 +339,9 @@ mod tests {
         let k = PerezCoefficients::luminance(3.0);
         let ts = 45f64.to_radians();
         let r1 = perez(60f64.to_radians().cos(), 90f64.to_radians(), &k) / perez(1.0, ts, &k);
-        assert_relative_eq!(r1, 0.8407, max_relative = 2e-4);
+        assert_relative_eq!(r1, 0.8407, max_relative = PEREZ_RATIO);
         let r2 = perez(45f64.to_radians().cos(), 0.5f64.to_radians(), &k) / perez(1.0, ts, &k);
-        assert_relative_eq!(r2, 3.853, max_relative = 2e-4);
+        assert_relative_eq!(r2, 3.853, max_relative = PEREZ_RATIO);
     }
 
     #[test]

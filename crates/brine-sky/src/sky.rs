@@ -80,14 +80,30 @@ impl Disc {
         self.angular_radius.cos()
     }
 
-    /// Solid angle of the disc, `2π(1 − cos ρ)` (sr).
+    /// Solid angle of the disc, `Ω = 2π(1 − cos ρ)`.
+    ///
+    /// # Returns
+    /// `Ω` (sr): 6.8×10⁻⁵ for the sun.
+    ///
+    /// # References
+    /// The solid angle of a spherical cap.
     pub fn solid_angle(&self) -> f64 {
         TAU * (1.0 - self.angular_radius.cos())
     }
 }
 
 /// Fraction of a disc of angular radius `ρ` whose centre is at elevation `e` lying above the
-/// horizon: the circular-segment area `(acos(−h) + h√(1 − h²))/π`, `h = clamp(e/ρ, −1, 1)`.
+/// (flat) horizon: the circular-segment area `(acos(−h) + h√(1 − h²))/π`, `h = clamp(e/ρ, −1, 1)`.
+///
+/// # Arguments
+/// - `elevation`: `e` of the disc's centre (rad), any.
+/// - `angular_radius`: `ρ` (rad), `> 0`.
+///
+/// # Returns
+/// The fraction, `[0, 1]`: ½ with the centre on the horizon.
+///
+/// # References
+/// The area of a circular segment (small-disc, flat-sky approximation).
 pub fn visible_fraction(elevation: f64, angular_radius: f64) -> f64 {
     let h = (elevation / angular_radius).clamp(-1.0, 1.0);
     ((-h).acos() + h * (1.0 - h * h).sqrt()) / PI
@@ -145,8 +161,18 @@ impl Sky {
     /// clouds, and integrates the dome once for the horizontal irradiance and the ambient
     /// in-scattering.
     ///
+    /// # Arguments
+    /// - `params`: the [`SkyParams`] (ranges in their field docs; the Moon's and the clouds'
+    ///   parameters are checked too).
+    ///
+    /// # Returns
+    /// The [`Sky`], ready to be evaluated (no call after this one integrates or allocates).
+    ///
     /// # Errors
     /// [`SkyError::OutOfRange`] naming the first parameter outside its range.
+    ///
+    /// # References
+    /// Preetham et al. 1999; Hoffman & Preetham 2002; Jensen et al. 2001; Chen et al. 2007 §3.1–3.2.
     pub fn new(params: &SkyParams) -> Result<Self, SkyError> {
         let t = check("turbidity", params.turbidity, (1.7..=10.0).contains(&params.turbidity), "[1.7, 10]")?;
         let sd = params.sun_direction;
@@ -173,7 +199,7 @@ impl Sky {
 
         // Day and twilight.
         let day = PreethamSky::new(t, clamp_to_horizon(s))?;
-        let twilight = (sun_elevation < 0.0).then(|| TwilightRatio::new(sun_elevation, t));
+        let twilight = (sun_elevation < 0.0).then(|| TwilightRatio::new(sun_elevation, t)).transpose()?;
 
         // The Moon.
         let mut moon = None;
@@ -235,7 +261,7 @@ impl Sky {
             time_s: params.time_s,
             cloud_diffuse: DVec3::ZERO,
             cloud_sun: DVec3::ZERO,
-            scattering: Scattering::new(t),
+            scattering: Scattering::new(t)?,
             lights,
             ambient: DVec3::ZERO,
             horizontal_irradiance: DVec3::ZERO,
@@ -298,6 +324,17 @@ impl Sky {
     /// the sun (or the Moon) clamped to the horizon, `r` the twilight ratio (1 by day),
     /// `f_m` the Moon-to-Sun illuminance ratio (faded below the horizon) and `L_night` the
     /// natural night glow (white).
+    ///
+    /// # Arguments
+    /// - `view`: view direction, y up (normalised here); below the horizon it sees the sky at
+    ///   the horizon.
+    ///
+    /// # Returns
+    /// Linear sRGB radiance (kcd m⁻²), finite and `≥ 0`.
+    ///
+    /// # References
+    /// Preetham et al. 1999; Nishita et al. 1993 (twilight ratio); Jensen et al. 2001 (moonlit
+    /// sky); Krisciunas & Schaefer 1991 (night glow).
     pub fn clear_radiance_rgb(&self, view: DVec3) -> DVec3 {
         let v = view.normalize_or_zero();
         let mut l = self.day.radiance_rgb(v);
@@ -315,8 +352,18 @@ impl Sky {
     }
 
     /// Radiance of the sky toward a unit view direction, clouds included, discs excluded (linear
-    /// sRGB, kcd m⁻²). Views below the horizon see the sky at the horizon. Finite and
-    /// non-negative for every direction and every sun elevation.
+    /// sRGB, kcd m⁻²): `L = (1 − α) L_clear + α L_cloud`, `α` the cloud opacity. Views below the
+    /// horizon see the sky at the horizon.
+    ///
+    /// # Arguments
+    /// - `view`: view direction, y up (normalised here).
+    ///
+    /// # Returns
+    /// Linear sRGB radiance (kcd m⁻²), finite and non-negative for every direction and every
+    /// sun elevation.
+    ///
+    /// # References
+    /// Chen et al. 2007, §3.1 (clouds over the sky sphere).
     pub fn radiance_rgb(&self, view: DVec3) -> DVec3 {
         let v = view.normalize_or_zero();
         let clear = self.clear_radiance_rgb(v);
@@ -343,6 +390,15 @@ impl Sky {
     /// Radiance of the sun disc toward `view`: the disc's radiance inside its angular radius,
     /// zero outside or once it has set (linear sRGB, kcd m⁻²). The horizon does not cut the disc
     /// here (the sea hides its lower part).
+    ///
+    /// # Arguments
+    /// - `view`: view direction, y up (normalised here).
+    ///
+    /// # Returns
+    /// Linear sRGB radiance (kcd m⁻²): the disc's, or 0.
+    ///
+    /// # References
+    /// Preetham et al. 1999, Appendix A.1 (the disc's radiance).
     pub fn sun_radiance_rgb(&self, view: DVec3) -> DVec3 {
         if view.normalize_or_zero().dot(self.sun.direction) >= self.sun.cos_half_angle() {
             self.sun.radiance_rgb
@@ -355,6 +411,12 @@ impl Sky {
     /// law `L = K cos i/(cos i + cos e)` on the sphere lit from the Sun's direction (the phase
     /// and the terminator), `K` normalised so that the disc's integral is the Moon's
     /// irradiance; zero outside the disc, on its dark side or without a Moon.
+    ///
+    /// # Arguments
+    /// - `view`: view direction, y up (normalised here).
+    ///
+    /// # Returns
+    /// Linear sRGB radiance (kcd m⁻²), `≥ 0`.
     ///
     /// # References
     /// Jensen et al. 2001, §4.1 (Lommel–Seeliger lunar reflectance).
@@ -378,7 +440,17 @@ impl Sky {
     }
 
     /// Everything seen toward `view`: the sky (with clouds) and, where the clouds let them
-    /// through, the sun and moon discs (linear sRGB, kcd m⁻²).
+    /// through, the sun and moon discs (linear sRGB, kcd m⁻²):
+    /// `L = L_sky + (1 − α)(L_sun + L_moon)`.
+    ///
+    /// # Arguments
+    /// - `view`: view direction, y up (normalised here).
+    ///
+    /// # Returns
+    /// Linear sRGB radiance (kcd m⁻²), finite and `≥ 0`.
+    ///
+    /// # References
+    /// Chen et al. 2007, §3.1; Preetham et al. 1999.
     pub fn background_rgb(&self, view: DVec3) -> DVec3 {
         let v = view.normalize_or_zero();
         let sky = self.radiance_rgb(v);
@@ -390,7 +462,16 @@ impl Sky {
         sky + discs * (1.0 - alpha)
     }
 
-    /// The sky radiance as CIE XYZ (kcd m⁻²), from [`Sky::radiance_rgb`].
+    /// The sky radiance as CIE XYZ, `XYZ = M_{sRGB→XYZ} · RGB` of [`Sky::radiance_rgb`].
+    ///
+    /// # Arguments
+    /// - `view`: view direction, y up.
+    ///
+    /// # Returns
+    /// `(X, Y, Z)` in kcd m⁻², `≥ 0`.
+    ///
+    /// # References
+    /// IEC 61966-2-1 (sRGB, D65); CIE 15:2004.
     pub fn radiance_xyz(&self, view: DVec3) -> DVec3 {
         linear_srgb_to_xyz(self.radiance_rgb(view))
     }
@@ -412,6 +493,17 @@ impl Sky {
     /// exponential Rayleigh and haze layers, lit by the sun and the Moon (their irradiance at sea
     /// level, zero below the horizon) and the ambient sky; see
     /// [`Scattering::aerial_perspective`]. Apply as `L = L₀ F_ex + L_in`.
+    ///
+    /// # Arguments
+    /// - `height_m`: eye height `h₀` (m), `≥ 0` in a scene.
+    /// - `direction`: view direction (normalised here).
+    /// - `length_m`: segment length `s ≥ 0` (m).
+    ///
+    /// # Returns
+    /// The [`AerialPerspective`]: `F_ex ∈ (0, 1]`, `L_in ≥ 0` (kcd m⁻²).
+    ///
+    /// # References
+    /// Hoffman & Preetham 2002; Chen et al. 2007, Eq. 2–8.
     pub fn aerial_perspective(&self, height_m: f64, direction: DVec3, length_m: f64) -> AerialPerspective {
         self.scattering.aerial_perspective(
             height_m,
@@ -432,6 +524,16 @@ impl Sky {
 mod tests {
     use super::*;
 
+    /// By day `Sky` adds only the night glow to Preetham's sky: 2.5×10⁻⁷ kcd m⁻² at the zenith,
+    /// at most 6.7×10⁻⁷ at the horizon.
+    const NIGHT_GLOW_MAX: f64 = 1e-6;
+    /// Relative jump allowed across e = 0 for a 2×10⁻⁷ rad change of the sun's elevation.
+    const SUNSET_CONTINUITY: f64 = 1e-4;
+    /// Closed forms evaluated in double precision.
+    const ROUNDING: f64 = 1e-12;
+    /// Midpoint rule on 200 × 200 cells over the disc: 0.5 % from the edge cells; 1 %.
+    const DISC_QUADRATURE: f64 = 0.01;
+
     fn dir(elevation_deg: f64, azimuth_deg: f64) -> DVec3 {
         let (e, a) = (elevation_deg.to_radians(), azimuth_deg.to_radians());
         DVec3::new(a.sin() * e.cos(), e.sin(), -a.cos() * e.cos())
@@ -445,7 +547,7 @@ mod tests {
         for v in [dir(90.0, 0.0), dir(10.0, 90.0), dir(45.0, 200.0)] {
             let d = sky.clear_radiance_rgb(v) - p.radiance_rgb(v);
             // Only the night glow (2.5×10⁻⁷ kcd m⁻² at the zenith, ≤ 6.7×10⁻⁷) is added.
-            assert!(d.abs().max_element() < 1e-6, "{d:?}");
+            assert!(d.abs().max_element() < NIGHT_GLOW_MAX, "{d:?}");
         }
     }
 
@@ -454,14 +556,14 @@ mod tests {
         let v = dir(20.0, 250.0);
         let above = Sky::new(&SkyParams::new(3.0, dir(1e-7, 270.0))).unwrap().radiance_rgb(v);
         let below = Sky::new(&SkyParams::new(3.0, dir(-1e-7, 270.0))).unwrap().radiance_rgb(v);
-        assert!(((above - below) / above).abs().max_element() < 1e-4, "{above:?} {below:?}");
+        assert!(((above - below) / above).abs().max_element() < SUNSET_CONTINUITY, "{above:?} {below:?}");
     }
 
     #[test]
     fn visible_fraction_limits() {
-        assert!((visible_fraction(0.0, 0.01) - 0.5).abs() < 1e-12);
-        assert!((visible_fraction(0.02, 0.01) - 1.0).abs() < 1e-12);
-        assert!(visible_fraction(-0.02, 0.01).abs() < 1e-12);
+        assert!((visible_fraction(0.0, 0.01) - 0.5).abs() < ROUNDING);
+        assert!((visible_fraction(0.02, 0.01) - 1.0).abs() < ROUNDING);
+        assert!(visible_fraction(-0.02, 0.01).abs() < ROUNDING);
     }
 
     #[test]
@@ -489,7 +591,7 @@ mod tests {
                 }
             }
             let want = disc.irradiance_rgb / disc.visible_fraction;
-            assert!(((e - want) / want).abs().max_element() < 0.01, "{phase_deg}: {e:?} vs {want:?}");
+            assert!(((e - want) / want).abs().max_element() < DISC_QUADRATURE, "{phase_deg}: {e:?} vs {want:?}");
         }
     }
 }

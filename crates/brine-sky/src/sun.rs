@@ -218,11 +218,22 @@ pub struct Sun {
 
 impl Sun {
     /// The sun in direction `direction` (y up) through an atmosphere of turbidity `T`, at 1 AU:
-    /// [`sun_radiance_xyz`] at the air mass of its zenith angle, in linear sRGB.
+    /// `L = M_{XYZ→sRGB} · XYZ(T, m(θ_s))` ([`sun_radiance_xyz`] at the [`relative_air_mass`] of
+    /// its zenith angle `θ_s`), negative channels clipped to 0.
+    ///
+    /// # Arguments
+    /// - `turbidity`: `T`, `[1.7, 10]`.
+    /// - `direction`: toward the sun, y up (normalised here); elevation `[0°, 90°]`.
+    ///
+    /// # Returns
+    /// The [`Sun`]: its unit direction and disc radiance (linear sRGB, kcd m⁻²).
     ///
     /// # Errors
     /// [`SkyError::OutOfRange`] for a turbidity outside `[1.7, 10]` or a sun below the horizon
     /// (use [`crate::Sky`] for all elevations).
+    ///
+    /// # References
+    /// Preetham et al. 1999, Appendix A.1.
     pub fn through_atmosphere(turbidity: f64, direction: DVec3) -> Result<Self, SkyError> {
         let turbidity = check("turbidity", turbidity, (1.7..=10.0).contains(&turbidity), "[1.7, 10]")?;
         let d = direction.normalize_or_zero();
@@ -256,13 +267,26 @@ impl Sun {
 mod tests {
     use super::*;
 
+    /// Kasten's fit gives m(0°) = 1 to 3×10⁻⁴.
+    const KASTEN_ZENITH: f64 = 1e-3;
+    /// m(90°) = 36.51 printed to 2 decimals: half a unit plus rounding.
+    const KASTEN_HORIZON: f64 = 0.01;
+    /// Leckner's 1978 Rayleigh fit against Bucholtz 1995: 5 %.
+    const LECKNER_FIT: f64 = 0.05;
+    /// The solar illuminance constant 128–134 klx around 131 klx (±2.3 %), and the table
+    /// stopping at 750 nm (ȳ(750) = 1.2×10⁻⁴) and its 10 nm steps: ±8 %.
+    const SOLAR_CONSTANT: f64 = 0.08;
+    /// Measured clear-sky direct normal illuminance at air mass 1.5: 90–110 klx, widened for one
+    /// turbidity standing for many atmospheres.
+    const DIRECT_NORMAL_KLX: std::ops::RangeInclusive<f64> = 85.0..=115.0;
+
     #[test]
     fn air_mass_is_one_at_zenith_and_36_5_at_horizon() {
         // Kasten 1966 gives m(0°) = 1 (to 3·10⁻⁴) and m(90°) = 1/(0.15·3.885^−1.253) = 36.51
         // (Kasten & Young 1989 later refit the horizon value to 38.09).
-        assert!((relative_air_mass(0.0) - 1.0).abs() < 1e-3);
+        assert!((relative_air_mass(0.0) - 1.0).abs() < KASTEN_ZENITH);
         let m = relative_air_mass(std::f64::consts::FRAC_PI_2);
-        assert!((m - 36.51).abs() < 0.01, "m = {m}");
+        assert!((m - 36.51).abs() < KASTEN_HORIZON, "m = {m}");
     }
 
     #[test]
@@ -271,7 +295,7 @@ mod tests {
         // τ_R(550 nm) = 0.09726, τ_R(450 nm) = 0.2245. Tolerance 5 % (Leckner's 1978 fit).
         for (l, tau) in [(550.0, 0.09726), (450.0, 0.2245)] {
             let got = -rayleigh_transmittance(l, 1.0).ln();
-            assert!((got / tau - 1.0).abs() < 0.05, "τ_R({l}) = {got}");
+            assert!((got / tau - 1.0).abs() < LECKNER_FIT, "τ_R({l}) = {got}");
         }
     }
 
@@ -282,11 +306,11 @@ mod tests {
         // CIE 85: 128 klx). The table stops at 750 nm (ȳ(750) = 1.2×10⁻⁴): tolerance ±8 %.
         let top = sun_radiance_xyz(2.0, 0.0);
         let e0 = top.y * SUN_SOLID_ANGLE;
-        assert!((e0 / 131.0 - 1.0).abs() < 0.08, "E0 = {e0} klx");
+        assert!((e0 / 131.0 - 1.0).abs() < SOLAR_CONSTANT, "E0 = {e0} klx");
         // Direct normal illuminance at air mass 1.5 in clean air (T = 2): measured clear-sky
         // values are 90–110 klx (e.g. Darula et al.); a wide band because T = 2 is one atmosphere.
         let e = sun_radiance_xyz(2.0, 1.5).y * SUN_SOLID_ANGLE;
-        assert!((85.0..=115.0).contains(&e), "E(m = 1.5) = {e} klx");
+        assert!(DIRECT_NORMAL_KLX.contains(&e), "E(m = 1.5) = {e} klx");
     }
 
     #[test]
@@ -295,5 +319,60 @@ mod tests {
         let low = Sun::through_atmosphere(3.0, DVec3::new(0.0, 0.05, 1.0)).unwrap().radiance_rgb();
         assert!(low.y < high.y);
         assert!(low.x / low.z > high.x / high.z);
+    }
+
+    /// Half a unit of the Astronomical Almanac's solar semidiameter, 15′59.63″ (0.005″), plus
+    /// the radius convention: the Almanac's 696 000 km against IAU 2015's 695 700 km, 0.043 %.
+    const SEMIDIAMETER_REL: f64 = 0.005 / 959.63 + 300.0 / 696_000.0;
+    /// Half a unit of the Nautical Almanac's semidiameters printed to 0.1′.
+    const NAUTICAL_HALF_UNIT_ARCMIN: f64 = 0.05;
+    /// Half a unit of the published ±1.7 % swing.
+    const SWING_HALF_UNIT: f64 = 5e-4;
+    /// [`SUN_SOLID_ANGLE`] is printed with 8 significant digits.
+    const SOLID_ANGLE_DIGITS: f64 = 1e-7;
+
+    #[test]
+    fn sun_disc_has_the_published_semidiameter() {
+        // The Astronomical Almanac's solar semidiameter at 1 AU: 15′59.63″ = 959.63″ (the mean
+        // 16′, 0.2666°); it varies as 1/r, ±1.7 % between perihelion (0.98329 AU, early January)
+        // and aphelion (1.01671 AU, early July), where the Nautical Almanac prints 16.3′ and
+        // 15.7′ (its Sun table, January and July).
+        let at_1au = sun_angular_radius(1.0).to_degrees() * 3600.0;
+        assert!((at_1au / 959.63 - 1.0).abs() < SEMIDIAMETER_REL, "ρ(1 AU) = {at_1au}″");
+        let (peri, aph) = (sun_angular_radius(0.98329), sun_angular_radius(1.01671));
+        assert!((peri.to_degrees() * 60.0 - 16.3).abs() < NAUTICAL_HALF_UNIT_ARCMIN + 16.0 * SEMIDIAMETER_REL);
+        assert!((aph.to_degrees() * 60.0 - 15.7).abs() < NAUTICAL_HALF_UNIT_ARCMIN + 16.0 * SEMIDIAMETER_REL);
+        let swing = peri / sun_angular_radius(1.0) - 1.0;
+        assert!((swing - 0.017).abs() < SWING_HALF_UNIT, "perihelion +{swing}");
+        // The constant solid angle is that of the 1 AU disc.
+        let omega = std::f64::consts::TAU * (1.0 - sun_angular_radius(1.0).cos());
+        assert!((omega / SUN_SOLID_ANGLE - 1.0).abs() < SOLID_ANGLE_DIGITS, "Ω = {omega}");
+    }
+
+    #[test]
+    fn gas_transmittances_are_bounded_and_confined_to_their_bands() {
+        // Leckner's mixed-gas (O₂ A band, 759–771 nm) and water-vapour (689–800 nm) laws: no
+        // published transmittance at these wavelengths was found to test against; their
+        // invariants are: 1 outside the band and at zero air mass, in (0, 1] and decreasing with
+        // the air mass inside it, and saturating (the (1 + c k m)^0.45 denominator).
+        for l in [380.0, 550.0, 688.0, 758.0, 772.0] {
+            assert!((mixed_gas_transmittance(l, 5.0) - 1.0).abs() < f64::EPSILON, "{l}");
+        }
+        for l in [380.0, 550.0, 688.0] {
+            assert!((water_vapour_transmittance(l, 5.0) - 1.0).abs() < f64::EPSILON, "{l}");
+        }
+        for l in [760.0, 765.0, 720.0, 730.0] {
+            assert!((mixed_gas_transmittance(l, 0.0) - 1.0).abs() < f64::EPSILON);
+            assert!((water_vapour_transmittance(l, 0.0) - 1.0).abs() < f64::EPSILON);
+            let mut last = (1.0, 1.0);
+            for m in [0.5, 1.0, 2.0, 5.0, 10.0, 36.5] {
+                let (g, w) = (mixed_gas_transmittance(l, m), water_vapour_transmittance(l, m));
+                assert!(g > 0.0 && g <= last.0 && w > 0.0 && w <= last.1, "{l} nm, m = {m}: {g} {w}");
+                last = (g, w);
+            }
+        }
+        // Saturation: at the A-band peak (k_g = 3.0) the optical depth grows as m^0.55, not m.
+        let tau = |m: f64| -mixed_gas_transmittance(760.0, m).ln();
+        assert!(tau(10.0) / tau(1.0) < 10f64.powf(0.56), "{}", tau(10.0) / tau(1.0));
     }
 }

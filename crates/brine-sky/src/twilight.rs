@@ -29,6 +29,7 @@ use crate::aerial::{
     rayleigh_phase,
 };
 use crate::cie::cmf;
+use crate::error::{SkyError, check};
 use crate::solar_tables::{K_OZONE, interpolate, solar_radiance};
 use crate::sun::OZONE_CM;
 use crate::{MIN_COS_VIEW, xyz_to_linear_srgb};
@@ -164,13 +165,22 @@ impl TwilightRatio {
     /// to 700 nm weighted by the solar spectrum and the CIE matching functions, then linear sRGB).
     ///
     /// # Arguments
-    /// - `sun_elevation`: `e` (rad), `[−π/2, 0]` (values above 0 are treated as 0).
+    /// - `sun_elevation`: `e` (rad), `[−π/2, π/2]`; above 0 it is treated as 0 (the ratio is 1).
     /// - `turbidity`: `T`, `[1.7, 10]`.
+    ///
+    /// # Returns
+    /// The tabulated [`TwilightRatio`] (dimensionless ratios per linear sRGB channel, `[0, 1]`).
+    ///
+    /// # Errors
+    /// [`SkyError::OutOfRange`] naming `sun_elevation` or `turbidity` outside its range or not
+    /// finite.
     ///
     /// # References
     /// Nishita T. et al. 1993, "Display of the Earth taking into account atmospheric scattering",
     /// SIGGRAPH 175–182 (single scattering in a spherical atmosphere).
-    pub fn new(sun_elevation: f64, turbidity: f64) -> Self {
+    pub fn new(sun_elevation: f64, turbidity: f64) -> Result<Self, SkyError> {
+        check("sun_elevation", sun_elevation, sun_elevation.abs() <= PI / 2.0, "[-π/2, π/2] rad")?;
+        check("turbidity", turbidity, (1.7..=10.0).contains(&turbidity), "[1.7, 10]")?;
         let sp = Spectral::new(turbidity);
         let e = sun_elevation.min(0.0);
         let sun_at = |e: f64| DVec3::new(e.cos(), e.sin(), 0.0);
@@ -189,11 +199,21 @@ impl TwilightRatio {
         // black).
         let (ms_num, ms_den) = (dome_mean(&num) * MULTIPLE_SCATTERING, dome_mean(&den) * MULTIPLE_SCATTERING);
         let table = num.iter().zip(&den).map(|(n, d)| ((*n + ms_num) / (*d + ms_den)).min(DVec3::ONE)).collect();
-        Self { table }
+        Ok(Self { table })
     }
 
-    /// The ratio for a view at elevation `a` (rad; below 0.573° treated as 0.573°) and azimuth `φ` from the
-    /// sun's vertical plane (rad, any; folded to `[0, π]`), bilinear in the table.
+    /// The ratio `R(v, e)` for a view at elevation `a` and azimuth `φ` from the sun's vertical
+    /// plane, bilinear in the table (rows at `a₀ + (90° − a₀)(i/15)²`, columns every 10°).
+    ///
+    /// # Arguments
+    /// - `elevation`: `a` (rad), any; clamped to `[0.573°, 90°]` (Preetham's lowest view).
+    /// - `relative_azimuth`: `φ` (rad), any; folded to `[0, π]` (the sky is symmetric).
+    ///
+    /// # Returns
+    /// The ratio per linear sRGB channel, `[0, 1]`; exactly 1 when the sun is on the horizon.
+    ///
+    /// # References
+    /// Nishita T. et al. 1993 (single scattering), tabulated here.
     pub fn ratio(&self, elevation: f64, relative_azimuth: f64) -> DVec3 {
         let a0 = MIN_COS_VIEW.asin();
         let a = elevation.clamp(a0, PI / 2.0);
@@ -237,16 +257,19 @@ fn elevation_of(i: usize) -> f64 {
 mod tests {
     use super::*;
 
+    /// At sunset the ratio is a number divided by itself: exact up to rounding.
+    const ROUNDING: f64 = 1e-12;
+
     #[test]
     fn ratio_is_one_at_sunset_and_falls_with_depression() {
-        let at0 = TwilightRatio::new(0.0, 3.0);
+        let at0 = TwilightRatio::new(0.0, 3.0).unwrap();
         for (a, p) in [(0.0, 0.0), (0.3, 1.0), (1.5, 3.0)] {
             let r = at0.ratio(a, p);
-            assert!((r - DVec3::ONE).abs().max_element() < 1e-12, "{r:?}");
+            assert!((r - DVec3::ONE).abs().max_element() < ROUNDING, "{r:?}");
         }
         let mut last = DVec3::ONE;
         for e in [-2.0f64, -4.0, -6.0, -9.0, -12.0] {
-            let r = TwilightRatio::new(e.to_radians(), 3.0).ratio(1.2, 2.0);
+            let r = TwilightRatio::new(e.to_radians(), 3.0).unwrap().ratio(1.2, 2.0);
             assert!(r.max_element() < last.max_element(), "{e}: {r:?}");
             assert!(r.min_element() >= 0.0 && r.is_finite());
             last = r;
@@ -254,10 +277,19 @@ mod tests {
     }
 
     #[test]
+    fn bad_parameters_are_named() {
+        let e = TwilightRatio::new(-0.1, 12.0).unwrap_err();
+        assert!(e.to_string().contains("turbidity"), "{e}");
+        let e = TwilightRatio::new(f64::NAN, 3.0).unwrap_err();
+        assert!(e.to_string().contains("sun_elevation"), "{e}");
+        assert!(TwilightRatio::new(-2.0, 3.0).is_err());
+    }
+
+    #[test]
     fn zenith_turns_blue_in_twilight() {
         // The Chappuis band absorbs green and red light along the long, high sun paths: the
         // twilight zenith loses less blue than red (Hulburt 1953, JOSA 43:113).
-        let r = TwilightRatio::new(-4f64.to_radians(), 3.0).ratio(PI / 2.0, 0.0);
+        let r = TwilightRatio::new(-4f64.to_radians(), 3.0).unwrap().ratio(PI / 2.0, 0.0);
         assert!(r.z > r.x, "{r:?}");
     }
 }

@@ -1,6 +1,6 @@
 //! Property tests of brine-sky: bounds, symmetry and normalisation over the documented domain.
 
-use brine_sky::{CloudParams, MoonParams, PreethamSky, Scattering, Sky, SkyParams};
+use brine_sky::{CloudLayers, CloudParams, MoonParams, PreethamSky, Scattering, Sky, SkyParams};
 use glam::{DVec2, DVec3};
 use proptest::prelude::*;
 
@@ -14,6 +14,19 @@ fn mirror(v: DVec3, s: DVec3) -> DVec3 {
     let n = DVec3::new(-s.z, 0.0, s.x).normalize();
     v - n * (2.0 * v.dot(n))
 }
+
+/// The zenith value is `Y_z F(0, θ_s)/F(0, θ_s)`: exact up to the rounding of the division.
+const NORMALISATION_ROUNDING: f64 = 1e-12;
+/// Mirror directions differ by the rounding of the reflection: relative 10⁻⁹ (with a 10⁻¹²
+/// kcd m⁻² floor for dark views); below the horizon the twilight table's bilinear reads add
+/// rounding: 10⁻⁶.
+const MIRROR_ROUNDING: f64 = 1e-9;
+const MIRROR_FLOOR: f64 = 1e-12;
+const TWILIGHT_MIRROR_ROUNDING: f64 = 1e-6;
+/// Elevation (degrees) below which the whole sun disc (angular radius ≤ 0.2711°) has set.
+const SUN_SET_DEG: f64 = 0.3;
+/// "Darker as the sun sinks", up to the rounding of the twilight table.
+const DARKENING_ROUNDING: f64 = 1e-9;
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
@@ -37,8 +50,8 @@ proptest! {
         let theta_s = (90.0 - sun_e).to_radians();
         let (y, x, yy) = sky.yxy(DVec3::Y);
         let (xz, yz) = brine_sky::zenith_chromaticity_xy(t, theta_s);
-        prop_assert!((y / brine_sky::zenith_luminance(t, theta_s) - 1.0).abs() < 1e-12);
-        prop_assert!((x - xz).abs() < 1e-12 && (yy - yz).abs() < 1e-12);
+        prop_assert!((y / brine_sky::zenith_luminance(t, theta_s) - 1.0).abs() < NORMALISATION_ROUNDING);
+        prop_assert!((x - xz).abs() < NORMALISATION_ROUNDING && (yy - yz).abs() < NORMALISATION_ROUNDING);
     }
 
     #[test]
@@ -50,7 +63,7 @@ proptest! {
         let sky = PreethamSky::new(t, s).unwrap();
         let v = dir(view_e, view_a);
         let (a, b) = (sky.radiance_rgb(v), sky.radiance_rgb(mirror(v, s)));
-        prop_assert!(((a - b).abs()).max_element() <= 1e-9 * a.max_element().max(1e-12), "{a:?} {b:?}");
+        prop_assert!(((a - b).abs()).max_element() <= MIRROR_ROUNDING * a.max_element().max(MIRROR_FLOOR), "{a:?} {b:?}");
     }
 
     #[test]
@@ -58,7 +71,7 @@ proptest! {
         t in 1.7f64..=10.0, h in 0.0f64..5000.0, view_e in -90.0f64..=90.0, view_a in 0.0f64..360.0,
         s in 0.0f64..2e5, sun_e in -90.0f64..=90.0,
     ) {
-        let sc = Scattering::new(t);
+        let sc = Scattering::new(t).unwrap();
         let d = dir(view_e, view_a);
         // Segments stay above the sea (y ≥ 0), as in a scene.
         let s = if d.y < 0.0 { s.min(h / -d.y) } else { s };
@@ -99,7 +112,8 @@ proptest! {
             prop_assert!(d.irradiance_rgb.is_finite() && d.irradiance_rgb.min_element() >= 0.0);
             prop_assert!((0.0..=1.0).contains(&d.visible_fraction));
         }
-        if sun_e < -0.3 {
+        // The sun's disc (radius 0.27°) has wholly set below −0.27°.
+        if sun_e < -SUN_SET_DEG {
             prop_assert!(sun.irradiance_rgb == DVec3::ZERO, "a set sun gives no light");
         }
         prop_assert!(sky.horizontal_irradiance_rgb().min_element() > 0.0);
@@ -111,8 +125,27 @@ proptest! {
         let sky = Sky::new(&SkyParams::new(3.0, s)).unwrap();
         let v = dir(view_e, view_a);
         let (a, b) = (sky.radiance_rgb(v), sky.radiance_rgb(mirror(v, s)));
-        prop_assert!(((a - b).abs()).max_element() <= 1e-6 * a.max_element(), "{a:?} {b:?}");
+        prop_assert!(((a - b).abs()).max_element() <= TWILIGHT_MIRROR_ROUNDING * a.max_element(), "{a:?} {b:?}");
         let deeper = Sky::new(&SkyParams::new(3.0, dir(sun_e - 1.0, sun_a))).unwrap();
-        prop_assert!(deeper.radiance_rgb(v).y <= a.y * (1.0 + 1e-9), "darker as the sun sinks");
+        prop_assert!(deeper.radiance_rgb(v).y <= a.y * (1.0 + DARKENING_ROUNDING), "darker as the sun sinks");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn cloud_opacity_is_in_the_unit_interval(
+        cover in 0.0f64..=1.0, altitude in 100.0f64..=20_000.0, scale in 10.0f64..=1e6,
+        wind_e in -100.0f64..=100.0, wind_s in -100.0f64..=100.0, seed in any::<u64>(),
+        view_e in -90.0f64..=90.0, view_a in 0.0f64..360.0, time in -1e6f64..1e6,
+    ) {
+        let params = CloudParams { cover, altitude_m: altitude, scale_m: scale, wind_m_s: DVec2::new(wind_e, wind_s), seed };
+        let c = CloudLayers::new(&params).unwrap();
+        let a = c.opacity(dir(view_e, view_a), time);
+        prop_assert!((0.0..=1.0).contains(&a), "α = {a}");
+        if view_e <= 0.0 || cover == 0.0 {
+            prop_assert!(a <= 0.0, "no cloud below the horizon or without cover: {a}");
+        }
     }
 }

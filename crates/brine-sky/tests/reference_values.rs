@@ -1,10 +1,19 @@
-//! brine-sky against the equation sheet's oracles (`tests/data/sheet_oracles.csv`, see its header)
-//! and published daylight figures.
+//! brine-sky against the equation sheet's oracles (`tests/data/sheet_oracles.csv`, see its header):
+//! values of Preetham's formulas evaluated independently from their printed coefficients, each
+//! with the tolerance of its printed digits. These check the transcription of the formulas, not
+//! the model against the sky. The published, measured figures are tested next to the models:
+//! the solar illuminance constant, direct-normal daylight, the Rayleigh optical depth, Kasten's
+//! air mass and the Sun's semidiameter (`sun::tests`), the ozone cross-section
+//! (`solar_tables::tests`), the full Moon's brightness and the night-sky glow (`night::tests`);
+//! see `docs/validation.md`.
 
 use brine_sky::{
     PerezCoefficients, henyey_greenstein, mie_beta, perez, rayleigh_beta, rayleigh_phase, zenith_chromaticity_xy,
     zenith_luminance,
 };
+
+/// Rows of `tests/data/sheet_oracles.csv`.
+const N_ORACLES: usize = 13;
 
 #[test]
 fn sheet_oracles() {
@@ -33,5 +42,5 @@ fn sheet_oracles() {
         assert!(err < tol, "{line}: got {got}");
         n += 1;
     }
-    assert_eq!(n, 13);
+    assert_eq!(n, N_ORACLES);
 }

@@ -121,7 +121,7 @@ pub fn plot(dir_out: &Path) -> Result<(), String> {
     // Aerial perspective: extinction along a horizontal ray at 2 m, T = 2 and 6.
     let mut fex = Vec::new();
     for t in [2.0, 6.0] {
-        let sc = Scattering::new(t);
+        let sc = Scattering::new(t).map_err(|e| e.to_string())?;
         for (c, l) in RGB_WAVELENGTHS_NM.iter().enumerate() {
             let pts = (0..=100).map(|i| {
                 let s = 500.0 * i as f64;

@@ -1,12 +1,12 @@
 """Reference sun and moon positions for brine-ephem's tests (tests/reference_values.rs).
 
-Generates `reference_positions.csv`: 240 instants drawn uniformly over 1950-01-01 .. 2050-12-31 UTC
+Generates `reference_positions.csv`: 2000 instants drawn uniformly over 1950-01-01 .. 2050-12-31 UTC
 (seed 4), each at a place drawn uniformly on the sphere's land-or-sea (latitude in [-65, 65] deg,
 longitude in [-180, 180) deg, height 0 m). For each, the topocentric *airless* (no refraction)
 altitude and azimuth (from north through east) of the Sun and the Moon, the geocentric distances,
 and the Moon's illuminated fraction.
 
-Ephemeris: astropy 8.0 with `solar_system_ephemeris = "builtin"`:
+Ephemeris: astropy 8.0 (8.0.2, pyerfa 2.0.1.5) with `solar_system_ephemeris = "builtin"`:
 - Moon: ERFA `eraMoon98` (Meeus 1998, Astronomical Algorithms ch. 47, full ELP-2000/82 truncation);
   ERFA documents RMS errors of 2.9 arcsec (worst 18.3 arcsec) in geocentric direction against
   ELP/MPP02 over 1950-2100.
@@ -29,14 +29,18 @@ iers.conf.auto_download = False
 iers.conf.iers_degraded_accuracy = "warn"
 
 rng = np.random.default_rng(4)
-n = 240
+n = 2000
 t0 = Time("1950-01-01T00:00:00", scale="utc").unix
 t1 = Time("2050-12-31T00:00:00", scale="utc").unix
 unix = np.round(rng.uniform(t0, t1, n))
 lat = np.round(np.degrees(np.arcsin(rng.uniform(np.sin(np.radians(-65)), np.sin(np.radians(65)), n))), 4)
 lon = np.round(rng.uniform(-180.0, 180.0, n), 4)
 
-times = Time(unix, format="unix", scale="utc")
+# The labels written to the CSV, to the second; the positions are computed at exactly these
+# labels (on a day with a leap second, astropy's "unix" instants fall a fraction of a second
+# after their truncated labels, 0.24 s on 2008-12-31, i.e. 0.0009 deg of solar motion).
+labels = [s[:19] for s in Time(unix, format="unix", scale="utc").isot]
+times = Time(labels, format="isot", scale="utc")
 # The models under test take the UTC instant as UT1 (as SPA and Schlyter do): set UT1 = UTC so that
 # both sides see the same Earth rotation. TT - UTC follows the leap-second table (32.184 s before
 # 1961, 69.184 s after 2017), within 30 s of the true Delta T: 15 arcsec of lunar motion at most.
@@ -63,7 +67,7 @@ with open("reference_positions.csv", "w") as f:
         "moon_altitude_deg,moon_azimuth_deg,moon_distance_km,moon_illuminated_fraction\n"
     )
     for i in range(n):
-        iso = times[i].isot[:19] + "Z"
+        iso = labels[i] + "Z"
         f.write(
             f"{iso},{lat[i]:.4f},{lon[i]:.4f},{sun_h.alt.deg[i]:.6f},{sun_h.az.deg[i]:.6f},"
             f"{sun_geo.distance.to(u.au).value[i]:.8f},{moon_h.alt.deg[i]:.6f},{moon_h.az.deg[i]:.6f},"
