@@ -357,6 +357,31 @@ fn spray(world: &World, d: DVec3, t: f64, l0: DVec3) -> DVec3 {
     l0 * transmittance + sun.irradiance_rgb * in_sun + sky_mean * in_sky
 }
 
+/// The share of the sun's and the moon's direct light that reaches a sea point through the
+/// clouds (cloud shadows; brine-sky `Sky::cloud_transmittance`), each in `[0, 1]`.
+#[derive(Debug, Clone, Copy)]
+struct DirectLight {
+    sun: f64,
+    moon: f64,
+}
+
+impl DirectLight {
+    fn at(world: &World, p: DVec3) -> Self {
+        let sky = &world.sky;
+        Self {
+            sun: sky.cloud_transmittance(p, sky.sun().direction),
+            moon: sky.moon().map_or(1.0, |m| sky.cloud_transmittance(p, m.direction)),
+        }
+    }
+
+    /// `E_d(0⁻)` and its direct part under this light: the discs' shares scaled.
+    fn e_below(&self, world: &World) -> (DVec3, DVec3) {
+        let moon = world.e_below_direct - world.e_below_sun;
+        let direct = world.e_below_sun * self.sun + moon * self.moon;
+        (world.e_below - world.e_below_direct + direct, direct)
+    }
+}
+
 /// Disc image in slope space below which a glint is computed for a point source (relative error
 /// `O(q²)`, under 10⁻³).
 const POINT_DISC_Q: f64 = 0.03;
@@ -427,25 +452,26 @@ fn floor_hit(world: &World, p: DVec3, d: DVec3, cx: &mut Counters) -> Option<(f6
 /// Radiance leaving the floor at `point`: Lambertian, lit by the diffuse part of `E_d` and by the
 /// refracted sun on the floor's own slope (`n_f·(−t)/(−t_y)` times its horizontal irradiance),
 /// both attenuated by `e^{−K_d z}` down to its depth (brine-optics `lambertian_floor_radiance`).
-fn floor_radiance(world: &World, point: DVec3) -> DVec3 {
+fn floor_radiance(world: &World, point: DVec3, light: DirectLight) -> DVec3 {
     let floor = world.floor.as_ref().expect("floor_radiance needs a floor");
     let depth = (-point.y).max(0.0);
     let n = floor.shape.at_time(0.0).normal(point.x, point.z);
     let t = world.sun_below;
     let slope_gain = (n.dot(-t)).max(0.0) / (-t.y).max(1e-3);
-    let direct = world.e_below_direct * slope_gain;
-    let diffuse = world.e_below - world.e_below_direct;
-    world.water.lambertian_floor_radiance(floor.albedo, direct + diffuse, depth)
+    let (e_below, direct) = light.e_below(world);
+    let diffuse = e_below - direct;
+    world.water.lambertian_floor_radiance(floor.albedo, direct * slope_gain + diffuse, depth)
 }
 
 /// Upwelling radiance just below the surface along the downward refracted ray `t` from the
 /// surface point `p`: Darles et al. 2007 Eq. 8–11 (corrected, equation sheet §7) with the floor
 /// traced by the same sphere tracer.
-fn water_column_radiance(world: &World, p: DVec3, t: DVec3, cx: &mut Counters) -> DVec3 {
+fn water_column_radiance(world: &World, p: DVec3, t: DVec3, light: DirectLight, cx: &mut Counters) -> DVec3 {
     let cos_theta = (-t.y).clamp(0.0, 1.0);
+    let (e_below, _) = light.e_below(world);
     match floor_hit(world, p, t, cx) {
-        Some((s, q)) => world.water.refracted_ray_radiance(world.e_below, cos_theta, s, floor_radiance(world, q)),
-        None => world.water.refracted_ray_radiance(world.e_below, cos_theta, f64::INFINITY, DVec3::ZERO),
+        Some((s, q)) => world.water.refracted_ray_radiance(e_below, cos_theta, s, floor_radiance(world, q, light)),
+        None => world.water.refracted_ray_radiance(e_below, cos_theta, f64::INFINITY, DVec3::ZERO),
     }
 }
 
@@ -510,28 +536,29 @@ fn shade_surface(
             DVec3::ZERO
         }
     };
-    let sun = glint(world.sky.sun(), &world.discs.0)
-        + world.sky.moon().zip(world.discs.1.as_ref()).map_or(DVec3::ZERO, |(m, d)| glint(m, d));
+    let light = DirectLight::at(world, p);
+    let sun = glint(world.sky.sun(), &world.discs.0) * light.sun
+        + world.sky.moon().zip(world.discs.1.as_ref()).map_or(DVec3::ZERO, |(m, d)| glint(m, d)) * light.moon;
     cx.lap(Stage::Surface, started);
     let started = cx.clock();
     let below = match refract(d, n, 1.0, WATER_IOR) {
-        Some(t) => water_column_radiance(world, p, t, cx),
+        Some(t) => water_column_radiance(world, p, t, light, cx),
         None => DVec3::ZERO,
     };
     cx.lap(Stage::Water, started);
     let started = cx.clock();
-    let crest = crest_radiance(world, field, p, v, n, cx);
+    let crest = crest_radiance(world, field, p, v, n, cx) * light.sun;
     cx.lap(Stage::Subsurface, started);
     let sea = f * sky + sun + (1.0 - f) * below / (WATER_IOR * WATER_IOR) + crest;
     let started = cx.clock();
-    let shade = white_water(world, p, d, t, normal, sea);
+    let shade = white_water(world, p, d, t, normal, sea, light);
     cx.lap(Stage::WhiteWater, started);
     shade
 }
 
 /// Foam (Darles et al. 2007 §4.1, Koepke 1984) and active whitecaps (Dupuy & Bruneton 2012) over
 /// the sea radiance at `p`, seen along `d` from `t` metres.
-fn white_water(world: &World, p: DVec3, d: DVec3, t: f64, n: DVec3, sea: DVec3) -> SurfaceShade {
+fn white_water(world: &World, p: DVec3, d: DVec3, t: f64, n: DVec3, sea: DVec3, light: DirectLight) -> SurfaceShade {
     let mut shade = SurfaceShade { radiance: sea, foam: 0.0, whitecap: 0.0 };
     if world.foam.is_none() && world.whitecaps.is_none() {
         return shade;
@@ -542,9 +569,10 @@ fn white_water(world: &World, p: DVec3, d: DVec3, t: f64, n: DVec3, sea: DVec3) 
     let sun = world.sky.sun();
     let cos_sun = n.dot(sun.direction);
     let e_sky = world.sky.horizontal_irradiance_rgb();
-    let e_moon = world.sky.moon().map_or(DVec3::ZERO, |m| m.irradiance_rgb * n.dot(m.direction).max(0.0));
+    let e_moon = world.sky.moon().map_or(DVec3::ZERO, |m| m.irradiance_rgb * n.dot(m.direction).max(0.0)) * light.moon;
+    let e_sun = sun.irradiance_rgb * light.sun;
     let lambert = |r: f64| -> DVec3 {
-        let f = |c: usize| brine_foam::foam_radiance(r, sun.irradiance_rgb[c], cos_sun, e_sky[c] + e_moon[c]);
+        let f = |c: usize| brine_foam::foam_radiance(r, e_sun[c], cos_sun, e_sky[c] + e_moon[c]);
         DVec3::new(f(0), f(1), f(2))
     };
     if let Some(foam) = &world.foam {
@@ -626,7 +654,11 @@ fn underwater_radiance(
         let l = (1.0 - fw) * above * WATER_IOR * WATER_IOR + fw * water_background(world, 0.0);
         (t, l, Aov { depth: t as f32, normal: (-n).as_vec3().to_array(), ..Aov::default() })
     } else if let Some((t, q)) = floor_hit(world, origin, d, cx) {
-        (t, floor_radiance(world, q), Aov { depth: t as f32, normal: [0.0, 1.0, 0.0], ..Aov::default() })
+        (
+            t,
+            floor_radiance(world, q, DirectLight::at(world, q)),
+            Aov { depth: t as f32, normal: [0.0, 1.0, 0.0], ..Aov::default() },
+        )
     } else {
         return Sample { radiance: background, aov: Aov { depth: f32::INFINITY, ..Aov::default() } };
     };

@@ -62,6 +62,8 @@ pub struct World {
     /// The sun's (and moon's) share of `e_below` (klx per channel), arriving along
     /// [`World::sun_below`].
     pub e_below_direct: DVec3,
+    /// The sun's share of `e_below_direct` (the rest is the moon's).
+    pub e_below_sun: DVec3,
     /// Unit direction of the sun's light refracted into the water (pointing down); straight down
     /// when the sun has set.
     pub sun_below: DVec3,
@@ -614,7 +616,8 @@ impl World {
             let c = d.direction.y.max(0.0);
             d.irradiance_rgb * c * (1.0 - fresnel_dielectric(c, 1.0, WATER_IOR))
         };
-        let discs_e = disc_e(sky.sun()) + sky.moon().map_or(DVec3::ZERO, disc_e);
+        let e_below_sun = disc_e(sky.sun());
+        let discs_e = e_below_sun + sky.moon().map_or(DVec3::ZERO, disc_e);
         let e_below = discs_e + sky_e * (1.0 - hemispherical_fresnel_reflectance(1.0, WATER_IOR));
         let e_horizontal = sky_e.y
             + sky.sun().irradiance_rgb.y * sky.sun().direction.y.max(0.0)
@@ -723,6 +726,7 @@ impl World {
             water,
             e_below,
             e_below_direct: discs_e,
+            e_below_sun,
             sun_below,
             floor,
             underwater: false,

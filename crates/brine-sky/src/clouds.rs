@@ -222,6 +222,33 @@ impl CloudLayers {
         let x = ((d - self.threshold + EDGE) / (2.0 * EDGE)).clamp(0.0, 1.0);
         x * x * (3.0 - 2.0 * x) * (-t / FADE_DISTANCE_M).exp()
     }
+
+    /// Opacity of the clouds crossed by the ray from the sea point `(x, z)` toward the unit
+    /// direction `toward` (the sun's): the cloud's shadow. The same ramp as [`Self::opacity`] at
+    /// the point `(x, z) + (l_x, l_z) t(l)` of the shell, without the view's distance fade (a
+    /// shadow is cast by the cloud itself, however far the ray runs to it).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position of the sea point (m), the camera at the origin of the
+    ///   layers' frame.
+    /// - `toward`: unit direction of the light (y up); 0 for directions at or below the horizon.
+    /// - `time_s`: time (s).
+    ///
+    /// # Returns
+    /// Opacity `α ∈ [0, 1]`; the light reaching the point is `1 − α` of the clear-sky light.
+    ///
+    /// # References
+    /// Chen et al. 2007, §3.1 (the cloud layer); the shadow is a straight ray through the shell.
+    pub fn shadow(&self, x: f64, z: f64, toward: DVec3, time_s: f64) -> f64 {
+        if toward.y <= 0.0 || self.threshold == f64::INFINITY {
+            return 0.0;
+        }
+        let t = self.distance(toward);
+        let p = DVec2::new(x, z) + DVec2::new(toward.x, toward.z) * t;
+        let d = self.density(p / self.params.scale_m, time_s);
+        let u = ((d - self.threshold + EDGE) / (2.0 * EDGE)).clamp(0.0, 1.0);
+        u * u * (3.0 - 2.0 * u)
+    }
 }
 
 #[cfg(test)]
@@ -271,6 +298,29 @@ mod tests {
         }
         let clear = CloudLayers::new(&CloudParams { cover: 0.0, ..CloudParams::default() }).unwrap();
         assert!(clear.opacity(DVec3::Y, 0.0).abs() < f64::MIN_POSITIVE);
+    }
+
+    /// A cloud's shadow on the sea is the cloud seen from that point: at the origin, straight up,
+    /// the shadow equals the opacity before the distance fade, and the shadow of a point moved by
+    /// `Δ` is the shadow of the origin looking through the shell point moved by `Δ`.
+    #[test]
+    fn shadows_are_the_clouds_seen_from_the_sea_point() {
+        // Rounding of the fade factor e^{−t/80 km} at t = 2 km, divided out.
+        const ROUNDING: f64 = 1e-12;
+        let c = CloudLayers::new(&CloudParams { cover: 0.5, ..CloudParams::default() }).unwrap();
+        let fade = (-c.distance(DVec3::Y) / FADE_DISTANCE_M).exp();
+        assert!((c.shadow(0.0, 0.0, DVec3::Y, 30.0) * fade - c.opacity(DVec3::Y, 30.0)).abs() < ROUNDING);
+        let (mut lit, mut shaded) = (0, 0);
+        for i in 0..400 {
+            let (x, z) = (i as f64 * 173.0, i as f64 * -97.0);
+            let a = c.shadow(x, z, DVec3::Y, 0.0);
+            assert!((0.0..=1.0).contains(&a));
+            lit += usize::from(a == 0.0);
+            shaded += usize::from(a == 1.0);
+        }
+        // Half the sky is covered: both fully lit and fully shaded points occur.
+        assert!(lit > 50 && shaded > 50, "lit {lit}, shaded {shaded}");
+        assert_eq!(c.shadow(10.0, 5.0, DVec3::new(1.0, 0.0, 0.0), 0.0), 0.0);
     }
 
     #[test]

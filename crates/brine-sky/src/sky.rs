@@ -462,6 +462,22 @@ impl Sky {
         sky + discs * (1.0 - alpha)
     }
 
+    /// Fraction of the sun's (or the moon's) direct light that reaches the sea point `point`
+    /// through the clouds, `1 − α_shadow` ([`CloudLayers::shadow`]); 1 without clouds.
+    ///
+    /// # Arguments
+    /// - `point`: the sea point (m; the layers' origin is the camera's horizontal position 0).
+    /// - `toward`: unit direction of the light.
+    ///
+    /// # Returns
+    /// The transmitted fraction, `[0, 1]`.
+    ///
+    /// # References
+    /// Chen et al. 2007, §3.1 (cloud layers); a straight shadow ray through the shell.
+    pub fn cloud_transmittance(&self, point: DVec3, toward: DVec3) -> f64 {
+        self.clouds.as_ref().map_or(1.0, |c| 1.0 - c.shadow(point.x, point.z, toward, self.time_s))
+    }
+
     /// The sky radiance as CIE XYZ, `XYZ = M_{sRGB→XYZ} · RGB` of [`Sky::radiance_rgb`].
     ///
     /// # Arguments

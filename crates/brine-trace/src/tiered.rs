@@ -159,16 +159,22 @@ impl TierScratch {
     }
 
     /// The certified step *backward* (toward the ray origin) from the stored samples of the first
-    /// `k` tiers: [`step`](Self::step) with every derivative reversed. The bounds hold there too:
-    /// they were read at or before the start of the step.
+    /// `k` tiers: [`step`](Self::step) with every known derivative reversed. A tier whose
+    /// derivative or curvature is unknown is stored as falling at its Lipschitz rate, `−L`, which
+    /// bounds it in both directions: it keeps `−L` (reversing it would claim the tier *rises* at
+    /// `L` backward and certify any step). The bounds hold there too: they were read at or before
+    /// the start of the step.
     fn backward_step(&mut self, k: usize, eps: f64, eta: f64, guess: f64) -> f64 {
-        for d in &mut self.slope[..k] {
-            *d = -*d;
-        }
+        let reverse = |slope: &mut [f64], exact: &[bool]| {
+            for (d, &e) in slope.iter_mut().zip(exact) {
+                if e {
+                    *d = -*d;
+                }
+            }
+        };
+        reverse(&mut self.slope[..k], &self.exact[..k]);
         let s = self.step(k, eps, eta, guess, (0.0, 0.0));
-        for d in &mut self.slope[..k] {
-            *d = -*d;
-        }
+        reverse(&mut self.slope[..k], &self.exact[..k]);
         s
     }
 

@@ -90,6 +90,32 @@ proptest! {
     }
 }
 
+/// A component without a curvature bound (a sphere distance) is stored as falling at its
+/// Lipschitz rate; the over-relaxed step's backward check once reversed that rate and certified a
+/// step over the whole sphere. This ray (from the sphere-sum property's case `n = 1`, seed 413)
+/// crosses a sphere of radius 0.80 along a chord of 0.67 m at t = 9.704.
+#[test]
+fn a_relaxed_step_never_jumps_a_sphere_without_curvature_bound() {
+    let surface = SphereSum {
+        centres: vec![DVec3::new(0.5638158406960141, -1.3046755282586586, -0.26693099085014893)],
+        radii: vec![0.7987164493006111],
+        weights: vec![1.0],
+    };
+    let origin = DVec3::new(-1.8971519453338406, 5.213190751009499, 7.0);
+    let ray = Ray::new(origin, DVec3::new(0.1954872461585758, -0.6152964767887651, -0.763672038404359)).unwrap();
+    // The first crossing by the closed form of a line and a sphere.
+    let oc = origin - surface.centres[0];
+    let b = oc.dot(ray.direction());
+    let expected = -b - (b * b - oc.length_squared() + surface.radii[0].powi(2)).sqrt();
+    for method in Method::ALL {
+        let options = TraceOptions { t_max: 30.0, ..test_options(method) };
+        let hit = brine_trace::trace(&surface, &ray, &options, &mut TraceStats::default());
+        let t = hit.map(|h| h.t);
+        // Tolerance 10⁻⁷ m of the options (brute force: bisection of its march to the same).
+        assert!(t.is_some_and(|t| (t - expected).abs() < 1e-6), "{method:?}: {t:?} vs {expected}");
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 20, ..ProptestConfig::default() })]
 

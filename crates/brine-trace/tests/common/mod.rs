@@ -18,19 +18,22 @@ pub struct SphereSum {
 }
 
 impl SphereSum {
-    /// `n` spheres in the cube `[−2, 2]³` with radii in `[0.3, 1.2]`, 70 % of weight 1 and 30 % of
-    /// weight −0.5 (so `Σ sᵢ > 0` and `F → +∞` far away: the zero set is bounded).
+    /// `n` spheres in the cube `[−2, 2]³` with radii in `[0.3, 1.2]`: the first of weight 1, the
+    /// others 70 % of weight 1 and 30 % of weight −0.5, so that `Σ sᵢ > 0` whatever `n` and `F → +∞`
+    /// far away: the zero set is bounded (a single sphere of weight −0.5 would make `F < 0` outside
+    /// it and the bounds of [`LipschitzSum::zero_set_bounds`] below empty).
     pub fn random(n: usize, seed: u64) -> Self {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let mut s = Self { centres: vec![], radii: vec![], weights: vec![] };
-        for _ in 0..n {
+        for i in 0..n {
             s.centres.push(DVec3::new(
                 rng.random_range(-2.0..2.0),
                 rng.random_range(-2.0..2.0),
                 rng.random_range(-2.0..2.0),
             ));
             s.radii.push(rng.random_range(0.3..1.2));
-            s.weights.push(if rng.random::<f64>() < 0.7 { 1.0 } else { -0.5 });
+            let draw = rng.random::<f64>();
+            s.weights.push(if i == 0 || draw < 0.7 { 1.0 } else { -0.5 });
         }
         s
     }
