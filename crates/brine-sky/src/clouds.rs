@@ -315,12 +315,12 @@ mod tests {
             let (x, z) = (i as f64 * 173.0, i as f64 * -97.0);
             let a = c.shadow(x, z, DVec3::Y, 0.0);
             assert!((0.0..=1.0).contains(&a));
-            lit += usize::from(a == 0.0);
-            shaded += usize::from(a == 1.0);
+            lit += usize::from(a <= 0.0);
+            shaded += usize::from(a >= 1.0);
         }
         // Half the sky is covered: both fully lit and fully shaded points occur.
         assert!(lit > 50 && shaded > 50, "lit {lit}, shaded {shaded}");
-        assert_eq!(c.shadow(10.0, 5.0, DVec3::new(1.0, 0.0, 0.0), 0.0), 0.0);
+        assert!(c.shadow(10.0, 5.0, DVec3::new(1.0, 0.0, 0.0), 0.0) <= 0.0, "no shadow from the horizon");
     }
 
     #[test]
