@@ -386,6 +386,10 @@ impl DirectLight {
 /// `O(q²)`, under 10⁻³).
 const POINT_DISC_Q: f64 = 0.03;
 
+/// Mahalanobis distance of the mirroring slope beyond which (plus the disc image `q`) a glint is
+/// in the far tail of the lobe and computed for a point source (below `e^{−12.5}` of the peak).
+const POINT_DISC_TAIL: f64 = 5.0;
+
 /// The shading of a surface point.
 struct SurfaceShade {
     radiance: DVec3,
@@ -526,7 +530,12 @@ fn shade_surface(
             let h = (vl + ll).normalize_or(DVec3::Z);
             let sigma = variance.sigma_x2().min(variance.sigma_y2()).sqrt();
             let q = disc.angular_radius / (2.0 * vl.dot(h).max(0.01) * (h.z * h.z).max(0.01) * sigma);
-            let r = if q <= POINT_DISC_Q {
+            // The facet slope that mirrors the disc's centre, in standard deviations of the lobe:
+            // beyond 5 + q the whole disc image lies in the tail (below e^{−12.5} of the peak),
+            // where the point form is used whatever its relative error.
+            let hz = h.z.max(1e-3);
+            let tail = ((h.x / hz).powi(2) / variance.sigma_x2() + (h.y / hz).powi(2) / variance.sigma_y2()).sqrt();
+            let r = if q <= POINT_DISC_Q || tail > POINT_DISC_TAIL + q {
                 reflected_sun_radiance(vl, ll, variance, 1.0)
             } else {
                 reflected_disc_radiance(vl, ll, variance, 1.0, rules)
