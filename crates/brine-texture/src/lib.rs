@@ -114,7 +114,8 @@ pub use ocean::{OceanFrame, OceanParams, PhotoOcean, Progress, SmallFrame};
 pub use project::{ProjectionOptions, ProjectionView, render_projection};
 pub use relight::{RelightRule, Relighting, pow_three_quarters, relight_intensity};
 pub use synthesis::{
-    Sources, SynthesisParams, border_differences, seam_differences, seam_z_score, synthesize_tileable,
+    Sources, SynthesisParams, WrapBorderTest, border_differences, seam_differences, seam_z_score, synthesize_tileable,
+    wrap_border_test,
 };
 pub use temporal::{BasisSequence, synthesize_sequence};
 pub use texture::{Grid, LUMA_WEIGHTS, Texture, intensity};
