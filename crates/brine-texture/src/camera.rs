@@ -85,13 +85,17 @@ impl Pinhole {
 mod tests {
     use super::*;
 
+    /// Unit vectors from `sin`/`cos` of whole degrees and one cross product in `f64`: a few ulps
+    /// (~10⁻¹⁶); a wrong axis or sign is off by ~1.
+    const FRAME: f64 = 1e-12;
+
     #[test]
     fn bearing_90_looks_east_and_straight_down_has_north_up() {
         let c = Pinhole::from_angles(DVec3::new(0.0, 5.0, 0.0), 90.0, 0.0, 60.0, 64, 48).unwrap();
-        assert!((c.forward - DVec3::X).length() < 1e-12);
-        assert!((c.direction(32.0, 24.0) - c.forward).length() < 1e-12);
+        assert!((c.forward - DVec3::X).length() < FRAME);
+        assert!((c.direction(32.0, 24.0) - c.forward).length() < FRAME);
         let down = Pinhole::from_angles(DVec3::new(0.0, 5.0, 0.0), 0.0, -90.0, 60.0, 64, 64).unwrap();
-        assert!((down.up - DVec3::NEG_Z).length() < 1e-12);
+        assert!((down.up - DVec3::NEG_Z).length() < FRAME);
         assert!(Pinhole::from_angles(DVec3::ZERO, 0.0, 0.0, 180.0, 1, 1).is_err());
     }
 }
