@@ -88,9 +88,15 @@ impl HeightField {
     /// - `hf`: height factor (m), `(0, 1000]`.
     /// - `what`: the image's name in error messages.
     ///
+    /// # Returns
+    /// The height field (m), `[0, hf]`, one height per texel.
+    ///
     /// # Errors
     /// [`TextureError::Flat`] if the image is uniform (`I_max = I_min`);
     /// [`TextureError::OutOfRange`] for a bad `hf`.
+    ///
+    /// # References
+    /// Lai & Wu Eq. 1; Fang & Hart 2004 (Textureshop's "dark is deep" heuristic).
     pub fn from_texture(texture: &Texture, hf: f64, what: &str) -> Result<Self, TextureError> {
         Self::from_intensity(&texture.intensity(), hf, what)
     }
@@ -173,6 +179,12 @@ impl HeightField {
     /// Inside a cell `∂h/∂u = (1 − f_v)(h₁₀ − h₀₀) + f_v(h₁₁ − h₀₁)` is a convex combination, so
     /// `|∂h/∂u| ≤ A`, and likewise `|∂h/∂v| ≤ B`; the interpolant is continuous across cells, so
     /// the largest gradient norm bounds `|h(p) − h(q)|/|p − q|` on every segment.
+    ///
+    /// # Returns
+    /// The Lipschitz constant of the interpolant in metres per texel, `≥ 0`.
+    ///
+    /// # References
+    /// Hart 1996 (Lipschitz bounds for sphere tracing); equation sheet §3.
     pub fn max_gradient(&self) -> f64 {
         self.max_gradient
     }

@@ -120,7 +120,10 @@ impl MeshCorrespondence {
     ///
     /// # Arguments
     /// - `a`, `b`: the two frames (the sizes of this correspondence).
-    /// - `alpha`: morph parameter, `[0, 1]`.
+    /// - `alpha`: morph parameter, `[0, 1]` (clamped).
+    ///
+    /// # Returns
+    /// The in-between frame (levels), the size of `a`.
     ///
     /// # References
     /// Lai & Wu §III.A and Fig. 3 ("frame `F_i` and `F_j` are warped to each other by computing the

@@ -14,7 +14,17 @@ pub enum RelightRule {
     Bounded,
 }
 
-/// `x^{3/4}` for `x ≥ 0`, as `√(x √x)` (two square roots, exact up to rounding).
+/// `x^{3/4}` for `x ≥ 0`, as `√(x √x)` (two square roots, exact up to rounding): the exponent of
+/// Eq. 9.
+///
+/// # Arguments
+/// - `x`: `[0, ∞)`; negative values are treated as 0.
+///
+/// # Returns
+/// `x^{3/4} ≥ 0`.
+///
+/// # References
+/// Lai & Wu Eq. 9 (the exponent ¾).
 #[inline]
 pub fn pow_three_quarters(x: f64) -> f64 {
     let x = x.max(0.0);
@@ -69,6 +79,16 @@ pub struct Relighting {
 impl Relighting {
     /// Relights the three channels of a texel by `delta_height` ([`relight_intensity`] per
     /// channel, so every channel stays in `[0, 255]`).
+    ///
+    /// # Arguments
+    /// - `rgb`: the texel (levels `[0, 255]`).
+    /// - `delta_height`: `Δheight` of Eq. 8 (m).
+    ///
+    /// # Returns
+    /// The relit texel, every channel in `[0, 255]`.
+    ///
+    /// # References
+    /// Lai & Wu Eq. 6–9.
     #[inline]
     pub fn apply(&self, rgb: [f32; 3], delta_height: f64) -> [f32; 3] {
         rgb.map(|c| relight_intensity(f64::from(c), delta_height, self.delta_height_max, self.rule) as f32)

@@ -336,7 +336,7 @@ pub(crate) fn chessboard_fill(
 }
 
 /// Synthesises a tileable texture of `width × height` texels from an exemplar by chessboard
-/// filling (Lai & Wu §III.A, their ref. [12]): black cells random, white cells matched on their
+/// filling (Lai & Wu §III.A, their ref. \[12\]): black cells random, white cells matched on their
 /// O-shaped boundary zone, a random choice among the windows within `(1 + ε)` of the best
 /// distance (Liang et al. 2001 choose at random below a threshold), windows wrapping around.
 ///
@@ -374,10 +374,20 @@ pub fn synthesize_tileable(
 
 /// Measures how well a texture tiles: the mean absolute channel difference between texels that
 /// are neighbours across the wrap (last column/first column, last row/first row) and the same
-/// mean over all neighbouring pairs inside the texture.
+/// mean over all neighbouring pairs inside the texture,
+/// `d̄ = (1/N) Σ_pairs (1/3) Σ_c |t_c(p) − t_c(q)|`.
+///
+/// # Arguments
+/// - `texture`: any texture (levels).
 ///
 /// # Returns
-/// `(across the wrap, inside)`, in channel levels `[0, 255]`. A seamless tile has equal values.
+/// `(across the wrap, inside)`, in channel levels `[0, 255]`. A seamless tile has similar values
+/// (the wrap of a chessboard filling is a feathered cell border, smoother than the average: see
+/// [`wrap_border_test`] for a test with a stated significance).
+///
+/// # References
+/// Issue #8's seam measure ("the mean colour difference across the wrap equals that inside the
+/// texture"); Lai & Wu §III.A (toroidal synthesis).
 pub fn seam_differences(texture: &Texture) -> (f64, f64) {
     let (w, h) = (texture.width(), texture.height());
     let diff = |a: [f32; 3], b: [f32; 3]| -> f64 { (0..3).map(|k| f64::from((a[k] - b[k]).abs())).sum::<f64>() / 3.0 };
@@ -411,8 +421,15 @@ pub fn seam_differences(texture: &Texture) -> (f64, f64) {
 /// texture: between texels `k·step − 1` and `k·step` for `k = 1, 2, …` in both directions. The
 /// wrap of a seamless tile is one more such border (see [`seam_differences`]).
 ///
+/// # Arguments
+/// - `texture`: a chessboard-filled texture (levels).
+/// - `step`: the cell side `p − 2w_E` (texels), `≥ 1`.
+///
 /// # Returns
 /// The mean difference (levels), `0` if the texture has no interior border.
+///
+/// # References
+/// The cells of chessboard filling (Lai & Wu 2007, as summarised in Lai & Wu §III.A).
 pub fn border_differences(texture: &Texture, step: usize) -> f64 {
     let (w, h) = (texture.width(), texture.height());
     let diff = |a: [f32; 3], b: [f32; 3]| -> f64 { (0..3).map(|k| f64::from((a[k] - b[k]).abs())).sum::<f64>() / 3.0 };
@@ -560,8 +577,17 @@ pub fn wrap_border_test(texture: &Texture, step: usize) -> Option<WrapBorderTest
 /// `|wrap − mean(interior)|/sd(interior)`. A seamless tile scores like any of its lines (below
 /// about 3); a photo's wrap is typically far beyond.
 ///
+/// `z = |d̄_wrap − mean(d̄_interior)| / sd(d̄_interior)`, `d̄` the mean difference across a line.
+///
+/// # Arguments
+/// - `texture`: any texture (levels).
+///
 /// # Returns
 /// The z-score (dimensionless); `0` for textures narrower than 3 texels.
+///
+/// # References
+/// The standard score of one observation against a sample (e.g. Wasserman 2004, *All of
+/// Statistics*, §3); 3 σ is a 0.3 % two-sided false-alarm rate for Gaussian line means.
 pub fn seam_z_score(texture: &Texture) -> f64 {
     let (w, h) = (texture.width(), texture.height());
     if w < 3 || h < 3 {
