@@ -7,7 +7,7 @@
 //! relit by the large ones (Eq. 6–9) and both move (Eq. 10–11).
 //!
 //! 1. **Tileable synthesis** ([`synthesize_tileable`]): patch-based "chessboard filling" with
-//!    toroidal windows (Lai & Wu 2007, their ref. [12]; Liang et al. 2001).
+//!    toroidal windows (Lai & Wu 2007, their ref. \[12\]; Liang et al. 2001).
 //! 2. **Temporal synthesis** ([`synthesize_sequence`], [`TransitionGraph`],
 //!    [`MeshCorrespondence`], [`walk_position`]): a basis sequence synthesised under the spatial
 //!    O-shaped-zone constraint and the temporal one, frame-to-frame transition links with
@@ -80,7 +80,7 @@
 //! - Lai C.-H., Wu J.-L., "Ocean surface rendering using temporal texture synthesis technique"
 //!   (National Chung Hsing University), Eq. 1–11, Fig. 1–9.
 //! - Lai C.-H., Wu J.-L. 2007, "Temporal texture synthesis by patch-based sampling and morphing
-//!   interpolation", Computer Animation and Virtual Worlds 18(4–5):415–428 (their ref. [12]; not
+//!   interpolation", Computer Animation and Virtual Worlds 18(4–5):415–428 (their ref. \[12\]; not
 //!   available to us: implemented from the description in §III.A, see `docs/models/brine-texture.md`).
 //! - Liang L., Liu C., Xu Y.-Q., Guo B., Shum H.-Y. 2001, "Real-time texture synthesis by
 //!   patch-based sampling", ACM TOG 20(3):127–150.
@@ -114,7 +114,8 @@ pub use ocean::{OceanFrame, OceanParams, PhotoOcean, Progress, SmallFrame};
 pub use project::{ProjectionOptions, ProjectionView, render_projection};
 pub use relight::{RelightRule, Relighting, pow_three_quarters, relight_intensity};
 pub use synthesis::{
-    Sources, SynthesisParams, border_differences, seam_differences, seam_z_score, synthesize_tileable,
+    Sources, SynthesisParams, WrapBorderTest, border_differences, seam_differences, seam_z_score, synthesize_tileable,
+    wrap_border_test,
 };
 pub use temporal::{BasisSequence, synthesize_sequence};
 pub use texture::{Grid, LUMA_WEIGHTS, Texture, intensity};

@@ -120,7 +120,10 @@ impl MeshCorrespondence {
     ///
     /// # Arguments
     /// - `a`, `b`: the two frames (the sizes of this correspondence).
-    /// - `alpha`: morph parameter, `[0, 1]`.
+    /// - `alpha`: morph parameter, `[0, 1]` (clamped).
+    ///
+    /// # Returns
+    /// The in-between frame (levels), the size of `a`.
     ///
     /// # References
     /// Lai & Wu §III.A and Fig. 3 ("frame `F_i` and `F_j` are warped to each other by computing the
@@ -223,18 +226,25 @@ mod tests {
         }
     }
 
+    /// Block matching tries integer shifts, so a translation by 3 texels is found exactly, and
+    /// smoothing a constant field keeps it: only the `f64` averaging's round-off remains.
+    const SHIFT_TEXELS: f64 = 1e-9;
+
     #[test]
     fn a_translation_is_recovered_and_the_midpoint_is_sharp() {
         let (a, b) = (pattern(0.0), pattern(3.0));
         let m = MeshCorrespondence::estimate(&a, &b, 16);
         for d in m.displacements() {
-            assert!((d[0] - 3.0).abs() < 1e-9 && d[1].abs() < 1e-9, "{d:?}");
+            assert!((d[0] - 3.0).abs() < SHIFT_TEXELS && d[1].abs() < SHIFT_TEXELS, "{d:?}");
         }
         // The morph at ½ is the pattern shifted by 1.5, not a blurred cross-fade.
         let mid = m.morph(&a, &b, 0.5);
         let truth = pattern(1.5);
         let err = crate::frame_distance(&mid, &truth);
         let fade = crate::frame_distance(&mid, &a).min(crate::frame_distance(&mid, &b));
-        assert!(err < 0.05 * fade, "morph error {err} vs distance to the ends {fade}");
+        // A cross-fade would be about as far from the half-way shift as from the ends (ratio ~1);
+        // the warp differs from it only by the bilinear resampling of a smooth pattern.
+        const SHARP_MIDPOINT: f64 = 0.05;
+        assert!(err < SHARP_MIDPOINT * fade, "morph error {err} vs distance to the ends {fade}");
     }
 }

@@ -493,19 +493,48 @@ impl<'a> OceanFrame<'a> {
         self.ocean
     }
 
-    /// Small-wave texel coordinates of the sea point `(x, z)` (m) at this frame's time.
+    /// Small-wave texel coordinates of the sea point `(x, z)` (m) at this frame's time,
+    /// `(u, v) = ((x, z) − t s)/texel_m` (the shift of Eq. 10–11, sampled at `x − t s` so that the
+    /// pattern moves along `s`).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: sea point (m, east and south).
+    ///
+    /// # Returns
+    /// Texel coordinates (texels; the frame wraps).
+    ///
+    /// # References
+    /// Lai & Wu Eq. 10–11; equation sheet §14 (the sign of the shift).
     #[inline]
     pub fn small_uv(&self, x: f64, z: f64) -> DVec2 {
         DVec2::new(x, z) * self.inv_texel + self.small_offset
     }
 
     /// Main-structure texel coordinates of `(x, z)`: `((x − t m)/texel_m)/scale`.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: sea point (m, east and south).
+    ///
+    /// # Returns
+    /// Texel coordinates of the main structure (texels; it wraps).
+    ///
+    /// # References
+    /// Lai & Wu Eq. 3 (`M_h(x/scale, y/scale)`) and Eq. 10 (the shift `t m`).
     #[inline]
     pub fn main_uv(&self, x: f64, z: f64) -> DVec2 {
         DVec2::new(x, z) * self.inv_main_texel + self.main_offset
     }
 
     /// `Δheight = M_h(x/scale, y/scale) − mean(M_h)` at `(x, z)` (Eq. 8, shifted as Eq. 10), m.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: sea point (m).
+    ///
+    /// # Returns
+    /// `Δheight` (m), in `[−Δheight_max, Δheight_max]`.
+    ///
+    /// # References
+    /// Lai & Wu Eq. 8 and 10.
     #[inline]
     pub fn delta_height(&self, x: f64, z: f64) -> f64 {
         let m = self.main_uv(x, z);
@@ -513,7 +542,17 @@ impl<'a> OceanFrame<'a> {
     }
 
     /// The composed height `S_h = M_h + P_h` (Eq. 3 and 10) relative to its mean, so that the mean
-    /// sea level is `y = 0` (m).
+    /// sea level is `y = 0`:
+    /// `S_h − S̄_h = (P_h(u, v) − P̄_h) + (M_h(u_m, v_m) − M̄_h)`.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: sea point (m).
+    ///
+    /// # Returns
+    /// The height above the mean sea level (m).
+    ///
+    /// # References
+    /// Lai & Wu Eq. 3 and 10.
     #[inline]
     pub fn height(&self, x: f64, z: f64) -> f64 {
         let s = self.small_uv(x, z);
@@ -523,7 +562,18 @@ impl<'a> OceanFrame<'a> {
     }
 
     /// The gradient `(∂y/∂x, ∂y/∂z)` of the composed surface, from the central-difference
-    /// gradients of both height fields interpolated bilinearly (dimensionless).
+    /// gradients of both height fields interpolated bilinearly:
+    /// `∇S_h = ∇P_h/texel_m + ∇M_h/(texel_m · scale)`, `∇` per texel.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: sea point (m).
+    ///
+    /// # Returns
+    /// The slope vector (dimensionless).
+    ///
+    /// # References
+    /// Lai & Wu Eq. 3 (the composed surface; the paper draws it flat and uses no normal — the bed
+    /// refraction of Fig. 9 and the traced mode need one).
     #[inline]
     pub fn gradient(&self, x: f64, z: f64) -> DVec2 {
         let s = self.small_uv(x, z);
@@ -533,28 +583,67 @@ impl<'a> OceanFrame<'a> {
             + DVec2::new(gu.sample(m.x, m.y), gv.sample(m.x, m.y)) * self.inv_main_texel
     }
 
-    /// Unit upward normal of the composed surface at `(x, z)`.
+    /// Unit upward normal of the composed surface at `(x, z)`, `n = (−∂y/∂x, 1, −∂y/∂z)/‖·‖`.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: sea point (m).
+    ///
+    /// # Returns
+    /// The unit normal (`n_y > 0`).
+    ///
+    /// # References
+    /// The normal of a height field `y = S_h(x, z)`; [`OceanFrame::gradient`].
     #[inline]
     pub fn normal(&self, x: f64, z: f64) -> DVec3 {
         let g = self.gradient(x, z);
         DVec3::new(-g.x, 1.0, -g.y).normalize()
     }
 
-    /// The colour before relighting, `S_c = P_c(x + t s)` (Eq. 2), levels.
+    /// The colour before relighting, `S_c = P_c(x − t s)` (Eq. 2 shifted as Eq. 11; the sheet's
+    /// sign), levels.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: sea point (m).
+    ///
+    /// # Returns
+    /// The bilinear colour of the small-wave frame (levels `[0, 255]`).
+    ///
+    /// # References
+    /// Lai & Wu Eq. 2 and 11.
     #[inline]
     pub fn unrelit_colour(&self, x: f64, z: f64) -> [f32; 3] {
         let s = self.small_uv(x, z);
         self.small.colour.sample(s.x, s.y)
     }
 
-    /// The relit colour `S_c = P_c(x + t s) + ΔI` (Eq. 11 with ΔI of Eq. 7–9), levels, every
-    /// channel in `[0, 255]`.
+    /// The relit colour `S_c = P_c(x − t s) + ΔI` (Eq. 11 with ΔI of Eq. 7–9 at the shifted
+    /// `Δheight`), per channel.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: sea point (m).
+    ///
+    /// # Returns
+    /// The colour (levels), every channel in `[0, 255]`.
+    ///
+    /// # References
+    /// Lai & Wu Eq. 6–9 and 11; equation sheet §14 (errata of Eq. 11, range of Eq. 9).
     #[inline]
     pub fn colour(&self, x: f64, z: f64) -> [f32; 3] {
         self.ocean.relighting.apply(self.unrelit_colour(x, z), self.delta_height(x, z))
     }
 
-    /// [`OceanFrame::colour`] filtered over a footprint of `footprint_m` metres (mip levels).
+    /// [`OceanFrame::colour`] filtered over a footprint of `footprint_m` metres (mip levels,
+    /// trilinear), then relit.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: sea point (m).
+    /// - `footprint_m`: the pixel's footprint on the sea (m), `≥ 0`; `0` is the bilinear colour.
+    ///
+    /// # Returns
+    /// The colour (levels), every channel in `[0, 255]`.
+    ///
+    /// # References
+    /// Lai & Wu Eq. 11; Williams L. 1983, "Pyramidal parametrics", SIGGRAPH (mip-mapping).
     #[inline]
     pub fn colour_filtered(&self, x: f64, z: f64, footprint_m: f64) -> [f32; 3] {
         let s = self.small_uv(x, z);

@@ -336,7 +336,7 @@ pub(crate) fn chessboard_fill(
 }
 
 /// Synthesises a tileable texture of `width × height` texels from an exemplar by chessboard
-/// filling (Lai & Wu §III.A, their ref. [12]): black cells random, white cells matched on their
+/// filling (Lai & Wu §III.A, their ref. \[12\]): black cells random, white cells matched on their
 /// O-shaped boundary zone, a random choice among the windows within `(1 + ε)` of the best
 /// distance (Liang et al. 2001 choose at random below a threshold), windows wrapping around.
 ///
@@ -374,10 +374,20 @@ pub fn synthesize_tileable(
 
 /// Measures how well a texture tiles: the mean absolute channel difference between texels that
 /// are neighbours across the wrap (last column/first column, last row/first row) and the same
-/// mean over all neighbouring pairs inside the texture.
+/// mean over all neighbouring pairs inside the texture,
+/// `d̄ = (1/N) Σ_pairs (1/3) Σ_c |t_c(p) − t_c(q)|`.
+///
+/// # Arguments
+/// - `texture`: any texture (levels).
 ///
 /// # Returns
-/// `(across the wrap, inside)`, in channel levels `[0, 255]`. A seamless tile has equal values.
+/// `(across the wrap, inside)`, in channel levels `[0, 255]`. A seamless tile has similar values
+/// (the wrap of a chessboard filling is a feathered cell border, smoother than the average: see
+/// [`wrap_border_test`] for a test with a stated significance).
+///
+/// # References
+/// Issue #8's seam measure ("the mean colour difference across the wrap equals that inside the
+/// texture"); Lai & Wu §III.A (toroidal synthesis).
 pub fn seam_differences(texture: &Texture) -> (f64, f64) {
     let (w, h) = (texture.width(), texture.height());
     let diff = |a: [f32; 3], b: [f32; 3]| -> f64 { (0..3).map(|k| f64::from((a[k] - b[k]).abs())).sum::<f64>() / 3.0 };
@@ -411,8 +421,15 @@ pub fn seam_differences(texture: &Texture) -> (f64, f64) {
 /// texture: between texels `k·step − 1` and `k·step` for `k = 1, 2, …` in both directions. The
 /// wrap of a seamless tile is one more such border (see [`seam_differences`]).
 ///
+/// # Arguments
+/// - `texture`: a chessboard-filled texture (levels).
+/// - `step`: the cell side `p − 2w_E` (texels), `≥ 1`.
+///
 /// # Returns
 /// The mean difference (levels), `0` if the texture has no interior border.
+///
+/// # References
+/// The cells of chessboard filling (Lai & Wu 2007, as summarised in Lai & Wu §III.A).
 pub fn border_differences(texture: &Texture, step: usize) -> f64 {
     let (w, h) = (texture.width(), texture.height());
     let diff = |a: [f32; 3], b: [f32; 3]| -> f64 { (0..3).map(|k| f64::from((a[k] - b[k]).abs())).sum::<f64>() / 3.0 };
@@ -432,14 +449,145 @@ pub fn border_differences(texture: &Texture, step: usize) -> f64 {
     if n == 0 { 0.0 } else { sum / n as f64 }
 }
 
+/// The wrap of a chessboard-filled tile compared with its interior cell borders, segment by
+/// segment (see [`wrap_border_test`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WrapBorderTest {
+    /// Mean absolute channel difference across the wrap (levels).
+    pub wrap: f64,
+    /// Mean absolute channel difference across the interior cell borders (levels).
+    pub borders: f64,
+    /// Standard deviation of the interior segments' means (levels).
+    pub segment_sd: f64,
+    /// Standard error of `wrap − borders`, `s √(1/n_w + 1/n_b)` (levels).
+    pub standard_error: f64,
+    /// `z = (wrap − borders)/standard_error` (dimensionless).
+    pub z: f64,
+    /// The Mann–Whitney rank-sum statistic of the wrap segments among all segments, standardised:
+    /// `(U − n_w n_b/2)/√(n_w n_b (n_w + n_b + 1)/12)` (dimensionless).
+    pub rank_z: f64,
+    /// Segments across the wrap `n_w` and across the interior borders `n_b`.
+    pub segments: (usize, usize),
+}
+
+/// Tests whether the wrap of a tile made by chessboard filling with cells of side `step` is one
+/// more cell border. Every border line (vertical lines `x = k·step`, horizontal `y = k·step`,
+/// `k = 0` the wrap between the last and the first texel) is cut into cell-long segments, each
+/// separating two cells; the segment's value is the mean absolute channel difference across it.
+/// Windows wrap and every cell's patch is drawn from its own random stream, so the construction is
+/// invariant under translations by whole cells: the wrap segments are draws from the same
+/// population as the interior ones. With `m_w`, `m_b` the means of the `n_w` wrap and `n_b`
+/// interior segments and `s` the standard deviation of the interior ones,
+///
+/// `z = (m_w − m_b) / (s √(1/n_w + 1/n_b))`
+///
+/// is approximately standard normal for a seamless tile if the segment values are near Gaussian,
+/// and large for a texture whose wrap is a seam. Sun glitter makes them heavy-tailed, so the
+/// distribution-free form is also given: the Mann–Whitney count `U` of (wrap, interior) pairs in
+/// which the wrap segment is the larger (ties ½), standardised,
+///
+/// `z_U = (U − n_w n_b/2) / √(n_w n_b (n_w + n_b + 1)/12)`,
+///
+/// standard normal under exchangeable segments whatever their distribution; its largest possible
+/// value (every wrap segment above every interior one) is `√(3 n_w n_b/(n_w + n_b + 1))`.
+///
+/// # Arguments
+/// - `texture`: the tile, each side a whole number (`≥ 3`) of cells.
+/// - `step`: the cell side `p − 2w_E` (texels), `≥ 1`.
+///
+/// # Returns
+/// The comparison; `None` if a side is not a whole number of at least 3 cells (fewer than 2
+/// interior borders per direction leave no spread to compare with).
+///
+/// # References
+/// Two-sample comparison of means with the reference population's variance (e.g. Wasserman 2004,
+/// *All of Statistics*, §10.1, the Wald test); Mann H.B., Whitney D.R. 1947, "On a test of
+/// whether one of two random variables is stochastically larger than the other", Ann. Math.
+/// Statist. 18(1):50–60 (the rank-sum test and its normal approximation); the cell borders of
+/// chessboard filling as in [`border_differences`].
+pub fn wrap_border_test(texture: &Texture, step: usize) -> Option<WrapBorderTest> {
+    let (w, h) = (texture.width(), texture.height());
+    if step == 0 || !w.is_multiple_of(step) || !h.is_multiple_of(step) || w / step < 3 || h / step < 3 {
+        return None;
+    }
+    let d = |a: [f32; 3], b: [f32; 3]| (0..3).map(|k| f64::from((a[k] - b[k]).abs())).sum::<f64>() / 3.0;
+    let (mut wrap, mut inner) = (Vec::new(), Vec::new());
+    // Vertical lines x = k·step (texels x − 1 | x), segments of rows [c·step, (c + 1)·step).
+    for k in 0..w / step {
+        let x = k * step;
+        for c in 0..h / step {
+            let m =
+                (c * step..(c + 1) * step).map(|j| d(texture.get((x + w - 1) % w, j), texture.get(x, j))).sum::<f64>()
+                    / step as f64;
+            if k == 0 { wrap.push(m) } else { inner.push(m) }
+        }
+    }
+    for k in 0..h / step {
+        let y = k * step;
+        for c in 0..w / step {
+            let m =
+                (c * step..(c + 1) * step).map(|i| d(texture.get(i, (y + h - 1) % h), texture.get(i, y))).sum::<f64>()
+                    / step as f64;
+            if k == 0 { wrap.push(m) } else { inner.push(m) }
+        }
+    }
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let (m_w, m_b) = (mean(&wrap), mean(&inner));
+    let (n_w, n_b) = (wrap.len(), inner.len());
+    let sd = (inner.iter().map(|v| (v - m_b).powi(2)).sum::<f64>() / (n_b - 1) as f64).sqrt();
+    let se = sd * (1.0 / n_w as f64 + 1.0 / n_b as f64).sqrt();
+    let gap = m_w - m_b;
+    let z = if se > 0.0 {
+        gap / se
+    } else if gap == 0.0 {
+        0.0
+    } else {
+        gap.signum() * f64::INFINITY
+    };
+    // U = number of (wrap, interior) pairs in which the wrap segment is larger (ties count ½).
+    let u: f64 = wrap
+        .iter()
+        .map(|&a| {
+            inner
+                .iter()
+                .map(|&b| match a.total_cmp(&b) {
+                    std::cmp::Ordering::Greater => 1.0,
+                    std::cmp::Ordering::Equal => 0.5,
+                    std::cmp::Ordering::Less => 0.0,
+                })
+                .sum::<f64>()
+        })
+        .sum();
+    let (nw, nb) = (n_w as f64, n_b as f64);
+    let rank_z = (u - 0.5 * nw * nb) / (nw * nb * (nw + nb + 1.0) / 12.0).sqrt();
+    Some(WrapBorderTest {
+        wrap: m_w,
+        borders: m_b,
+        segment_sd: sd,
+        standard_error: se,
+        z,
+        rank_z,
+        segments: (n_w, n_b),
+    })
+}
+
 /// How far a texture's wrap lines stand out from its other lines: for the vertical lines `x`
 /// (texels `x − 1` and `x`, line 0 the wrap) and likewise the horizontal ones, the mean absolute
 /// channel difference across each line; returns the larger over the two directions of
 /// `|wrap − mean(interior)|/sd(interior)`. A seamless tile scores like any of its lines (below
 /// about 3); a photo's wrap is typically far beyond.
 ///
+/// `z = |d̄_wrap − mean(d̄_interior)| / sd(d̄_interior)`, `d̄` the mean difference across a line.
+///
+/// # Arguments
+/// - `texture`: any texture (levels).
+///
 /// # Returns
 /// The z-score (dimensionless); `0` for textures narrower than 3 texels.
+///
+/// # References
+/// The standard score of one observation against a sample (e.g. Wasserman 2004, *All of
+/// Statistics*, §3); 3 σ is a 0.3 % two-sided false-alarm rate for Gaussian line means.
 pub fn seam_z_score(texture: &Texture) -> f64 {
     let (w, h) = (texture.width(), texture.height());
     if w < 3 || h < 3 {
@@ -470,4 +618,38 @@ pub fn seam_z_score(texture: &Texture) -> f64 {
             }
         })
         .fold(0.0, f64::max)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `f64` arithmetic on small integers and one square root: a few ulps.
+    const ROUNDING: f64 = 1e-12;
+
+    #[test]
+    fn wrap_border_test_by_hand() {
+        // 6 × 6 texels in cells of 2: every column holds one level a_i, so horizontal lines
+        // differ by 0, and the vertical lines x = 0 (the wrap, |a₅ − a₀| = 9), 2 (|a₁ − a₂| = 3)
+        // and 4 (|a₃ − a₄| = 3) each give 3 equal segments. Wrap: three 9s and three 0s, mean
+        // 4.5; interior: six 3s and six 0s, mean 1.5, s² = 12 · 1.5²/11 = 27/11;
+        // SE = s √(1/6 + 1/12) = s/2, z = 3/(s/2) = 6 √(11/27).
+        let a = [0.0, 0.0, 3.0, 3.0, 6.0, 9.0];
+        let t = Texture::from_fn(6, 6, |i, _| [a[i]; 3]);
+        let r = wrap_border_test(&t, 2).unwrap();
+        assert_eq!(r.segments, (6, 12));
+        assert!((r.wrap - 4.5).abs() < ROUNDING && (r.borders - 1.5).abs() < ROUNDING);
+        assert!((r.segment_sd - (27.0f64 / 11.0).sqrt()).abs() < ROUNDING);
+        assert!((r.z - 6.0 * (11.0f64 / 27.0).sqrt()).abs() < ROUNDING);
+        assert!((r.borders - border_differences(&t, 2)).abs() < ROUNDING);
+        // U: each 9 beats the six 3s and six 0s (12 each), each wrap 0 ties the six 0s (3 each):
+        // U = 3·12 + 3·3 = 45 of 6·12 = 72; z_U = (45 − 36)/√(72 · 19/12) = 9/√114.
+        assert!((r.rank_z - 9.0 / 114.0f64.sqrt()).abs() < ROUNDING);
+        // Not a whole number of at least 3 cells: no test.
+        assert!(wrap_border_test(&t, 4).is_none() && wrap_border_test(&t, 3).is_none());
+        assert!(wrap_border_test(&Texture::from_fn(4, 6, |_, _| [1.0; 3]), 2).is_none());
+        // A uniform texture: no difference anywhere, z = 0.
+        let flat = wrap_border_test(&Texture::from_fn(6, 6, |_, _| [7.0; 3]), 2).unwrap();
+        assert!(flat.z.abs() < ROUNDING && flat.rank_z.abs() < ROUNDING, "{flat:?}");
+    }
 }

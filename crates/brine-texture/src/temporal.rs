@@ -37,6 +37,10 @@ pub struct BasisSequence {
 /// - `min_shift`: smallest source displacement between consecutive frames (texels), `[0, 64]`.
 /// - `seed`: random seed.
 ///
+/// # Returns
+/// The frames and the exemplar window of every cell of every frame; the same inputs and seed give
+/// the same sequence.
+///
 /// # Errors
 /// [`TextureError`] for a parameter out of range or an exemplar smaller than a patch.
 ///

@@ -382,26 +382,35 @@ impl Grid {
 mod tests {
     use super::*;
 
+    /// `f32` bilinear interpolation of levels ≤ 255: a few roundings of 2⁻²⁴ relative, ~10⁻⁵
+    /// level; a wrong texel or weight is off by levels.
+    const F32_LEVELS: f32 = 1e-4;
+    /// The same interpolant evaluated by two routes in `f64`.
+    const SAME_F64: f64 = 1e-12;
+    /// Inside a cell the bilinear interpolant is linear along each axis, so a central difference
+    /// with `h = 10⁻⁶` is exact up to the round-off `ε|f|/h` ≈ 10⁻¹⁶ · 30/10⁻⁶ ≈ 10⁻⁹.
+    const CENTRAL_DIFFERENCE: f64 = 1e-6;
+
     #[test]
     fn bilinear_sample_hits_lattice_points_and_wraps() {
         let t = Texture::from_fn(4, 3, |i, j| [(10 * i + j) as f32, 0.0, 255.0]);
         // At a lattice point the bilinear weights are 1 and 0: the texel itself, up to f32 rounding.
-        let close = |a: [f32; 3], b: [f32; 3]| a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= 1e-4);
+        let close = |a: [f32; 3], b: [f32; 3]| a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= F32_LEVELS);
         assert!(close(t.sample(2.0, 1.0), t.get(2, 1)), "{:?}", t.sample(2.0, 1.0));
         assert!(close(t.sample(6.0, -2.0), t.get(2, 1)), "{:?}", t.sample(6.0, -2.0));
         // Between texel 3 and texel 0 of row 0 (the wrap).
         let s = t.sample(3.5, 0.0);
-        assert!((s[0] - 0.5 * (30.0 + 0.0)).abs() < 1e-4, "{s:?}");
+        assert!((s[0] - 0.5 * (30.0 + 0.0)).abs() < F32_LEVELS, "{s:?}");
     }
 
     #[test]
     fn grid_gradient_matches_the_interpolant() {
         let g = Grid::from_fn(5, 5, |i, j| (i * i + 3 * j) as f32);
         let (f, du, dv) = g.sample_with_gradient(1.25, 2.5);
-        assert!((f - g.sample(1.25, 2.5)).abs() < 1e-12);
+        assert!((f - g.sample(1.25, 2.5)).abs() < SAME_F64);
         let h = 1e-6;
-        assert!((du - (g.sample(1.25 + h, 2.5) - g.sample(1.25 - h, 2.5)) / (2.0 * h)).abs() < 1e-6);
-        assert!((dv - (g.sample(1.25, 2.5 + h) - g.sample(1.25, 2.5 - h)) / (2.0 * h)).abs() < 1e-6);
+        assert!((du - (g.sample(1.25 + h, 2.5) - g.sample(1.25 - h, 2.5)) / (2.0 * h)).abs() < CENTRAL_DIFFERENCE);
+        assert!((dv - (g.sample(1.25, 2.5 + h) - g.sample(1.25, 2.5 - h)) / (2.0 * h)).abs() < CENTRAL_DIFFERENCE);
     }
 
     #[test]

@@ -313,6 +313,14 @@ pub struct TracedImage {
 /// and with a bed the Lambertian bed texture at the refracted ray's end attenuated by `e^{−c s}`
 /// (their Fig. 9). Aerial perspective between the eye and the sea when enabled.
 ///
+/// # Arguments
+/// - `frame`: the frame (its composed surface, colour and bed).
+/// - `camera`: the camera, above the highest wave of the composed surface.
+/// - `scene`: sky, water and slope variances ([`TracedScene::new`]).
+///
+/// # Returns
+/// Linear sRGB radiance per pixel (kcd m⁻², finite, `≥ 0`) and the tracer's counters.
+///
 /// # Errors
 /// [`TextureError::OutOfRange`] if the camera is not above the highest wave.
 ///

@@ -5,7 +5,19 @@
 
 use crate::Texture;
 
-/// RMS difference of two frames of the same size over all texels and channels (levels).
+/// RMS difference of two frames of the same size over all texels and channels,
+/// `D(a, b) = √(Σ_texels Σ_c (a_c − b_c)² / 3N)`: the frame similarity on which the transition
+/// links and their probabilities are built.
+///
+/// # Arguments
+/// - `a`, `b`: two frames of the same size (levels `[0, 255]`).
+///
+/// # Returns
+/// `D` in levels, `[0, 255]`; `0` for identical frames.
+///
+/// # References
+/// Lai & Wu §III.A ("the similarity between frames"); Schödl et al. 2000, "Video textures" (the
+/// L2 distance between frames).
 ///
 /// # Panics
 /// If the sizes differ.
@@ -61,6 +73,10 @@ impl TransitionGraph {
     /// Lai & Wu 2007 (CAVW 18(4–5)) as described in Lai & Wu §III.A ("transition links with
     /// probabilities of similarity", "each frame may have the path to another frame"); Schödl A.,
     /// Szeliski R., Salesin D., Essa I. 2000, "Video textures", SIGGRAPH 489–498.
+    ///
+    /// # Returns
+    /// The strongly connected graph, links grouped by the frame they leave, each frame's
+    /// probabilities summing to 1.
     ///
     /// # Panics
     /// If `n < 2` or `d.len() != n²` (callers validate).
@@ -160,7 +176,18 @@ impl TransitionGraph {
     }
 
     /// The link (index into [`TransitionGraph::links`]) taken from frame `i` for a uniform draw
-    /// `u ∈ [0, 1)`: the first link whose cumulative probability exceeds `u`.
+    /// `u ∈ [0, 1)`: the first link `k` with `Σ_{l ≤ k} P(i → l) > u` (inverse-CDF sampling of the
+    /// links' probabilities).
+    ///
+    /// # Arguments
+    /// - `i`: the current frame, `[0, frames)`.
+    /// - `u`: a uniform draw, `[0, 1)`.
+    ///
+    /// # Returns
+    /// The index of the link; the last link of `i` if rounding leaves the cumulative sum below `u`.
+    ///
+    /// # References
+    /// Lai & Wu §III.D (the pointer moves "according to the associated similarity probability").
     pub fn choose(&self, i: usize, u: f64) -> usize {
         let r = self.outgoing_range(i);
         let mut acc = 0.0;
@@ -199,6 +226,9 @@ impl TransitionGraph {
 mod tests {
     use super::*;
 
+    /// Probabilities normalised by their own sum add up to 1 within a few ulps.
+    const SUM_ROUNDING: f64 = 1e-12;
+
     #[test]
     fn two_clusters_are_joined() {
         // Frames 0–2 alike, frames 3–5 alike, the clusters far apart: nearest neighbours alone
@@ -220,7 +250,7 @@ mod tests {
         assert!(g.is_strongly_connected());
         for i in 0..n {
             let p: f64 = g.outgoing(i).iter().map(|l| l.probability).sum();
-            assert!((p - 1.0).abs() < 1e-12);
+            assert!((p - 1.0).abs() < SUM_ROUNDING);
         }
     }
 

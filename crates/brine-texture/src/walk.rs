@@ -20,8 +20,24 @@ pub struct WalkPosition {
     pub alpha: f64,
 }
 
-/// The first `count` links of the seeded walk that starts at basis frame 0: from each frame, a
-/// link drawn with the links' probabilities.
+/// The first `count` links of the seeded walk that starts at basis frame 0: from each frame `i`, a
+/// link `i → j` drawn with probability `P(i → j)` ([`TransitionGraph::choose`] of a uniform draw
+/// from a ChaCha8 stream of the seed), the next frame being `j` — a Markov chain on the basis
+/// frames.
+///
+/// # Arguments
+/// - `graph`: the transition graph.
+/// - `seed`: the walk's seed; the same graph and seed give the same links.
+/// - `count`: number of links, `≥ 0`.
+///
+/// # Returns
+/// Indices into [`TransitionGraph::links`], in playing order; each link leaves the frame the
+/// previous one reached.
+///
+/// # References
+/// Lai & Wu §III.D ("the pointer P will keep pointing to the next appropriate node according to
+/// the current node and the associated similarity probability"); Schödl et al. 2000 (random
+/// play of video textures).
 pub fn walk_links(graph: &TransitionGraph, seed: u64, count: usize) -> Vec<usize> {
     let mut rng = stream(seed, Purpose::Walk, 0, 0);
     let mut at = 0;
@@ -46,6 +62,9 @@ pub fn walk_links(graph: &TransitionGraph, seed: u64, count: usize) -> Vec<usize
 ///
 /// # Returns
 /// The link, its ends and the morph parameter.
+///
+/// # References
+/// Lai & Wu §III.A and §III.D (morphing interpolation along the links, the pointer's walk).
 pub fn walk_position(graph: &TransitionGraph, seed: u64, morph_steps: usize, n: u64) -> WalkPosition {
     let m = morph_steps.max(1) as u64;
     let (k, s) = ((n / m) as usize, n % m);

@@ -12,6 +12,23 @@ use proptest::prelude::*;
 /// (a few ulps of heights of order 1 m).
 const LIPSCHITZ_SLACK: f64 = 1e-9;
 
+/// Relative rounding of a closed form or a short sum evaluated in `f64` (a few ulps).
+const F64_REL: f64 = 1e-12;
+
+/// Eq. 4 inverting Eq. 1: `I_min + (I − I_min)/span · span` with spans down to 0.5 level and
+/// intensities up to 255 amplifies one ulp by at most ~10³: 10⁻⁹ relative is ample.
+const INVERSE_REL: f64 = 1e-9;
+
+/// Heights of the composed surface against its reported range (m): f64 round-off of bilinear
+/// sums of heights ≤ 7 m.
+const RANGE_SLACK_M: f64 = 1e-9;
+
+/// Slack on the bounded relighting's monotonicity (levels): `f64` round-off of `I ± I·x^{3/4}`.
+const MONOTONIC_SLACK: f64 = 1e-9;
+
+/// `f32` bilinear samples of levels ≤ 255 (a few roundings of 2⁻²⁴ relative, ~10⁻⁵ level).
+const F32_LEVELS: f32 = 1e-3;
+
 /// A random height field of `w × h` texels with values in `[0, amplitude]` (m), from a seed.
 fn random_field(seed: u64, w: usize, h: usize, amplitude: f32, smooth: bool) -> HeightField {
     let mut state = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
@@ -54,7 +71,8 @@ proptest! {
         if dh.abs() <= dh_max && dh_max > 0.0 {
             let a = relight_intensity(i, dh, dh_max, RelightRule::Bounded);
             let b = relight_intensity(i, (dh + 0.1 * dh_max).min(dh_max), dh_max, RelightRule::Bounded);
-            prop_assert!(b >= a - 1e-9);
+            // Monotonic up to the round-off of the ¾ power of levels ≤ 255 (~10⁻¹³).
+            prop_assert!(b >= a - MONOTONIC_SLACK);
         }
     }
 
@@ -66,8 +84,8 @@ proptest! {
         let i_max = i_min + span;
         let i = i_min + f * span;
         let h = height_from_intensity(i, i_min, i_max, hf);
-        prop_assert!((-1e-12..=hf * (1.0 + 1e-12)).contains(&h));
-        prop_assert!((intensity_from_height(h, i_min, i_max, hf) - i).abs() <= 1e-9 * (1.0 + i));
+        prop_assert!((-F64_REL..=hf * (1.0 + F64_REL)).contains(&h));
+        prop_assert!((intensity_from_height(h, i_min, i_max, hf) - i).abs() <= INVERSE_REL * (1.0 + i));
     }
 
     /// The composed height field honours every bound it reports to brine-trace on random points:
@@ -95,13 +113,13 @@ proptest! {
             let tol = LIPSCHITZ_SLACK * (1.0 + np.abs() + nq.abs());
             prop_assert!((np - nq).abs() <= l * step + tol, "component {i}: |Δn| = {} > L|Δp| = {}", (np - nq).abs(), l * step);
             prop_assert!((np - nq).abs() <= ld * step + tol, "component {i}: directional");
-            prop_assert!(ld <= l * (1.0 + 1e-12));
+            prop_assert!(ld <= l * (1.0 + F64_REL));
             prop_assert!(np >= s.component_min(i, p, q) - tol && np <= s.component_max(i, p, q) + tol, "component {i}: range");
         }
-        prop_assert!((s.value(p) - sum).abs() <= 1e-12 * (1.0 + sum.abs()));
+        prop_assert!((s.value(p) - sum).abs() <= F64_REL * (1.0 + sum.abs()));
         let h = s.height(px, pz);
         let (lo, hi) = s.height_range();
-        prop_assert!(h >= lo - 1e-9 && h <= hi + 1e-9);
+        prop_assert!(h >= lo - RANGE_SLACK_M && h <= hi + RANGE_SLACK_M);
     }
 
     /// The first crossing is found: sphere tracing the composed surface stops where a fine march
@@ -163,7 +181,7 @@ proptest! {
             let out = g.outgoing(i);
             prop_assert!(!out.is_empty());
             let p: f64 = out.iter().map(|l| l.probability).sum();
-            prop_assert!((p - 1.0).abs() < 1e-12);
+            prop_assert!((p - 1.0).abs() < F64_REL);
             prop_assert!(out.iter().all(|l| l.probability > 0.0 && l.to != i));
         }
     }
@@ -173,7 +191,7 @@ proptest! {
     fn bilinear_samples_stay_in_range(u in -1e4f64..1e4, v in -1e4f64..1e4) {
         let t = Texture::from_fn(7, 5, |i, j| [(i * 30) as f32, (j * 50) as f32, 255.0]);
         let c = t.sample(u, v);
-        prop_assert!(c[0] >= 0.0 && c[0] <= 180.0 + 1e-3 && c[1] >= 0.0 && c[1] <= 200.0 + 1e-3);
-        prop_assert!((c[2] - 255.0).abs() < 1e-3);
+        prop_assert!(c[0] >= 0.0 && c[0] <= 180.0 + F32_LEVELS && c[1] >= 0.0 && c[1] <= 200.0 + F32_LEVELS);
+        prop_assert!((c[2] - 255.0).abs() < F32_LEVELS);
     }
 }

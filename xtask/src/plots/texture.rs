@@ -7,6 +7,7 @@ use brine_sky::{Sky, SkyParams};
 use brine_texture::{
     Grid, OceanParams, PhotoOcean, Pinhole, ProjectionOptions, ProjectionView, Texture, TracedParams, TracedScene,
     border_differences, frame_distance, render_projection, render_traced, seam_differences, seam_z_score,
+    wrap_border_test,
 };
 use glam::DVec3;
 
@@ -157,6 +158,10 @@ pub fn plot(dir: &Path) -> Result<(), String> {
     let scene = TracedScene::new(&TracedParams { sun_direction: sun, ..TracedParams::default() }, &ocean)
         .map_err(|e| e.to_string())?;
     let traced = render_traced(&ocean.frame(0), &camera, &scene).map_err(|e| e.to_string())?;
+    eprintln!(
+        "brine-texture traced view: {:.1} evaluations of F per ray",
+        traced.stats.evaluations as f64 / traced.stats.rays.max(1) as f64
+    );
     let ev = brine_render::auto_exposure_ev(
         {
             let n = traced.pixels.len() as f64;
@@ -190,6 +195,11 @@ pub fn plot(dir: &Path) -> Result<(), String> {
     }
     .write(&dir.join("texture-frame-distances.svg"))?;
     let step = params.synthesis.step();
+    // The photos are cut to whole cells (their 256² already are for the default 32-texel cells).
+    let segment_z = |t: &Texture| {
+        let (w, h) = (t.width() / step * step, t.height() / step * step);
+        wrap_border_test(&t.window(0, 0, w, h), step).map_or(f64::NAN, |r| r.rank_z)
+    };
     let (wrap, inside) = seam_differences(ocean.main_texture());
     let borders = border_differences(ocean.main_texture(), step);
     let (pw, pi) = seam_differences(&main);
@@ -198,11 +208,17 @@ pub fn plot(dir: &Path) -> Result<(), String> {
     eprintln!(
         "brine-texture seams (levels): main tile wrap {wrap:.2}, inside {inside:.2}, cell borders {borders:.2}; \
          small frame 0 wrap {sw:.2}, inside {si:.2}, borders {sb:.2}; main photo wrap {pw:.2}, inside {pi:.2}; \
-         z-scores of the wrap: main tile {:.2}, small frame 0 {:.2}, main photo {:.1}, small photo {:.1}; Δh_max = {:.3} m",
+         z-scores of the wrap: main tile {:.2}, small frame 0 {:.2}, main photo {:.1}, small photo {:.1}; \
+         wrap vs cell-border segments (Mann–Whitney z_U): main tile {:.2}, small frame 0 {:.2}, main photo {:.1}, small photo {:.1}; \
+         Δh_max = {:.3} m",
         seam_z_score(ocean.main_texture()),
         seam_z_score(&f[0]),
         seam_z_score(&main),
         seam_z_score(&small),
+        segment_z(ocean.main_texture()),
+        segment_z(&f[0]),
+        segment_z(&main),
+        segment_z(&small),
         ocean.relighting().delta_height_max
     );
     Ok(())
