@@ -159,15 +159,22 @@ impl TierScratch {
     }
 
     /// The certified step *backward* (toward the ray origin) from the stored samples of the first
-    /// `k` tiers: [`step`](Self::step) with every derivative reversed. The bounds hold there too:
-    /// they were read at or before the start of the step.
+    /// `k` tiers: [`step`](Self::step) with every sampled derivative reversed. The bounds hold
+    /// there too: they were read at or before the start of the step. A tier without a usable
+    /// derivative keeps its slope `−L`: that is a lower bound of its rate of change in either
+    /// direction (reversing it to `+L` would claim that the tier grows, and certify steps across
+    /// crossings: found by the sphere-sum property test, seed 308).
     fn backward_step(&mut self, k: usize, eps: f64, eta: f64, guess: f64) -> f64 {
-        for d in &mut self.slope[..k] {
-            *d = -*d;
+        for (d, &exact) in self.slope[..k].iter_mut().zip(&self.exact[..k]) {
+            if exact {
+                *d = -*d;
+            }
         }
         let s = self.step(k, eps, eta, guess, (0.0, 0.0));
-        for d in &mut self.slope[..k] {
-            *d = -*d;
+        for (d, &exact) in self.slope[..k].iter_mut().zip(&self.exact[..k]) {
+            if exact {
+                *d = -*d;
+            }
         }
         s
     }

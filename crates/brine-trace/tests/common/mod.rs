@@ -19,7 +19,7 @@ pub struct SphereSum {
 
 impl SphereSum {
     /// `n` spheres in the cube `[−2, 2]³` with radii in `[0.3, 1.2]`, 70 % of weight 1 and 30 % of
-    /// weight −0.5 (so `Σ sᵢ > 0` and `F → +∞` far away: the zero set is bounded).
+    /// weight −0.5 (the zero set is bounded unless `Σ sᵢ = 0`).
     pub fn random(n: usize, seed: u64) -> Self {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let mut s = Self { centres: vec![], radii: vec![], weights: vec![] };
@@ -72,8 +72,10 @@ impl LipschitzSum for SphereSum {
         self.radii[i]
     }
     fn zero_set_bounds(&self) -> Aabb {
-        // Σ sᵢ‖p − cᵢ‖ ≥ (Σ sᵢ)‖p‖ − Σ|sᵢ|‖cᵢ‖, so F > 0 beyond this radius.
-        let total: f64 = self.weights.iter().sum();
+        // sᵢ‖p − cᵢ‖ lies within sᵢ‖p‖ ± |sᵢ|‖cᵢ‖, so F = Σ sᵢ(‖p − cᵢ‖ − rᵢ) has the sign of
+        // S = Σ sᵢ beyond the radius Σ|sᵢ|(‖cᵢ‖ + rᵢ)/|S| (F > 0 there if S > 0, F < 0 if S < 0:
+        // a single sphere of weight −0.5; S = 0 gives an infinite radius, no clipping).
+        let total: f64 = self.weights.iter().sum::<f64>().abs();
         let reach: f64 = self
             .weights
             .iter()
