@@ -34,6 +34,9 @@ pub struct TierScratch {
     /// Whether the stored slope of each tier is its sampled derivative with a finite curvature
     /// bound (`false`: the slope is the Lipschitz lower bound `−L`).
     exact: Vec<bool>,
+    /// Segment tracing ([`crate::trace_segments`]): the tiers' bounds and derivatives.
+    pub(crate) segment_bounds: Vec<TierBounds>,
+    pub(crate) segment_slopes: Vec<f64>,
 }
 
 impl TierScratch {
@@ -352,7 +355,10 @@ pub fn trace_tiers<R: RayTiers + ?Sized>(
     trace_tiers_with(&mut TierScratch::default(), tiers, ray, t_enter, t_exit, options, stats, log)
 }
 
-/// The tiered method ([`crate::Method::Tiered`]) on a ray given as tiers `F = Σⱼ Tⱼ`.
+/// The tiered method ([`crate::Method::Tiered`]) on a ray given as tiers `F = Σⱼ Tⱼ`, or segment
+/// tracing on the same tiers when `options.method` is [`crate::Method::Segment`] (then this is
+/// [`crate::trace_segments`]; every other method selects the tiered method, so that implementors
+/// of [`crate::LipschitzSum::trace_tiered`] serve both by passing the options through).
 ///
 /// At each point only the first `k` tiers are evaluated; the others enter through their bounds
 /// (frequency pruning: far from the surface only long waves are evaluated). Tier `k` is added
@@ -382,7 +388,9 @@ pub fn trace_tiers<R: RayTiers + ?Sized>(
 ///
 /// # References
 /// Hart 1996 (sphere tracing); Darles et al. 2007 §3.1–3.2 (efficient bound, neglected high
-/// frequencies); Galin et al. 2020 (segment tracing: local bounds over the step); equation sheet §2.
+/// frequencies); Keinert et al. 2014 (over-relaxation); equation sheet §2. The second-order bound
+/// holds on the step only, like the local bounds of segment tracing (Galin et al. 2020), but it is
+/// Brine's; segment tracing proper is [`crate::Method::Segment`].
 #[allow(clippy::too_many_arguments)]
 pub fn trace_tiers_with<R: RayTiers + ?Sized>(
     scratch: &mut TierScratch,
@@ -394,6 +402,9 @@ pub fn trace_tiers_with<R: RayTiers + ?Sized>(
     stats: &mut TraceStats,
     log: Option<&mut Vec<Step>>,
 ) -> Option<Hit> {
+    if options.method == crate::Method::Segment {
+        return crate::trace_segments(scratch, tiers, ray, t_enter, t_exit, options, stats, log);
+    }
     match run(scratch, tiers, ray, t_enter, t_exit, options, stats, log, 0.0) {
         Outcome::Hit(hit) => Some(hit),
         Outcome::Miss | Outcome::Free(_) => None,

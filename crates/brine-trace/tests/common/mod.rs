@@ -271,3 +271,77 @@ pub fn random_ray(half_height: f64, rng: &mut ChaCha8Rng) -> Ray {
     let horizontal = (1.0 - dy * dy).max(0.0).sqrt();
     Ray::new(origin, DVec3::new(horizontal * azimuth.cos(), dy, horizontal * azimuth.sin())).unwrap()
 }
+
+/// `F(p) = y − Σᵢ aᵢ sin(kᵢ·(x, z) + φᵢ)`: a sum of sine waves with exact derivatives along a ray
+/// (`−aᵢ σᵢ cos(·)`, `σᵢ = kᵢ·d̂_xz`) and curvature bounds (`aᵢ σᵢ²`), in f64: a second
+/// implementor whose tiers carry every bound the tiered and segment methods use.
+pub struct SineSum {
+    pub amplitudes: Vec<f64>,
+    pub wavevectors: Vec<(f64, f64)>,
+    pub phases: Vec<f64>,
+}
+
+impl SineSum {
+    /// `n` waves, wavelengths log-uniform in `[1, 60]` m, slopes `aᵢ|kᵢ|` summing to 0.5.
+    pub fn random(n: usize, seed: u64) -> Self {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let mut s = Self { amplitudes: vec![], wavevectors: vec![], phases: vec![] };
+        for _ in 0..n {
+            let k = std::f64::consts::TAU / 60f64.powf(rng.random::<f64>());
+            let dir: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+            s.wavevectors.push((k * dir.cos(), k * dir.sin()));
+            s.amplitudes.push(0.5 / n as f64 / k);
+            s.phases.push(rng.random_range(0.0..std::f64::consts::TAU));
+        }
+        s
+    }
+
+    fn wavenumber(&self, j: usize) -> f64 {
+        let (kx, kz) = self.wavevectors[j];
+        kx.hypot(kz)
+    }
+
+    fn sigma(&self, j: usize, d: DVec3) -> f64 {
+        let (kx, kz) = self.wavevectors[j];
+        kx * d.x + kz * d.z
+    }
+
+    fn phase(&self, j: usize, p: DVec3) -> f64 {
+        let (kx, kz) = self.wavevectors[j];
+        kx * p.x + kz * p.z + self.phases[j]
+    }
+}
+
+impl LipschitzSum for SineSum {
+    fn component_count(&self) -> usize {
+        self.amplitudes.len() + 1
+    }
+    fn component(&self, i: usize, p: DVec3) -> f64 {
+        if i == 0 { p.y } else { -self.amplitudes[i - 1] * self.phase(i - 1, p).sin() }
+    }
+    fn component_lipschitz(&self, i: usize) -> f64 {
+        if i == 0 { 1.0 } else { self.amplitudes[i - 1] * self.wavenumber(i - 1) }
+    }
+    fn component_directional_lipschitz(&self, i: usize, d: DVec3) -> f64 {
+        if i == 0 { d.y.abs() } else { self.amplitudes[i - 1] * self.sigma(i - 1, d).abs() }
+    }
+    fn component_min(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
+        if i == 0 { a.y.min(b.y) } else { -self.amplitudes[i - 1] }
+    }
+    fn component_max(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
+        if i == 0 { a.y.max(b.y) } else { self.amplitudes[i - 1] }
+    }
+    fn component_directional_derivative(&self, i: usize, p: DVec3, d: DVec3) -> Option<f64> {
+        Some(if i == 0 { d.y } else { -self.amplitudes[i - 1] * self.sigma(i - 1, d) * self.phase(i - 1, p).cos() })
+    }
+    fn component_directional_curvature(&self, i: usize, d: DVec3) -> f64 {
+        if i == 0 { 0.0 } else { self.amplitudes[i - 1] * self.sigma(i - 1, d).powi(2) }
+    }
+    fn component_feature_size(&self, i: usize) -> f64 {
+        if i == 0 { f64::INFINITY } else { std::f64::consts::TAU / self.wavenumber(i - 1) }
+    }
+    fn zero_set_bounds(&self) -> Aabb {
+        let a: f64 = self.amplitudes.iter().sum();
+        Aabb::slab_y(-a, a)
+    }
+}
