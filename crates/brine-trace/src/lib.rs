@@ -24,7 +24,8 @@
 //!
 //! plus image coherence ([`trace_tile`]: a quadtree of cones certified by
 //! [`LipschitzSum::certify_cone`]), temporal coherence ([`trace_temporal`]) and footprint fading
-//! ([`TraceOptions::footprint_angle`], [`footprint_weight`]).
+//! ([`TraceOptions::footprint_angle`], [`footprint_weight`]; what was dropped at a hit:
+//! [`component_weights`], [`faded_components`]).
 //!
 //! ## Notation
 //!

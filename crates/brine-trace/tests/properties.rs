@@ -96,8 +96,8 @@ proptest! {
 /// Cases of the trochoid safety test and rays per case (256 random rays, each traced by every
 /// method on the f32 surface, three on the f64 one and two with fading, against dense f64
 /// references; formerly 20 × 2). Measured in the dev profile (opt-level 1, dependencies 3) on the
-/// shared 2-core AMD EPYC of docs/benchmarks.md: this file takes 31–42 s (the cases are random: N
-/// up to 200), the whole `cargo test -p brine-trace` 34–44 s of CPU after the build; 192 cases
+/// shared 2-core machine of docs/benchmarks.md: this file takes 23–42 s (the cases are random: N
+/// up to 200), the whole `cargo test -p brine-trace` 29–44 s of CPU after the build; 192 cases
 /// took 54 s for this file alone.
 const TROCHOID_CASES: u32 = 128;
 const TROCHOID_RAYS: usize = 2;
