@@ -125,6 +125,14 @@ pub(crate) fn darles_trace<S: LipschitzSum + ?Sized>(
             }
         }
         let f: f64 = value.iter().sum();
+        if f == 0.0 || (f > 0.0) != (sign > 0.0) {
+            // The last certified step ended on the surface: its bound reached zero at t, and F
+            // evaluated there is zero or a rounding error past it (a vertical ray over waves, whose
+            // bound along the ray is exact, lands on F = 0 ± 10⁻¹⁵). The crossing is at t.
+            log_step(&mut log, t, t, StepKind::Bracket);
+            stats.hits += 1;
+            return Some(Hit { t, point: p, entering: sign > 0.0, steps });
+        }
         let t_next = (t + h).min(t1);
         let q = ray.at(t_next);
         for (i, e) in estimate.iter_mut().enumerate() {

@@ -52,14 +52,23 @@ pub fn footprint_weight_slope(fade_distance: f64, t: f64) -> f64 {
 /// what the tracer dropped or faded, so that a renderer can move the missing slopes into its
 /// BRDF (Bruneton et al. 2010). All weights are 1 when `footprint_angle` is 0.
 ///
+/// `wᵢ = smoothstep(1, 1.5, Tᵢ/t)` ([`footprint_weight`]) with `Tᵢ` =
+/// [`LipschitzSum::component_fade_distance`]: the surface the tiered method traces (and on which
+/// its hit lies) is `Σᵢ wᵢ(t) nᵢ(p)`, with the weights of the distance `t` of each point along the
+/// ray.
+///
 /// # Arguments
 /// - `surface`: the traced function.
 /// - `direction`: the unit ray direction.
-/// - `footprint_angle`: the option used to trace (rad).
-/// - `t`: the hit distance (m).
+/// - `footprint_angle`: the option used to trace (rad), `≥ 0`.
+/// - `t`: the hit distance (m), `≥ 0`.
 ///
 /// # Returns
-/// `wᵢ ∈ [0, 1]` for each component.
+/// `wᵢ ∈ [0, 1]` for each component, non-increasing in `t`.
+///
+/// # References
+/// Equation sheet §1 "Antialiasing" and §11; Bruneton, Neyret & Holzschuch 2010 (§4: the
+/// geometry's lost slopes move into the BRDF).
 pub fn component_weights<S: LipschitzSum + ?Sized>(
     surface: &S,
     direction: DVec3,
@@ -75,6 +84,50 @@ pub fn component_weights<S: LipschitzSum + ?Sized>(
             }
         })
         .collect()
+}
+
+/// Which components footprint fading removed from the traced surface at one point of a ray.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct FadedComponents {
+    /// Components with weight 0: dropped from the traced surface altogether (their footprint
+    /// `t ≥ Tᵢ` exceeds their feature size), in increasing index order.
+    pub dropped: Vec<usize>,
+    /// Components with a weight in `(0, 1)`: partly faded (`Tᵢ/1.5 < t < Tᵢ`), in increasing index
+    /// order. Every other component is traced whole.
+    pub fading: Vec<usize>,
+}
+
+/// The components that footprint fading dropped or faded at a hit `t`: the tracer's report of
+/// which waves it left out, so that a renderer can move them into its BRDF roughness (issue #10:
+/// "the tracer reports which"). A partition of the weights of [`component_weights`].
+///
+/// # Arguments
+/// - `surface`: the traced function.
+/// - `direction`: the unit ray direction (as traced).
+/// - `footprint_angle`: the option used to trace (rad), `≥ 0`; `0` gives empty lists.
+/// - `t`: the hit distance (m), `≥ 0`.
+///
+/// # Returns
+/// The indices with `wᵢ(t) = 0` and those with `0 < wᵢ(t) < 1`.
+///
+/// # References
+/// Bruneton, Neyret & Holzschuch 2010 (seamless transition from geometry to BRDF); equation sheet
+/// §11.
+pub fn faded_components<S: LipschitzSum + ?Sized>(
+    surface: &S,
+    direction: DVec3,
+    footprint_angle: f64,
+    t: f64,
+) -> FadedComponents {
+    let mut out = FadedComponents::default();
+    for (i, w) in component_weights(surface, direction, footprint_angle, t).into_iter().enumerate() {
+        if w <= 0.0 {
+            out.dropped.push(i);
+        } else if w < 1.0 {
+            out.fading.push(i);
+        }
+    }
+    out
 }
 
 #[cfg(test)]

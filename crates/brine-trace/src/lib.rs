@@ -19,11 +19,13 @@
 //! | [`Method::Directional`] | `|F|/Σ Lᵢ(d̂)` | Hart 1996 along the ray |
 //! | [`Method::Relaxed`] | `ω|F|/Σ Lᵢ(d̂)`, undone if the spheres do not overlap | Keinert et al. 2014 |
 //! | [`Method::Darles`] | [`efficient_lipschitz_step`] over components sorted by stale estimates | Darles et al. 2007 Alg. 1, equation sheet §2 |
+//! | [`Method::Segment`] | `min(s, |F|/λ_s)`, `λ_s = Σⱼ min(Lⱼ, |dⱼ| + Kⱼ s)` local to the candidate segment, next `s` = κ·step | Galin et al. 2020 Alg. 2 ([`trace_segments`]) |
 //! | [`Method::Tiered`] | first root of the certified bound [`StepBound`] over tiers of decreasing scale, the short ones pruned; over-relaxed steps checked backward, Newton probes on certified-monotone stretches | Brine ([`trace_tiers`]) |
 //!
 //! plus image coherence ([`trace_tile`]: a quadtree of cones certified by
 //! [`LipschitzSum::certify_cone`]), temporal coherence ([`trace_temporal`]) and footprint fading
-//! ([`TraceOptions::footprint_angle`], [`footprint_weight`]).
+//! ([`TraceOptions::footprint_angle`], [`footprint_weight`]; what was dropped at a hit:
+//! [`component_weights`], [`faded_components`]).
 //!
 //! ## Notation
 //!
@@ -105,6 +107,7 @@ mod footprint;
 mod options;
 mod ray;
 mod refine;
+mod segment;
 mod sphere;
 mod stats;
 mod step;
@@ -115,10 +118,14 @@ mod trace;
 
 pub use bounds::Aabb;
 pub use coherence::{MIN_CONE_RAYS, trace_temporal, trace_tile};
-pub use footprint::{FADE_CURVATURE, FADE_SLOPE, component_weights, footprint_weight, footprint_weight_slope};
+pub use footprint::{
+    FADE_CURVATURE, FADE_SLOPE, FadedComponents, component_weights, faded_components, footprint_weight,
+    footprint_weight_slope,
+};
 pub use options::{Hit, Method, Step, StepKind, TraceOptions, TraceOptionsError};
 pub use ray::{Ray, RayError};
 pub use refine::{bisect_crossing, refine_crossing};
+pub use segment::{SEGMENT_GROWTH, local_lipschitz, trace_segments};
 pub use stats::TraceStats;
 pub use step::{StepBound, efficient_lipschitz_step, printed_darles_step};
 pub use sum::LipschitzSum;

@@ -32,16 +32,22 @@ pub enum Method {
     /// a crossing enclosed by certified bounds; optional footprint fading. See
     /// [`crate::trace_tiers`].
     Tiered,
+    /// Segment tracing (Galin et al. 2020, Algorithm 2) on the same tiers as [`Method::Tiered`]:
+    /// every tier evaluated at every point, step `min(s, |F|/λ_s)` with `λ_s = Σⱼ min(Lⱼ, |dⱼ| +
+    /// Kⱼ s)` the Lipschitz bound local to the candidate segment `[t, t + s]`, next candidate
+    /// `κ` times the step. See [`crate::trace_segments`].
+    Segment,
 }
 
 impl Method {
     /// Every method, in the order of the benchmark tables.
-    pub const ALL: [Method; 6] = [
+    pub const ALL: [Method; 7] = [
         Method::BruteForce,
         Method::GlobalLipschitz,
         Method::Directional,
         Method::Relaxed,
         Method::Darles,
+        Method::Segment,
         Method::Tiered,
     ];
 
@@ -53,6 +59,7 @@ impl Method {
             Method::Directional => "directional L",
             Method::Relaxed => "relaxed (Keinert)",
             Method::Darles => "Darles Alg. 1",
+            Method::Segment => "segment (Galin)",
             Method::Tiered => "tiered (Brine)",
         }
     }
@@ -101,10 +108,11 @@ pub struct TraceOptions {
     /// Over-relaxation factor `ω` of [`Method::Relaxed`], `[1, 2)` (Keinert et al. suggest 1.2–1.6).
     pub relaxation: f64,
     /// Angular width of a pixel's footprint (rad), `≥ 0`; `0` (the default) disables fading.
-    /// With [`Method::Tiered`], component `i` is weighted by `smoothstep(1, 1.5, Tᵢ/t)` along the
-    /// ray, `Tᵢ` its [fade distance](crate::LipschitzSum::component_fade_distance): components
-    /// smaller than the footprint are dropped from the traced surface (the renderer moves them
-    /// into the BRDF). The other methods ignore it.
+    /// With [`Method::Tiered`] (and [`Method::Segment`], which traces the same tiers), component
+    /// `i` is weighted by `smoothstep(1, 1.5, Tᵢ/t)` along the ray, `Tᵢ` its
+    /// [fade distance](crate::LipschitzSum::component_fade_distance): components smaller than the
+    /// footprint are dropped from the traced surface (the renderer moves them into the BRDF;
+    /// [`crate::faded_components`] lists them). The other methods ignore it.
     pub footprint_angle: f64,
 }
 

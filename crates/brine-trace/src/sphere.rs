@@ -226,6 +226,25 @@ mod tests {
     }
 
     #[test]
+    fn vertical_rays_land_on_the_sine_for_every_method() {
+        // Straight down the wave is constant along the ray and every bound is exact: certified
+        // steps end on F = 0 up to rounding (either side). Expected hit: t = y₀ − a sin(k x₀).
+        let s = Sine { a: 0.7, k: 1.3 };
+        for j in 0..200 {
+            let x0 = 0.0137 * f64::from(j);
+            let y0 = 3.0 + 0.01 * f64::from(j);
+            let ray = Ray::new(DVec3::new(x0, y0, 0.0), -DVec3::Y).unwrap();
+            let expected = y0 - 0.7 * (1.3 * x0).sin();
+            for method in Method::ALL {
+                let options = TraceOptions { method, ..TraceOptions::default() };
+                let hit = trace(&s, &ray, &options, &mut TraceStats::default()).unwrap();
+                assert!((hit.t - expected).abs() < HIT_TOLERANCE, "{method:?}, x0 = {x0}: {} vs {expected}", hit.t);
+                assert!(hit.entering);
+            }
+        }
+    }
+
+    #[test]
     fn a_descending_ray_hits_the_sine_where_it_first_crosses() {
         // From (0, 2, 0) along (1, −0.2, 0): y = 2 − 0.2 x meets sin x first near x = 2.4.
         let s = Sine { a: 1.0, k: 1.0 };

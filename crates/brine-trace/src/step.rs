@@ -221,10 +221,27 @@ mod tests {
 
     #[test]
     fn darles_step_oracle_2_beats_the_global_step() {
-        // v = (3, 0.5, 0.5), m = −0.5 each, L = 0.5 each ⇒ 4.0 (global F/ΣL = 2.667).
+        // v = (3, 0.5, 0.5), m = −0.5 each, L = 0.5 each ⇒ 4.0 (global F/ΣL = 4/1.5 = 8/3).
         let (v, m, l) = ([3.0, 0.5, 0.5], [-0.5; 3], [0.5; 3]);
-        assert!((efficient_lipschitz_step(&v, &m, &l) - 4.0).abs() < ORACLE_TOLERANCE);
-        assert!((4.0f64 / 1.5 - 2.666_666_666_666_667).abs() < 1e-12);
+        let efficient = efficient_lipschitz_step(&v, &m, &l);
+        assert!((efficient - 4.0).abs() < ORACLE_TOLERANCE);
+        // The global (Hart) step through the code, two ways: the efficient bound of the whole sum
+        // lumped into one component (the only prefix is every component), and the certified bound
+        // with an unknown curvature (the Lipschitz step c/Λ).
+        let lumped = efficient_lipschitz_step(&[v.iter().sum()], &[m.iter().sum()], &[l.iter().sum()]);
+        let hart = StepBound {
+            value: v.iter().sum(),
+            slope: 0.0,
+            curvature: f64::INFINITY,
+            lipschitz: l.iter().sum(),
+            reserve: 0.0,
+            reserve_lipschitz: 0.0,
+        }
+        .first_root();
+        for global in [lumped, hart] {
+            assert!((global - 8.0 / 3.0).abs() < ORACLE_TOLERANCE, "global step {global}");
+            assert!(efficient > 1.4 * global, "efficient {efficient} vs global {global}");
+        }
     }
 
     #[test]

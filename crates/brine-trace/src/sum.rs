@@ -113,7 +113,8 @@ pub trait LipschitzSum {
     }
 
     /// Traces `ray` on `[t_enter, t_exit]` (already clipped to the zero-set bounds) with
-    /// [`crate::Method::Tiered`].
+    /// [`crate::Method::Tiered`], or with [`crate::Method::Segment`] when `options.method` says so
+    /// (both step on the same [`crate::RayTiers`]; [`crate::trace_tiers_with`] dispatches).
     ///
     /// The default groups the components into tiers by the generic adapter
     /// [`crate::ComponentTiers`]; an implementor with a fast ray-restricted evaluator (SIMD, pruned)

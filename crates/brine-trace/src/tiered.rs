@@ -34,6 +34,9 @@ pub struct TierScratch {
     /// Whether the stored slope of each tier is its sampled derivative with a finite curvature
     /// bound (`false`: the slope is the Lipschitz lower bound `−L`).
     exact: Vec<bool>,
+    /// Segment tracing ([`crate::trace_segments`]): the tiers' bounds and derivatives.
+    pub(crate) segment_bounds: Vec<TierBounds>,
+    pub(crate) segment_slopes: Vec<f64>,
 }
 
 impl TierScratch {
@@ -159,22 +162,23 @@ impl TierScratch {
     }
 
     /// The certified step *backward* (toward the ray origin) from the stored samples of the first
-    /// `k` tiers: [`step`](Self::step) with every known derivative reversed. A tier whose
-    /// derivative or curvature is unknown is stored as falling at its Lipschitz rate, `−L`, which
-    /// bounds it in both directions: it keeps `−L` (reversing it would claim the tier *rises* at
-    /// `L` backward and certify any step). The bounds hold there too: they were read at or before
-    /// the start of the step.
+    /// `k` tiers: [`step`](Self::step) with every sampled derivative reversed. The bounds hold
+    /// there too: they were read at or before the start of the step. A tier without a usable
+    /// derivative keeps its slope `−L`: that is a lower bound of its rate of change in either
+    /// direction (reversing it to `+L` would claim that the tier grows, and certify steps across
+    /// crossings: found by the sphere-sum property test, seed 308).
     fn backward_step(&mut self, k: usize, eps: f64, eta: f64, guess: f64) -> f64 {
-        let reverse = |slope: &mut [f64], exact: &[bool]| {
-            for (d, &e) in slope.iter_mut().zip(exact) {
-                if e {
-                    *d = -*d;
-                }
+        for (d, &exact) in self.slope[..k].iter_mut().zip(&self.exact[..k]) {
+            if exact {
+                *d = -*d;
             }
-        };
-        reverse(&mut self.slope[..k], &self.exact[..k]);
+        }
         let s = self.step(k, eps, eta, guess, (0.0, 0.0));
-        reverse(&mut self.slope[..k], &self.exact[..k]);
+        for (d, &exact) in self.slope[..k].iter_mut().zip(&self.exact[..k]) {
+            if exact {
+                *d = -*d;
+            }
+        }
         s
     }
 
@@ -351,7 +355,10 @@ pub fn trace_tiers<R: RayTiers + ?Sized>(
     trace_tiers_with(&mut TierScratch::default(), tiers, ray, t_enter, t_exit, options, stats, log)
 }
 
-/// The tiered method ([`crate::Method::Tiered`]) on a ray given as tiers `F = Σⱼ Tⱼ`.
+/// The tiered method ([`crate::Method::Tiered`]) on a ray given as tiers `F = Σⱼ Tⱼ`, or segment
+/// tracing on the same tiers when `options.method` is [`crate::Method::Segment`] (then this is
+/// [`crate::trace_segments`]; every other method selects the tiered method, so that implementors
+/// of [`crate::LipschitzSum::trace_tiered`] serve both by passing the options through).
 ///
 /// At each point only the first `k` tiers are evaluated; the others enter through their bounds
 /// (frequency pruning: far from the surface only long waves are evaluated). Tier `k` is added
@@ -381,7 +388,9 @@ pub fn trace_tiers<R: RayTiers + ?Sized>(
 ///
 /// # References
 /// Hart 1996 (sphere tracing); Darles et al. 2007 §3.1–3.2 (efficient bound, neglected high
-/// frequencies); Galin et al. 2020 (segment tracing: local bounds over the step); equation sheet §2.
+/// frequencies); Keinert et al. 2014 (over-relaxation); equation sheet §2. The second-order bound
+/// holds on the step only, like the local bounds of segment tracing (Galin et al. 2020), but it is
+/// Brine's; segment tracing proper is [`crate::Method::Segment`].
 #[allow(clippy::too_many_arguments)]
 pub fn trace_tiers_with<R: RayTiers + ?Sized>(
     scratch: &mut TierScratch,
@@ -393,6 +402,9 @@ pub fn trace_tiers_with<R: RayTiers + ?Sized>(
     stats: &mut TraceStats,
     log: Option<&mut Vec<Step>>,
 ) -> Option<Hit> {
+    if options.method == crate::Method::Segment {
+        return crate::trace_segments(scratch, tiers, ray, t_enter, t_exit, options, stats, log);
+    }
     match run(scratch, tiers, ray, t_enter, t_exit, options, stats, log, 0.0) {
         Outcome::Hit(hit) => Some(hit),
         Outcome::Miss | Outcome::Free(_) => None,

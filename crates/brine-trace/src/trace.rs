@@ -25,7 +25,7 @@ use crate::{Hit, LipschitzSum, Method, Ray, Step, TraceOptions, TraceStats};
 ///
 /// # References
 /// Hart 1996, §3 (sphere tracing); Darles et al. 2007, §3.1 (brute force, Algorithm 1); Keinert
-/// et al. 2014 (over-relaxation); equation sheet §2–3.
+/// et al. 2014 (over-relaxation); Galin et al. 2020 (segment tracing); equation sheet §2–3.
 pub fn trace<S: LipschitzSum + ?Sized>(
     surface: &S,
     ray: &Ray,
@@ -84,6 +84,7 @@ fn trace_impl<S: LipschitzSum + ?Sized>(
             sphere_trace(&along, t0, t1, surface.directional_lipschitz(d), options.relaxation, options, stats, log)
         }
         Method::Darles => darles_trace(surface, ray, t0, t1, options, stats, log),
-        Method::Tiered => surface.trace_tiered(ray, t0, t1, options, stats, log),
+        // Both trace the surface's tiers; `trace_tiers_with` dispatches on the method.
+        Method::Tiered | Method::Segment => surface.trace_tiered(ray, t0, t1, options, stats, log),
     }
 }

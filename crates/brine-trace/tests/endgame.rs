@@ -1,7 +1,7 @@
 //! The tiered method's shortcuts near the surface (Newton probe on a provably decreasing stretch,
 //! certified crossing interval, over-relaxed steps checked backward) never skip a crest: rays
 //! that graze a long swell carrying short steep waves, whose crests poke through the ray just
-//! before the swell's crossing, against a dense f64 reference.
+//! before the swell's crossing, against a dense f64 reference; segment tracing on the same rays.
 
 mod common;
 
@@ -45,20 +45,27 @@ fn shortcuts_never_skip_a_short_crest_before_the_swell_crossing() {
         // λ_min/100: far below the thinnest crest that can cross a ray deeper than the skim.
         let crossings = dense_crossings(&f, t0, t1, 1.5 / 100.0);
         let lambda = field.directional_lipschitz(ray.direction());
-        let mut log = Vec::new();
-        let hit = trace_logged(&fast, &ray, &options, &mut TraceStats::default(), &mut log);
-        let skim = 2.0 * eps + lambda * options.min_step;
-        check_first_crossing(&f, &crossings, hit.map(|h| h.t), eps + lambda * options.tolerance + 1e-12, skim)
-            .unwrap_or_else(|e| {
-                let th = hit.unwrap().t;
-                for j in -4..=4 {
-                    let x = th + f64::from(j) * 2e-5;
-                    eprintln!("x {x} F {:e} F~ {:e}", f(x), fast.value(ray.at(x)));
-                }
-                panic!("ray {i}: {e} {:?} eps {eps:e}", &log[log.len().saturating_sub(4)..])
-            });
-        check_steps(&f, &log, &options, 2.0 * eps + 1e-12, true).unwrap_or_else(|e| panic!("ray {i}: {e}"));
-        hits += usize::from(hit.is_some());
+        // Segment tracing (certified by its local bound alone) on the same rays.
+        for method in [Method::Tiered, Method::Segment] {
+            let options = TraceOptions { method, ..options };
+            let mut log = Vec::new();
+            let hit = trace_logged(&fast, &ray, &options, &mut TraceStats::default(), &mut log);
+            let skim = 2.0 * eps + lambda * options.min_step;
+            check_first_crossing(&f, &crossings, hit.map(|h| h.t), eps + lambda * options.tolerance + 1e-12, skim)
+                .unwrap_or_else(|e| {
+                    let th = hit.unwrap().t;
+                    for j in -4..=4 {
+                        let x = th + f64::from(j) * 2e-5;
+                        eprintln!("x {x} F {:e} F~ {:e}", f(x), fast.value(ray.at(x)));
+                    }
+                    panic!("{method:?}, ray {i}: {e} {:?} eps {eps:e}", &log[log.len().saturating_sub(4)..])
+                });
+            check_steps(&f, &log, &options, 2.0 * eps + 1e-12, true)
+                .unwrap_or_else(|e| panic!("{method:?}, ray {i}: {e}"));
+            if method == Method::Tiered {
+                hits += usize::from(hit.is_some());
+            }
+        }
     }
     assert!(hits > 200, "only {hits} hits: the test needs rays that hit");
 }

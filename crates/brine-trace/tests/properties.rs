@@ -3,9 +3,12 @@
 
 mod common;
 
-use brine_trace::{LipschitzSum, Method, Ray, StepBound, TraceOptions, TraceStats, trace_logged};
+use brine_trace::{
+    ComponentTiers, LipschitzSum, Method, Ray, RayTiers, StepBound, TraceOptions, TraceStats, local_lipschitz,
+    trace_logged,
+};
 use brine_waves::{TracedTrochoids, TrochoidSum};
-use common::{SphereSum, check_first_crossing, check_steps, dense_crossings, random_ray, random_set};
+use common::{SineSum, SphereSum, check_first_crossing, check_steps, dense_crossings, random_ray, random_set};
 use glam::DVec3;
 use proptest::prelude::*;
 use rand::SeedableRng;
@@ -92,7 +95,8 @@ proptest! {
 
 /// A component without a curvature bound (a sphere distance) is stored as falling at its
 /// Lipschitz rate; the over-relaxed step's backward check once reversed that rate and certified a
-/// step over the whole sphere. This ray (from the sphere-sum property's case `n = 1`, seed 413)
+/// step over the whole sphere. This ray (a case of the sphere-sum property, `n = 1`, seed 413,
+/// with the sphere's weight set to 1)
 /// crosses a sphere of radius 0.80 along a chord of 0.67 m at t = 9.704.
 #[test]
 fn a_relaxed_step_never_jumps_a_sphere_without_curvature_bound() {
@@ -116,14 +120,24 @@ fn a_relaxed_step_never_jumps_a_sphere_without_curvature_bound() {
     }
 }
 
+/// Cases of the trochoid safety test and rays per case (256 random rays, each traced by every
+/// method on the f32 surface, three on the f64 one and two with fading, against dense f64
+/// references; formerly 20 × 2). Measured in the dev profile (opt-level 1, dependencies 3) on the
+/// shared 2-core machine of docs/benchmarks.md: this file takes 23–42 s (the cases are random: N
+/// up to 200), the whole `cargo test -p brine-trace` 29–44 s of CPU after the build; 192 cases
+/// took 54 s for this file alone.
+const TROCHOID_CASES: u32 = 128;
+const TROCHOID_RAYS: usize = 2;
+
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 20, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: TROCHOID_CASES, ..ProptestConfig::default() })]
 
     /// Random trochoid sets (N up to 200, steepness up to 0.99) and random rays, grazing ones
     /// included: on the fast f32 surface every method returns the first crossing of the exact f64
     /// surface (up to skims thinner than its minimum step or 2ε, ε the f32 error bound); the
-    /// generic tiered and directional tracers on the exact surface do too; and the tiered method
-    /// with footprint fading returns the first crossing of the faded f64 surface.
+    /// generic directional, segment and tiered tracers on the exact surface do too; and the tiered
+    /// and segment methods with footprint fading return the first crossing of the faded f64
+    /// surface.
     #[test]
     fn every_method_finds_the_first_crossing_of_a_trochoid_sum(
         n in prop_oneof![1usize..20, 20usize..201],
@@ -139,7 +153,7 @@ proptest! {
         let eps = fast.error_bound();
         let half = set.total_amplitude();
         let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x5eed);
-        for _ in 0..2 {
+        for _ in 0..TROCHOID_RAYS {
             let ray = random_ray(half, &mut rng);
             let f = |t: f64| exact.value(ray.at(t));
             let Some((t0, t1)) = exact.zero_set_bounds().clip(&ray, 0.0, 60.0) else { continue };
@@ -160,7 +174,7 @@ proptest! {
             for method in Method::ALL {
                 run(&fast, method, 0.0, &f, &crossings, eps)?;
             }
-            for method in [Method::Directional, Method::Tiered] {
+            for method in [Method::Directional, Method::Segment, Method::Tiered] {
                 run(&exact, method, 0.0, &f, &crossings, 0.0)?;
             }
             // Footprint fading: the reference is the faded surface y − Σ wᵢ(t) hᵢ.
@@ -179,6 +193,82 @@ proptest! {
             };
             let faded_crossings = dense_crossings(&faded, t0, t1, lambda_min / 50.0);
             run(&fast, Method::Tiered, fp, &faded, &faded_crossings, eps)?;
+            run(&fast, Method::Segment, fp, &faded, &faded_crossings, eps)?;
+        }
+    }
+}
+
+/// Slack of a chord slope over the local bound (per metre): f64 rounding of values up to 100 m
+/// (10⁻¹⁴) over grid steps of at least 2.5×10⁻⁵ m.
+const CHORD_SLACK: f64 = 1e-8;
+
+/// Reference step of the dense march on the sine sums (m): a fiftieth of the shortest wavelength 1 m.
+const SINE_REFERENCE_STEP: f64 = 0.02;
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 128, ..ProptestConfig::default() })]
+
+    /// Segment tracing's local bound: on the segment `[t, t + s]`, every chord slope of every tier
+    /// is at most `min(L, |d(t)| + K s)` (the tiers of a sine sum, exact derivative and curvature).
+    #[test]
+    fn segment_local_lipschitz_bound_holds_on_its_segment(
+        n in 1usize..40,
+        seed in 0u64..10_000,
+        t in 0.0f64..50.0,
+        s in 1e-2f64..30.0,
+        dy in -0.99f64..-0.001,
+        azimuth in 0.0f64..std::f64::consts::TAU,
+    ) {
+        let surface = SineSum::random(n, seed);
+        let h = (1.0 - dy * dy).sqrt();
+        let ray = Ray::new(DVec3::new(1.0, 2.0, -3.0), DVec3::new(h * azimuth.cos(), dy, h * azimuth.sin())).unwrap();
+        let mut tiers = ComponentTiers::new(&surface, &ray, 0.0, 100.0, 0.0);
+        let m = 400;
+        for j in 0..tiers.tier_count() {
+            let b = tiers.bounds(j, t);
+            let start = tiers.sample(j, t);
+            let lambda = local_lipschitz(&b, start.slope, s);
+            prop_assert!(lambda <= b.lipschitz, "tier {j}: local {lambda} > global {}", b.lipschitz);
+            let mut previous = start.value;
+            for i in 1..=m {
+                let v = tiers.sample(j, t + s * i as f64 / m as f64).value;
+                let chord = (v - previous).abs() / (s / m as f64);
+                prop_assert!(chord <= lambda + CHORD_SLACK, "tier {j}, s = {s}: chord slope {chord} > {lambda}");
+                previous = v;
+            }
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 32, ..ProptestConfig::default() })]
+
+    /// Sums of sines (exact derivatives and curvature bounds, generic `ComponentTiers`): every
+    /// method, segment and tiered included, returns the first crossing and takes no certified
+    /// step across one.
+    #[test]
+    fn every_method_finds_the_first_crossing_of_a_sine_sum(n in 1usize..40, seed in 0u64..10_000) {
+        let surface = SineSum::random(n, seed);
+        let half = surface.amplitudes.iter().sum::<f64>();
+        let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0xabc);
+        for _ in 0..4 {
+            let ray = random_ray(half, &mut rng);
+            let f = |t: f64| surface.value(ray.at(t));
+            let Some((t0, t1)) = surface.zero_set_bounds().clip(&ray, 0.0, 60.0) else { continue };
+            let crossings = dense_crossings(&f, t0, t1, SINE_REFERENCE_STEP);
+            let lambda = surface.directional_lipschitz(ray.direction());
+            for method in Method::ALL {
+                let options = test_options(method);
+                let mut log = Vec::new();
+                let hit = trace_logged(&surface, &ray, &options, &mut TraceStats::default(), &mut log);
+                let march = 0.25 * surface.min_feature_size();
+                let skim = lambda * if method == Method::BruteForce { march } else { options.min_step } + 1e-12;
+                let on_surface = lambda * options.tolerance + 1e-12;
+                check_first_crossing(&f, &crossings, hit.map(|h| h.t), on_surface, skim)
+                    .map_err(|e| TestCaseError::fail(format!("{method:?}, n {n}, seed {seed}: {e}")))?;
+                check_steps(&f, &log, &options, 1e-12, method != Method::BruteForce)
+                    .map_err(|e| TestCaseError::fail(format!("{method:?}, n {n}, seed {seed}: {e}")))?;
+            }
         }
     }
 }
