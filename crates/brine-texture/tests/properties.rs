@@ -124,7 +124,8 @@ proptest! {
 
     /// The first crossing is found: sphere tracing the composed surface stops where a fine march
     /// first changes sign (the march step is far below a texel, so it sees every crossing the
-    /// tracer must see).
+    /// tracer must see), up to skims thinner than the minimum step (seed 1862: a dip of the
+    /// surface at t = 59.68 shallower than L(d̂)·h = 0.56 mm, the crossing at 59.84).
     #[test]
     fn the_first_crossing_is_found(
         seed in 0u64..10_000, height in 0.5f64..6.0, pitch_deg in -60.0f64..-3.0, yaw in 0.0f64..std::f64::consts::TAU,
@@ -151,9 +152,27 @@ proptest! {
             }
             t = t1;
         }
+        // A hit is a sign change seen by the tracer's probes: a dip below zero thinner than the
+        // minimum step h(t) (depth under L(d̂)·h, a skim over a crest) may be passed over. The
+        // traced hit is the marched crossing, or lies beyond crossings that are all such skims.
+        let skim = |from: f64, to: f64| {
+            let depth = s.directional_lipschitz(d) * options.min_step_at(to);
+            let mut u = from;
+            while u < to - 2.0 * step {
+                if s.value(ray.at(u)) < -depth {
+                    return false;
+                }
+                u += step;
+            }
+            true
+        };
         match (hit, reference) {
-            (Some(h), Some(r)) => prop_assert!((h.t - r).abs() <= 2.0 * step, "traced {} vs marched {r}", h.t),
+            (Some(h), Some(r)) => prop_assert!(
+                (h.t - r).abs() <= 2.0 * step || (h.t > r && skim(r, h.t)),
+                "traced {} vs marched {r}", h.t
+            ),
             (None, None) => {}
+            (None, Some(r)) => prop_assert!(skim(r, options.t_max), "traced nothing vs marched {r}"),
             (h, r) => prop_assert!(false, "traced {h:?} vs marched {r:?}"),
         }
     }
