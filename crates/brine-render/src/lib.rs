@@ -36,13 +36,16 @@
 //!
 //! ## Example
 //!
-//! ```no_run
+//! ```
 //! use brine_render::{RenderOptions, Scene, render, write_image};
 //! let mut scene = Scene::default_scene();
-//! scene.camera.width = 160;
-//! scene.camera.height = 90;
+//! scene.camera.width = 80;
+//! scene.camera.height = 45;
 //! let frame = render(&scene, &RenderOptions::default(), &|| {})?;
-//! write_image("small.png".as_ref(), frame.width, frame.height, &frame.pixels, frame.exposure_ev)?;
+//! assert!(frame.pixels.iter().all(|p| p.is_finite()));
+//! let path = std::env::temp_dir().join("brine-doc-example.png");
+//! write_image(&path, frame.width, frame.height, &frame.pixels, frame.exposure_ev)?;
+//! # std::fs::remove_file(&path)?;
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
