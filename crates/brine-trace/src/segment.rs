@@ -2,7 +2,8 @@
 //! bound local to a candidate segment instead of the global one.
 
 use crate::options::log_step;
-use crate::{Hit, Ray, RayTiers, Step, StepKind, TierBounds, TierScratch, TraceOptions, TraceStats, refine_crossing};
+use crate::tiered::refine_tiers;
+use crate::{Hit, Ray, RayTiers, Step, StepKind, TierBounds, TierScratch, TraceOptions, TraceStats};
 
 /// Growth factor `κ` of the candidate segment (Galin et al. 2020, Algorithm 2: after a step `tₖ`
 /// the next candidate segment is `κ tₖ`; `κ > 1` lets the segment grow after a step clamped to
@@ -164,28 +165,7 @@ pub fn trace_segments<R: RayTiers + ?Sized>(
         if g_next == 0.0 || (g_next > 0.0) != positive {
             log_step(&mut log, t, t_next, StepKind::Bracket);
             let tolerance = options.tolerance_at(t_next);
-            let mut refinement = 0u64;
-            let mut terms = 0u64;
-            let (t_hit, _) = refine_crossing(
-                |x| {
-                    refinement += 1;
-                    let mut sum = 0.0;
-                    for j in 0..n {
-                        let s = tiers.sample(j, x);
-                        terms += u64::from(s.terms);
-                        sum += s.value;
-                    }
-                    sum
-                },
-                t,
-                g,
-                t_next,
-                g_next,
-                tolerance,
-            );
-            stats.evaluations += refinement;
-            stats.refinement_evaluations += refinement;
-            stats.component_evaluations += terms;
+            let t_hit = refine_tiers(tiers, 1.0, (t, g), (t_next, g_next), tolerance, stats);
             stats.hits += 1;
             return Some(Hit { t: t_hit, point: ray.at(t_hit), entering: positive, steps });
         }

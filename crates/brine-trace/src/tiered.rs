@@ -336,6 +336,42 @@ fn quadratic_fall(d: f64, k: f64, l: f64, s: f64) -> f64 {
     if s <= s1 { -(d * s - 0.5 * k * s * s) } else { -(d * s1 - 0.5 * k * s1 * s1) + l * (s - s1) }
 }
 
+/// Refines the sign change of `sign · Σⱼ Tⱼ` bracketed by `(a, g_a)` and `(b, g_b)` (values
+/// already oriented by `sign`) to `tolerance`, sampling every tier at each point and counting the
+/// points as evaluations (refinement) and the tiers' terms in `stats`.
+pub(crate) fn refine_tiers<R: RayTiers + ?Sized>(
+    tiers: &mut R,
+    sign: f64,
+    (a, g_a): (f64, f64),
+    (b, g_b): (f64, f64),
+    tolerance: f64,
+    stats: &mut TraceStats,
+) -> f64 {
+    let n = tiers.tier_count();
+    let (mut refinement, mut terms) = (0u64, 0u64);
+    let (t_hit, _) = refine_crossing(
+        |x| {
+            refinement += 1;
+            let mut sum = 0.0;
+            for j in 0..n {
+                let smp = tiers.sample(j, x);
+                terms += u64::from(smp.terms);
+                sum += smp.value;
+            }
+            sign * sum
+        },
+        a,
+        g_a,
+        b,
+        g_b,
+        tolerance,
+    );
+    stats.evaluations += refinement;
+    stats.refinement_evaluations += refinement;
+    stats.component_evaluations += terms;
+    t_hit
+}
+
 /// Traces a ray given as tiers (see [`trace_tiers_with`]), with fresh buffers.
 ///
 /// # Arguments
@@ -691,29 +727,7 @@ fn run<R: RayTiers + ?Sized>(
             } else if p - s <= tol {
                 t + 0.5 * (s + p)
             } else {
-                let mut refinement = 0u64;
-                let mut terms = 0u64;
-                let (t_hit, _) = refine_crossing(
-                    |x| {
-                        refinement += 1;
-                        let mut sum = 0.0;
-                        for j in 0..n {
-                            let smp = tiers.sample(j, x);
-                            terms += u64::from(smp.terms);
-                            sum += smp.value;
-                        }
-                        sign * sum
-                    },
-                    t,
-                    g,
-                    tp,
-                    gp,
-                    tol,
-                );
-                stats.evaluations += refinement;
-                stats.refinement_evaluations += refinement;
-                stats.component_evaluations += terms;
-                t_hit
+                refine_tiers(tiers, sign, (t, g), (tp, gp), tol, stats)
             };
             stats.hits += 1;
             return Outcome::Hit(Hit { t: t_hit, point: ray.at(t_hit), entering: sign > 0.0, steps });
