@@ -126,7 +126,7 @@ impl CloudLayers {
 
     /// Periodic value noise in `[0, 1]` with smoothstep interpolation.
     fn value_noise(&self, x: DVec2) -> f64 {
-        let (fx, fy) = (x.x.floor(), x.y.floor());
+        let (fx, fy) = (lattice_floor(x.x), lattice_floor(x.y));
         let (i, j) = (fx as i64, fy as i64);
         let (u, v) = (x.x - fx, x.y - fy);
         let s = |t: f64| t * t * (3.0 - 2.0 * t);
@@ -165,8 +165,13 @@ impl CloudLayers {
     /// Cloud layer `k` (0 or 1) read through the perturbation offset: layer 0 at the feature
     /// size moving with the wind, `fBm(uv − (w/ℓ) t + o)`; layer 1 at half the feature size
     /// moving [`LAYER_SPEEDS`]`[1]` times faster, `fBm(2(uv − 1.6 (w/ℓ) t + o))`.
+    #[cfg(test)]
     fn layer(&self, k: usize, uv: DVec2, time_s: f64) -> f64 {
-        let offset = self.perturbation(uv, time_s);
+        self.layer_with(k, uv, time_s, self.perturbation(uv, time_s))
+    }
+
+    /// [`Self::layer`] read through a perturbation `offset` computed once for both layers.
+    fn layer_with(&self, k: usize, uv: DVec2, time_s: f64, offset: DVec2) -> f64 {
         let at = uv - self.wind_uv() * (LAYER_SPEEDS[k] * time_s) + offset;
         match k {
             0 => self.fbm(at, CLOUD_OCTAVES, 0.0),
@@ -177,7 +182,9 @@ impl CloudLayers {
     /// Cloud density at texture coordinates `uv` (units of the feature size) and time `t` (s):
     /// Chen's perturbed read of two scrolled layers, `0.65 d₀ + 0.35 d₁`, in `[0, 1]`.
     fn density(&self, uv: DVec2, time_s: f64) -> f64 {
-        0.65 * self.layer(0, uv, time_s) + 0.35 * self.layer(1, uv, time_s)
+        // Both layers are read through the same perturbation map: computed once.
+        let offset = self.perturbation(uv, time_s);
+        0.65 * self.layer_with(0, uv, time_s, offset) + 0.35 * self.layer_with(1, uv, time_s, offset)
     }
 
     /// Distance along a unit view direction to the cloud shell at the cloud altitude (spherical
@@ -251,9 +258,31 @@ impl CloudLayers {
     }
 }
 
+/// `⌊x⌋` by truncation, for the noise lattice: equal to `f64::floor` for `|x| < 2⁶³` (the lattice
+/// coordinates are far smaller). On the x86-64 baseline (SSE2, no `roundsd`) `f64::floor` is a
+/// library call, and this sits in the per-pixel noise loops.
+#[inline]
+fn lattice_floor(x: f64) -> f64 {
+    let t = x as i64 as f64;
+    if t > x { t - 1.0 } else { t }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Exact equality is the claim (±0 compare equal).
+    #[test]
+    #[allow(clippy::float_cmp)]
+    fn lattice_floor_is_floor() {
+        for i in -2000..2000 {
+            let x = f64::from(i) * 0.37 - 0.5;
+            for v in [x, x.floor(), x.floor() - 1e-12, x.floor() + 1e-12, -0.0, 0.0] {
+                assert_eq!(lattice_floor(v), v.floor(), "{v}");
+            }
+        }
+        assert_eq!(lattice_floor(-1e15 - 0.5), (-1e15f64 - 0.5).floor());
+    }
 
     /// Periodic noise: equal at points one period apart up to the rounding of the coordinates.
     const TILING_ROUNDING: f64 = 1e-9;

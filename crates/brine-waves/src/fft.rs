@@ -229,17 +229,20 @@ impl FftOcean {
             let half = n as i64 / 2 - 1;
             let side = 2 * half as usize + 1;
             // Energy of every cell, indexed by (nz + half)·side + (nx + half).
+            // Rows in parallel (each cell's quadrature is independent: the same numbers at any
+            // thread count).
             let mut energy = vec![0.0; side * side];
-            for nz in -half..=half {
-                for nx in -half..=half {
+            energy.par_chunks_mut(side).enumerate().for_each(|(row, cells)| {
+                let nz = row as i64 - half;
+                for (col, cell) in cells.iter_mut().enumerate() {
+                    let nx = col as i64 - half;
                     let m = nx.abs().max(nz.abs()) as f64;
                     if (m + 0.5) * dk <= lo || (m - 0.5) * dk >= hi {
                         continue;
                     }
-                    let e = cell_energy(&psi, nx as f64 * dk, nz as f64 * dk, dk, band);
-                    energy[(nz + half) as usize * side + (nx + half) as usize] = e.max(0.0);
+                    *cell = cell_energy(&psi, nx as f64 * dk, nz as f64 * dk, dk, band).max(0.0);
                 }
-            }
+            });
             let at = |nx: i64, nz: i64| energy[(nz + half) as usize * side + (nx + half) as usize];
             let mut rng = ChaCha8Rng::seed_from_u64(options.seed);
             rng.set_stream(c as u64);

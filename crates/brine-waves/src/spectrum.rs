@@ -25,7 +25,9 @@ const M0_HIGH: f64 = 1000.0;
 ///
 /// Implemented by [`PiersonMoskowitz`], [`crate::Jonswap`], [`crate::Tma`], [`crate::Phillips`]
 /// and [`crate::Elfouhaily`].
-pub trait Spectrum {
+///
+/// `Sync`: the FFT ocean integrates its grids over rows in parallel.
+pub trait Spectrum: Sync {
     /// One-sided frequency spectrum of the surface elevation, `S(ω)`: the elevation variance per
     /// unit angular frequency, `m₀ = ∫₀^∞ S(ω) dω`.
     ///

@@ -9,7 +9,9 @@ use crate::error::{WaveError, check};
 ///
 /// Implemented by [`CosineTwoS`] (Longuet-Higgins / Mitsuyasu / Hasselmann), [`DonelanBanner`],
 /// [`CosineSquared`] and [`crate::ElfouhailySpreading`].
-pub trait Spreading {
+///
+/// `Sync`: the FFT ocean integrates its grids over rows in parallel.
+pub trait Spreading: Sync {
     /// Directional spreading density `D(θ; ω)`: the share of the variance at frequency `ω` per
     /// radian of direction, `∫_{−π}^{π} D(θ; ω) dθ = 1`.
     ///

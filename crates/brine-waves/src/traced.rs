@@ -19,8 +19,15 @@ use crate::fast_profile::{
 };
 use crate::{Trochoid, TrochoidSet};
 
-/// Waves per tier: one f32x8 vector.
+/// Waves per lane group: one f32x8 vector.
 pub const LANES: usize = 8;
+
+/// Lane groups per tier of the tracer. The tracer's bookkeeping (bounds, the certified step's
+/// assignment of each tier) costs about as much per tier as sampling 8 lanes, while frequency
+/// pruning rarely drops more than a few groups of a fitted sea at the surface: three groups (24
+/// waves) per tier measured fastest on the frame benchmark (1, 2, 3, 4, 6, 13 groups: 3.04, 2.74,
+/// 2.63, 2.66, 2.65, 2.92 s single-threaded; docs/benchmarks.md).
+const GROUP: usize = 3;
 
 /// One tier of 8 lanes (padding lanes have `A = 0`, `k = 0`).
 #[derive(Debug, Clone)]
@@ -337,7 +344,7 @@ struct RayState {
 }
 
 /// [`RayTiers`] of a [`TracedTrochoids`] along one ray (or the cone around it): tier 0 is `y`,
-/// tier `j ≥ 1` the `j`-th group of 8 waves.
+/// tier `j ≥ 1` the `j`-th run of [`GROUP`] groups of 8 waves.
 struct SeaTiers<'a> {
     sea: &'a TracedTrochoids,
     state: &'a mut RayState,
@@ -426,17 +433,15 @@ impl<'a> SeaTiers<'a> {
     }
 }
 
-impl RayTiers for SeaTiers<'_> {
-    fn tier_count(&self) -> usize {
-        self.sea.tiers.len() + 1
+impl SeaTiers<'_> {
+    /// The sea's lane groups summed into tracer tier `tier ≥ 1`: [`GROUP`] consecutive groups.
+    fn group(&self, tier: usize) -> std::ops::Range<usize> {
+        let first = (tier - 1) * GROUP;
+        first..(first + GROUP).min(self.sea.tiers.len())
     }
 
-    fn bounds(&mut self, tier: usize, t: f64) -> TierBounds {
-        if tier == 0 {
-            let (y0, y1) = (self.origin.y + self.direction.y * t, self.origin.y + self.direction.y * self.t_exit);
-            return TierBounds { min: y0.min(y1), max: y0.max(y1), lipschitz: self.direction.y.abs(), curvature: 0.0 };
-        }
-        let j = tier - 1;
+    /// Bounds of the sea's lane group `j` (8 waves) for every `t' ∈ [t, t_exit]`.
+    fn lane_bounds(&self, j: usize, t: f64) -> TierBounds {
         let info = self.state.tier[j];
         if t >= info.fade_max {
             return TierBounds::ZERO;
@@ -474,15 +479,8 @@ impl RayTiers for SeaTiers<'_> {
         TierBounds { min: -amp, max: amp, lipschitz: lip, curvature: curv }
     }
 
-    fn spread_lipschitz(&self, tier: usize) -> f64 {
-        if tier == 0 { 1.0 } else { self.state.tier[tier - 1].spread }
-    }
-
-    fn sample(&mut self, tier: usize, t: f64) -> TierSample {
-        if tier == 0 {
-            return TierSample { value: self.origin.y + self.direction.y * t, slope: self.direction.y, terms: 0 };
-        }
-        let j = tier - 1;
+    /// The sea's lane group `j` (8 waves) at `t`.
+    fn lane_sample(&self, j: usize, t: f64) -> TierSample {
         let info = self.state.tier[j];
         if t >= info.fade_max {
             return TierSample { value: 0.0, slope: 0.0, terms: 0 };
@@ -515,6 +513,47 @@ impl RayTiers for SeaTiers<'_> {
             (-(weight * h).reduce_add(), (weight * dh - dweight * h).reduce_add(), live as u32)
         };
         TierSample { value: f64::from(value) - info.held, slope: f64::from(slope), terms }
+    }
+}
+
+impl RayTiers for SeaTiers<'_> {
+    fn tier_count(&self) -> usize {
+        self.sea.tiers.len().div_ceil(GROUP) + 1
+    }
+
+    fn bounds(&mut self, tier: usize, t: f64) -> TierBounds {
+        if tier == 0 {
+            let (y0, y1) = (self.origin.y + self.direction.y * t, self.origin.y + self.direction.y * self.t_exit);
+            return TierBounds { min: y0.min(y1), max: y0.max(y1), lipschitz: self.direction.y.abs(), curvature: 0.0 };
+        }
+        // The bounds of a sum: the sums of the bounds.
+        let mut b = TierBounds::ZERO;
+        for j in self.group(tier) {
+            let g = self.lane_bounds(j, t);
+            b.min += g.min;
+            b.max += g.max;
+            b.lipschitz += g.lipschitz;
+            b.curvature += g.curvature;
+        }
+        b
+    }
+
+    fn spread_lipschitz(&self, tier: usize) -> f64 {
+        if tier == 0 { 1.0 } else { self.group(tier).map(|j| self.state.tier[j].spread).sum() }
+    }
+
+    fn sample(&mut self, tier: usize, t: f64) -> TierSample {
+        if tier == 0 {
+            return TierSample { value: self.origin.y + self.direction.y * t, slope: self.direction.y, terms: 0 };
+        }
+        let mut out = TierSample { value: 0.0, slope: 0.0, terms: 0 };
+        for j in self.group(tier) {
+            let g = self.lane_sample(j, t);
+            out.value += g.value;
+            out.slope += g.slope;
+            out.terms += g.terms;
+        }
+        out
     }
 
     fn error_bound(&self) -> f64 {
@@ -668,11 +707,17 @@ mod tests {
         if tier == 0 {
             return ray.at(t).y;
         }
+        // Tracer tier `tier` holds the lane groups `(tier − 1)·GROUP ..` (`SeaTiers::group`).
+        let groups = (tier - 1) * GROUP..tier * GROUP;
         let p = ray.at(t);
         let mut sum = 0.0;
+        let mut held = 0.0;
+        for j in groups.clone().filter(|&j| j < sea.tiers.len()) {
+            held += state.tier[j].held;
+        }
         for (i, (w, offset)) in sea.waves.iter().enumerate() {
             let (j, l) = sea.lane_of_wave[i];
-            if j != tier - 1 {
+            if !groups.contains(&j) {
                 continue;
             }
             let k = w.wavenumber() * w.direction_vector();
@@ -680,7 +725,7 @@ mod tests {
             let weight = footprint_weight(f64::from(state.fade[j][l]), t);
             sum -= weight * state.mask[j][l] as f64 * w.amplitude() * c;
         }
-        sum - state.tier[tier - 1].held
+        sum - held
     }
 
     proptest! {
