@@ -210,7 +210,7 @@ impl Whitecaps {
     pub fn coverage(&self, u: DVec2, t: f64, sigma_m: f64) -> f64 {
         match self {
             Whitecaps::Trochoids { stats, calibration, alpha } => {
-                let m = stats.moments_at(u, t, sigma_m, FootprintFilter::Gaussian);
+                let m = stats.moments_at_f32(u, t, sigma_m, FootprintFilter::Gaussian);
                 match calibration {
                     Some(c) => c.coverage(m, sigma_m, ErfMethod::AbramowitzStegun),
                     None => whitecap_coverage(m, *alpha, ErfMethod::AbramowitzStegun),

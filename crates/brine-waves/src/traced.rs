@@ -22,12 +22,21 @@ use crate::{Trochoid, TrochoidSet};
 /// Waves per lane group: one f32x8 vector.
 pub const LANES: usize = 8;
 
-/// Lane groups per tier of the tracer. The tracer's bookkeeping (bounds, the certified step's
-/// assignment of each tier) costs about as much per tier as sampling 8 lanes, while frequency
-/// pruning rarely drops more than a few groups of a fitted sea at the surface: three groups (24
-/// waves) per tier measured fastest on the frame benchmark (1, 2, 3, 4, 6, 13 groups: 3.04, 2.74,
-/// 2.63, 2.66, 2.65, 2.92 s single-threaded; docs/benchmarks.md).
-const GROUP: usize = 3;
+/// Tiers of waves the tracer sees (besides `y`), whatever `N`: each holds [`tier_group`] lane
+/// groups of 8 waves.
+///
+/// The tracer's bookkeeping per tier (bounds, the certified step's assignment of each tier) costs
+/// about as much as sampling 8 lanes, while frequency pruning rarely drops more than a few lane
+/// groups of a fitted sea near the surface. Whole 640×480 frames of the default scene (2 threads,
+/// s, best of two) with 1, 2, 3, 5 groups per tier: N = 30: 0.57, 0.53, 0.56, 0.56; N = 50: 0.74,
+/// 0.71, 0.71, 0.73; N = 200: 2.36, 2.08, 1.93, 1.95; N = 100, one thread, 1, 2, 3, 4, 6 groups:
+/// 3.04, 2.74, 2.63, 2.66, 2.65. About five tiers is at or near the fastest everywhere.
+const WAVE_TIERS: usize = 5;
+
+/// Lane groups per tracer tier for a sea of `groups` lane groups: `⌈groups/5⌉` ([`WAVE_TIERS`]).
+fn tier_group(groups: usize) -> usize {
+    groups.div_ceil(WAVE_TIERS).max(1)
+}
 
 /// One tier of 8 lanes (padding lanes have `A = 0`, `k = 0`).
 #[derive(Debug, Clone)]
@@ -74,6 +83,8 @@ struct Tier {
 #[derive(Debug, Clone)]
 pub struct TracedTrochoids {
     tiers: Vec<Tier>,
+    /// Lane groups per tier of the tracer ([`tier_group`]).
+    group: usize,
     /// `(tier, lane)` of wave `i` (original order).
     lane_of_wave: Vec<(usize, usize)>,
     /// Wave `i` (original order): `(Trochoid, offset φᵢ − ωᵢt)`.
@@ -161,7 +172,8 @@ impl TracedTrochoids {
                 w.mean_square_slope() * DVec3::new(d.x * d.x, d.x * d.y, d.y * d.y)
             })
             .collect();
-        Self { tiers, lane_of_wave, waves, slope_covariance, total_amplitude: set.total_amplitude(), error }
+        let group = tier_group(tiers.len());
+        Self { tiers, group, lane_of_wave, waves, slope_covariance, total_amplitude: set.total_amplitude(), error }
     }
 
     /// Number of waves.
@@ -344,7 +356,7 @@ struct RayState {
 }
 
 /// [`RayTiers`] of a [`TracedTrochoids`] along one ray (or the cone around it): tier 0 is `y`,
-/// tier `j ≥ 1` the `j`-th run of [`GROUP`] groups of 8 waves.
+/// tier `j ≥ 1` the `j`-th run of [`tier_group`] lane groups of 8 waves.
 struct SeaTiers<'a> {
     sea: &'a TracedTrochoids,
     state: &'a mut RayState,
@@ -434,10 +446,11 @@ impl<'a> SeaTiers<'a> {
 }
 
 impl SeaTiers<'_> {
-    /// The sea's lane groups summed into tracer tier `tier ≥ 1`: [`GROUP`] consecutive groups.
+    /// The sea's lane groups summed into tracer tier `tier ≥ 1`: `group` consecutive ones.
     fn group(&self, tier: usize) -> std::ops::Range<usize> {
-        let first = (tier - 1) * GROUP;
-        first..(first + GROUP).min(self.sea.tiers.len())
+        let g = self.sea.group;
+        let first = (tier - 1) * g;
+        first..(first + g).min(self.sea.tiers.len())
     }
 
     /// Bounds of the sea's lane group `j` (8 waves) for every `t' ∈ [t, t_exit]`.
@@ -518,7 +531,7 @@ impl SeaTiers<'_> {
 
 impl RayTiers for SeaTiers<'_> {
     fn tier_count(&self) -> usize {
-        self.sea.tiers.len().div_ceil(GROUP) + 1
+        self.sea.tiers.len().div_ceil(self.sea.group) + 1
     }
 
     fn bounds(&mut self, tier: usize, t: f64) -> TierBounds {
@@ -707,8 +720,8 @@ mod tests {
         if tier == 0 {
             return ray.at(t).y;
         }
-        // Tracer tier `tier` holds the lane groups `(tier − 1)·GROUP ..` (`SeaTiers::group`).
-        let groups = (tier - 1) * GROUP..tier * GROUP;
+        // Tracer tier `tier` holds the lane groups `(tier − 1)·group ..` (`SeaTiers::group`).
+        let groups = (tier - 1) * sea.group..tier * sea.group;
         let p = ray.at(t);
         let mut sum = 0.0;
         let mut held = 0.0;

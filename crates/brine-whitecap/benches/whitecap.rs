@@ -46,6 +46,13 @@ fn whitecap(c: &mut Criterion) {
                 })
             });
         }
+        for s in [0.0, 1.0] {
+            g.bench_function(format!("moments_at_f32 {n} waves, footprint {s} m"), |b| {
+                b.iter(|| {
+                    st.moments_at_f32(black_box(DVec2::new(12.3, -4.5)), 0.0, black_box(s), FootprintFilter::Gaussian)
+                })
+            });
+        }
         g.bench_function(format!("moments_at {n} waves, footprint 1 m, sharp filter"), |b| {
             b.iter(|| st.moments_at(black_box(DVec2::new(12.3, -4.5)), 0.0, black_box(1.0), FootprintFilter::Sharp))
         });

@@ -75,4 +75,4 @@ pub use erf::{
 pub use error::WhitecapError;
 pub use fft_calibration::{FFT_CALIBRATION_SAMPLES, FftCalibration};
 pub use fft_statistics::FftJacobianStatistics;
-pub use statistics::{FootprintFilter, JacobianStatistics, Moments};
+pub use statistics::{F32_MOMENTS_ERROR, FootprintFilter, JacobianStatistics, Moments};
