@@ -1,5 +1,6 @@
 //! A trochoid sum frozen at one instant and laid out for fast tracing: waves sorted by length
-//! scale in tiers of 8 f32 lanes (SIMD), each tier with its bounds along a ray.
+//! scale in lane groups of 8 f32 lanes (SIMD), about five tiers of groups along a ray, each with
+//! its bounds.
 
 // Lane loops index several parallel arrays of one tier at once.
 #![allow(clippy::needless_range_loop)]
