@@ -13,7 +13,7 @@ use brine_trace::{
     TraceOptions, TraceStats, certify_cone_with, footprint_weight, trace_tiers_with,
 };
 use glam::{DVec2, DVec3};
-use wide::f32x8;
+use wide::{f32x8, f64x4};
 
 use crate::fast_profile::{
     PROFILE_ERROR, ProfileMode, SERIES_ROWS, profile1, profile8, reduce_phases, series_polynomials,
@@ -54,14 +54,20 @@ struct Tier {
     curvature_factor: [f64; LANES],
     /// `Aᵢ·PROFILE_ERROR/(1 − Qᵢ)²` (derivative error per unit `|σᵢ|`).
     slope_error_factor: [f64; LANES],
-    /// Slope covariance `⟨sᵢ²⟩ (k̂x², k̂x k̂z, k̂z²)` per lane (0 for padding lanes).
-    slope_covariance: [[f64; 3]; LANES],
+    /// Slope covariance `⟨sᵢ²⟩ (k̂x², k̂x k̂z, k̂z²)` per lane, one array per entry (0 for padding
+    /// lanes).
+    slope_covariance: [[f64; LANES]; 3],
     mode: ProfileMode,
     /// Series polynomial coefficients per lane, `[row][lane]` (series mode; empty otherwise).
     series: Vec<[f32; LANES]>,
+    /// `kᵢ` in f32 (the fade distances are computed in f32 lanes).
+    wavenumber_f32: [f32; LANES],
     /// Real waves in this tier.
     count: u32,
+    /// `Σ Aᵢ` of the f32 amplitudes the kernel uses (m).
     amplitude_sum: f64,
+    /// `Σ Aᵢkᵢ/√(1 − Qᵢ²)`: the tier's 3-D Lipschitz constant (cones).
+    spread: f64,
     /// Bound of the evaluation error of the tier's sum (m).
     error: f64,
 }
@@ -121,11 +127,13 @@ impl TracedTrochoids {
                 slope_factor: [0.0; LANES],
                 curvature_factor: [0.0; LANES],
                 slope_error_factor: [0.0; LANES],
-                slope_covariance: [[0.0; 3]; LANES],
+                slope_covariance: [[0.0; LANES]; 3],
                 mode: ProfileMode::for_steepness(0.0),
                 series: Vec::new(),
+                wavenumber_f32: [0.0; LANES],
                 count: chunk.len() as u32,
                 amplitude_sum: 0.0,
+                spread: 0.0,
                 error: 0.0,
             };
             let mut q_max = 0.0f64;
@@ -143,13 +151,19 @@ impl TracedTrochoids {
                 t.curvature_factor[l] = a / ((1.0 - q) * (1.0 - q));
                 t.slope_error_factor[l] = a * PROFILE_ERROR * (1.0 + 1.0 / ((1.0 - q) * (1.0 - q)));
                 let mss = w.mean_square_slope();
-                t.slope_covariance[l] = [mss * d.x * d.x, mss * d.x * d.y, mss * d.y * d.y];
-                t.amplitude_sum += a;
+                t.slope_covariance[0][l] = mss * d.x * d.x;
+                t.slope_covariance[1][l] = mss * d.x * d.y;
+                t.slope_covariance[2][l] = mss * d.y * d.y;
+                t.wavenumber_f32[l] = w.wavenumber() as f32;
                 // f32 amplitude rounding (6×10⁻⁸ relative) and the 8-lane f32 sum are inside the
                 // factor 2 of PROFILE_ERROR's margin; the bound adds them explicitly anyway.
                 t.error += a * PROFILE_ERROR * (1.0 + 1.0 / (1.0 - q * q).sqrt()) + a * 1e-6;
                 q_max = q_max.max(q);
                 lane_of_wave[i] = (tiers.len(), l);
+            }
+            for l in 0..LANES {
+                t.amplitude_sum += f64::from(t.amplitude[l]);
+                t.spread += t.slope_factor[l] * t.wavenumber[l];
             }
             t.mode = ProfileMode::for_steepness(q_max);
             let m = usize::from(t.mode.harmonics);
@@ -261,9 +275,16 @@ impl TracedTrochoids {
         footprint_angle: f64,
         t: f64,
     ) -> (DVec2, DVec3) {
-        let inv_dy2 = 1.0 / (direction.y * direction.y).max(1e-300);
+        // Fade weights by halves of 4 f64 lanes: wᵢ = smoothstep(1, 1.5, Tᵢ/t) with
+        // Tᵢ/t = (2π/(α t))/√(kᵢ² + σᵢ²/d_y²) (`footprint_weight`, `component_fade_distance`);
+        // padding lanes (k = 0) get Tᵢ = ∞, w = 1 and no covariance.
+        let fading = footprint_angle > 0.0 && t > 0.0;
+        let inv_dy2 = f64x4::splat(1.0 / (direction.y * direction.y).max(1e-300));
+        let reach = f64x4::splat(if fading { TAU / (footprint_angle * t) } else { 0.0 });
+        let (dx, dz) = (f64x4::splat(direction.x), f64x4::splat(direction.z));
+        let (one, zero) = (f64x4::splat(1.0), f64x4::splat(0.0));
         let (mut gx, mut gz) = (0.0, 0.0);
-        let mut lost = [0.0f64; 3];
+        let mut lost = [f64x4::splat(0.0); 3];
         for tier in &self.tiers {
             let mut s = [0.0; LANES];
             let (mut weight, mut kx, mut kz) = ([1.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
@@ -271,16 +292,22 @@ impl TracedTrochoids {
                 s[l] = tier.kx[l] * x + tier.kz[l] * z + tier.offset[l];
                 kx[l] = tier.kx[l] as f32;
                 kz[l] = tier.kz[l] as f32;
-                if footprint_angle > 0.0 && l < tier.count as usize {
-                    let sigma = tier.kx[l] * direction.x + tier.kz[l] * direction.z;
-                    let k2 = tier.wavenumber[l] * tier.wavenumber[l] + sigma * sigma * inv_dy2;
-                    let w = footprint_weight(TAU / (footprint_angle * k2.sqrt()), t);
-                    weight[l] = w as f32;
-                    if w < 1.0 {
-                        let c = &tier.slope_covariance[l];
-                        for (o, v) in lost.iter_mut().zip(c) {
-                            *o += (1.0 - w) * v;
-                        }
+            }
+            if fading {
+                for half in 0..2 {
+                    let lanes = half * 4..half * 4 + 4;
+                    let v = |a: &[f64; LANES]| f64x4::new(a[lanes.clone()].try_into().expect("4 lanes"));
+                    let (tkx, tkz, k) = (v(&tier.kx), v(&tier.kz), v(&tier.wavenumber));
+                    let sigma = tkx * dx + tkz * dz;
+                    let ratio = reach / (k * k + sigma * sigma * inv_dy2).sqrt();
+                    let u = ((ratio - one) * f64x4::splat(2.0)).max(zero).min(one);
+                    let w = u * u * (f64x4::splat(3.0) - f64x4::splat(2.0) * u);
+                    let gone = one - w;
+                    for (o, c) in lost.iter_mut().zip(&tier.slope_covariance) {
+                        *o += gone * v(c);
+                    }
+                    for (dst, wl) in weight[lanes].iter_mut().zip(w.to_array()) {
+                        *dst = wl as f32;
                     }
                 }
             }
@@ -289,6 +316,7 @@ impl TracedTrochoids {
             gx += f64::from((dh * f32x8::new(kx)).reduce_add());
             gz += f64::from((dh * f32x8::new(kz)).reduce_add());
         }
+        let lost = lost.map(|v| v.reduce_add());
         (DVec2::new(gx, gz), DVec3::from_array(lost))
     }
 
@@ -347,6 +375,8 @@ struct RayState {
     s0: Vec<[f64; LANES]>,
     /// Phase rate along the ray `σ = k·d̂_xz` (rad m⁻¹), per lane.
     sigma: Vec<[f64; LANES]>,
+    /// `Aᵢ σᵢ` in f32 times the lane's mask (m rad m⁻¹): the factor of the sampled derivative.
+    amp_sigma: Vec<[f32; LANES]>,
     /// Fade distance per lane (m; `+∞` without fading).
     fade: Vec<[f32; LANES]>,
     /// 1 for a lane in use, 0 for a lane held at its minimum (cone mode).
@@ -388,46 +418,107 @@ impl<'a> SeaTiers<'a> {
         state.mask.resize(n, [1.0; LANES]);
         state.lane_bounds.resize(n, [(0.0, 0.0); LANES]);
         state.tier.resize(n, TierOnRay::default());
+        state.amp_sigma.resize(n, [0.0; LANES]);
+        let slope_error = if cone == 0.0 {
+            Self::fill_ray(sea, state, o, d, footprint_angle)
+        } else {
+            Self::fill_cone(sea, state, o, d, t_exit, footprint_angle, cone)
+        };
+        Self { sea, state, origin: o, direction: d, t_exit, slope_error }
+    }
+
+    /// The per-lane and per-group quantities of one ray (origin `o`, unit direction `d`), faded
+    /// for a pixel of `footprint_angle` rad (0: no fading); returns the bound of the derivative
+    /// error. Lanes in f64 for the phases and bounds, in f32 for the fade distances (stored in
+    /// f32 and used as such by both the bounds and the samples).
+    fn fill_ray(sea: &TracedTrochoids, state: &mut RayState, o: DVec3, d: DVec3, footprint_angle: f64) -> f64 {
+        let fading = footprint_angle > 0.0;
+        // Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²)): the footprint stretched by 1/|d_y| along the view.
+        let reach = f32x8::splat(if fading { (TAU / footprint_angle) as f32 } else { 0.0 });
+        let inv_dy2 = f32x8::splat(((1.0 / (d.y * d.y).max(1e-300)) as f32).min(f32::MAX));
         let mut slope_error = 0.0;
-        let inv_dy2 = 1.0 / (d.y * d.y).max(1e-300);
+        for (j, t) in sea.tiers.iter().enumerate() {
+            let (s0, sigma, lanes) = (&mut state.s0[j], &mut state.sigma[j], &mut state.lane_bounds[j]);
+            let mut info = TierOnRay {
+                fade_min: f64::INFINITY,
+                fade_max: f64::INFINITY,
+                amplitude: t.amplitude_sum,
+                spread: t.spread,
+                ..TierOnRay::default()
+            };
+            let mut sigma32 = [0.0f32; LANES];
+            for l in 0..LANES {
+                s0[l] = t.kx[l] * o.x + t.kz[l] * o.z + t.offset[l];
+                let sg = t.kx[l] * d.x + t.kz[l] * d.z;
+                sigma[l] = sg;
+                sigma32[l] = sg as f32;
+                lanes[l] = (t.slope_factor[l] * sg.abs(), t.curvature_factor[l] * sg * sg);
+                info.lipschitz += lanes[l].0;
+                info.curvature += lanes[l].1;
+                info.slope_error += t.slope_error_factor[l] * sg.abs();
+            }
+            state.amp_sigma[j] = (f32x8::new(t.amplitude) * f32x8::new(sigma32)).to_array();
+            state.mask[j] = [1.0; LANES];
+            if fading {
+                let k = f32x8::new(t.wavenumber_f32);
+                let sg = f32x8::new(sigma32);
+                let mut fade = (reach / (k * k + sg * sg * inv_dy2).sqrt()).to_array();
+                let real = t.count as usize;
+                // Padding lanes (A = 0) count as faded out, so that no weight is NaN.
+                fade[real..].fill(0.0);
+                let (lo, hi) = fade[..real].iter().fold((f32::INFINITY, 0.0f32), |(lo, hi), &f| (lo.min(f), hi.max(f)));
+                (info.fade_min, info.fade_max) = (f64::from(lo), f64::from(hi));
+                if info.fade_max == 0.0 {
+                    info.fade_max = f64::INFINITY; // an empty tier never fades
+                }
+                state.fade[j] = fade;
+            } else {
+                state.fade[j] = [f32::INFINITY; LANES];
+            }
+            slope_error += info.slope_error;
+            state.tier[j] = info;
+        }
+        slope_error
+    }
+
+    /// [`Self::fill_ray`] for every ray within `cone` rad of the ray: waves that would fade for
+    /// some ray of the cone before `t_exit` are held at `−A` (mask 0), the others are used whole.
+    fn fill_cone(
+        sea: &TracedTrochoids,
+        state: &mut RayState,
+        o: DVec3,
+        d: DVec3,
+        t_exit: f64,
+        footprint_angle: f64,
+        cone: f64,
+    ) -> f64 {
         // In a cone, |σ/d_y| ≤ (|σ_axis| + kθ)/(|d_y| − θ).
         let dy_cone = (d.y.abs() - cone).max(1e-12);
+        let mut slope_error = 0.0;
         for (j, t) in sea.tiers.iter().enumerate() {
             let mut info = TierOnRay { fade_min: f64::INFINITY, fade_max: f64::INFINITY, ..TierOnRay::default() };
             let (s0, sigma, lanes) = (&mut state.s0[j], &mut state.sigma[j], &mut state.lane_bounds[j]);
-            let (fade, mask) = (&mut state.fade[j], &mut state.mask[j]);
-            if footprint_angle > 0.0 && cone == 0.0 {
-                info.fade_min = f64::INFINITY;
-                info.fade_max = 0.0;
-            }
+            let (fade, mask, amp_sigma) = (&mut state.fade[j], &mut state.mask[j], &mut state.amp_sigma[j]);
             for l in 0..LANES {
                 s0[l] = t.kx[l] * o.x + t.kz[l] * o.z + t.offset[l];
                 let sg = t.kx[l] * d.x + t.kz[l] * d.z;
                 sigma[l] = sg;
                 lanes[l] = (t.slope_factor[l] * sg.abs(), t.curvature_factor[l] * sg * sg);
-                let real = l < t.count as usize;
-                // Padding lanes (A = 0) count as faded out when fading, so that no weight is NaN.
-                fade[l] = if footprint_angle > 0.0 && cone == 0.0 && !real { 0.0 } else { f32::INFINITY };
+                fade[l] = f32::INFINITY;
                 mask[l] = 1.0;
+                amp_sigma[l] = t.amplitude[l] * sg as f32;
                 let a = f64::from(t.amplitude[l]);
-                if footprint_angle > 0.0 && real {
+                if footprint_angle > 0.0 && l < t.count as usize {
+                    // Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²)) at its smallest over the cone.
                     let k = t.wavenumber[l];
-                    if cone > 0.0 {
-                        // Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²)) at its smallest over the cone.
-                        let ratio = (sg.abs() + k * cone) / dy_cone;
-                        let big_t = TAU / (footprint_angle * (k * k + ratio * ratio).sqrt());
-                        if big_t < 1.5 * t_exit {
-                            mask[l] = 0.0;
-                            info.held += a;
-                            info.masked = true;
-                            continue;
-                        }
-                    } else {
-                        // Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²)): the footprint stretched by 1/|d_y|.
-                        let big_t = TAU / (footprint_angle * (k * k + sg * sg * inv_dy2).sqrt());
-                        fade[l] = big_t as f32;
-                        info.fade_min = info.fade_min.min(big_t);
-                        info.fade_max = info.fade_max.max(big_t);
+                    let ratio = (sg.abs() + k * cone) / dy_cone;
+                    let big_t = TAU / (footprint_angle * (k * k + ratio * ratio).sqrt());
+                    if big_t < 1.5 * t_exit {
+                        mask[l] = 0.0;
+                        amp_sigma[l] = 0.0;
+                        info.held += a;
+                        info.masked = true;
+                        continue;
                     }
                 }
                 info.lipschitz += lanes[l].0;
@@ -436,13 +527,10 @@ impl<'a> SeaTiers<'a> {
                 info.amplitude += a;
                 info.spread += t.slope_factor[l] * t.wavenumber[l];
             }
-            if info.fade_max == 0.0 {
-                info.fade_max = f64::INFINITY; // an empty tier never fades
-            }
             slope_error += info.slope_error;
             state.tier[j] = info;
         }
-        Self { sea, state, origin: o, direction: d, t_exit, slope_error }
+        slope_error
     }
 }
 
@@ -502,10 +590,8 @@ impl SeaTiers<'_> {
         let w = &self.sea.tiers[j];
         let (s0, sigma) = (&self.state.s0[j], &self.state.sigma[j]);
         let mut s = [0.0; LANES];
-        let mut sg = [0.0f32; LANES];
         for l in 0..LANES {
             s[l] = s0[l] + sigma[l] * t;
-            sg[l] = sigma[l] as f32;
         }
         let (c, g) = profile8(reduce_phases(&s), f32x8::new(w.steepness), &w.series, w.mode);
         let mut amp = f32x8::new(w.amplitude);
@@ -514,7 +600,7 @@ impl SeaTiers<'_> {
         }
         // n = −w·A cos θ;  dn/dt = −w'·A cos θ + w·A sin θ σ/(1 − Q cos θ).
         let h = amp * c;
-        let dh = amp * g * f32x8::new(sg);
+        let dh = g * f32x8::new(self.state.amp_sigma[j]);
         let (value, slope, terms) = if t * 1.5 <= info.fade_min {
             (-h.reduce_add(), dh.reduce_add(), w.count)
         } else {
