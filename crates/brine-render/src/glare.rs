@@ -167,34 +167,39 @@ impl Glare {
     /// is real), so three channels cost two.
     pub fn apply(&self, pixels: &mut [DVec3], clip: f64) {
         assert_eq!(pixels.len(), self.width * self.height, "glare: image size mismatch");
-        let excess: Vec<DVec3> = pixels.iter().map(|p| (*p - DVec3::splat(clip)).max(DVec3::ZERO)).collect();
-        for (p, e) in pixels.iter_mut().zip(&excess) {
-            *p -= *e;
-        }
         let (w, pw) = (self.width, self.pw);
-        // Only the image's rows are stored; the padding rows of the transform are zeros.
-        let mut rg = vec![C32::new(0.0, 0.0); pw * self.height];
-        let mut b = vec![C32::new(0.0, 0.0); pw * self.height];
-        rg.par_chunks_mut(pw).zip(b.par_chunks_mut(pw)).zip(pixels.par_chunks(w)).for_each(|((rg, b), row)| {
-            for (x, p) in row.iter().enumerate() {
-                rg[x] = C32::new(p.x as f32, p.y as f32);
-                b[x] = C32::new(p.z as f32, 0.0);
-            }
-        });
-        let mut spectrum = vec![C32::new(0.0, 0.0); pw * self.ph];
-        for buf in [&mut rg, &mut b] {
-            self.forward(buf, self.height, &mut spectrum);
-            spectrum.par_iter_mut().zip(self.kernel_hat.par_iter()).for_each(|(v, k)| *v *= *k);
-            self.inverse(&mut spectrum, buf, self.height);
-        }
+        let clip = DVec3::splat(clip);
         let n = 1.0 / (self.pw * self.ph) as f64;
-        pixels.par_chunks_mut(w).zip(excess.par_chunks(w)).enumerate().for_each(|(y, (row, excess))| {
-            for (x, (p, e)) in row.iter_mut().zip(excess).enumerate() {
-                let (c, d) = (rg[y * pw + x], b[y * pw + x]);
-                let v = DVec3::new(f64::from(c.re), f64::from(c.im), f64::from(d.re)) * n;
-                *p = v.max(DVec3::ZERO) + *e;
-            }
-        });
+        // Only the image's rows are stored; the padding rows of the transform are zeros. One
+        // buffer serves both transforms: red and green (real and imaginary parts) first, blue
+        // after; each result goes back into `pixels` before the next transform.
+        let mut buf = vec![C32::new(0.0, 0.0); pw * self.height];
+        let mut spectrum = vec![C32::new(0.0, 0.0); pw * self.ph];
+        for pass in 0..2 {
+            buf.par_chunks_mut(pw).zip(pixels.par_chunks(w)).for_each(|(b, row)| {
+                for (x, p) in row.iter().enumerate() {
+                    let p = p.min(clip);
+                    b[x] = if pass == 0 { C32::new(p.x as f32, p.y as f32) } else { C32::new(p.z as f32, 0.0) };
+                }
+                b[row.len()..].fill(C32::new(0.0, 0.0)); // the padding columns (the last pass's output)
+            });
+            self.forward(&mut buf, self.height, &mut spectrum);
+            spectrum.par_iter_mut().zip(self.kernel_hat.par_iter()).for_each(|(v, k)| *v *= *k);
+            self.inverse(&mut spectrum, &mut buf, self.height);
+            // The part of each channel above `clip` stays in its pixel: `max(L − clip, 0)`.
+            pixels.par_chunks_mut(w).zip(buf.par_chunks(pw)).for_each(|(row, b)| {
+                for (p, c) in row.iter_mut().zip(b) {
+                    let excess = (*p - clip).max(DVec3::ZERO);
+                    let (re, im) = (f64::from(c.re) * n, f64::from(c.im) * n);
+                    if pass == 0 {
+                        p.x = re.max(0.0) + excess.x;
+                        p.y = im.max(0.0) + excess.y;
+                    } else {
+                        p.z = re.max(0.0) + excess.z;
+                    }
+                }
+            });
+        }
     }
 }
 

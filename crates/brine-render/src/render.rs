@@ -245,7 +245,7 @@ pub fn render_world(
     });
     if scene.phenomena.glare {
         let white = 1.0 / crate::tonemap::exposure_scale(exposure_ev);
-        crate::glare::Glare::new(w as usize, h as usize, world.camera.pixel_angle())
+        glare_filter(w as usize, h as usize, world.camera.pixel_angle())
             .apply(&mut pixels, crate::glare::GLARE_CLIP_WHITES * white);
     }
     let stages = counters.times.map(|mut t| {
@@ -262,6 +262,25 @@ pub fn render_world(
         stages,
         exposure_ev,
     })
+}
+
+/// The glare filter for `width × height` images of pixels `pixel_angle` rad wide: built once and
+/// kept for the following frames of that size and angle (an animation's), since the kernel's
+/// transform is a quarter of the filter's cost.
+fn glare_filter(width: usize, height: usize, pixel_angle: f64) -> std::sync::Arc<crate::glare::Glare> {
+    type Cached = Option<((usize, usize, u64), std::sync::Arc<crate::glare::Glare>)>;
+    static LAST: std::sync::Mutex<Cached> = std::sync::Mutex::new(None);
+    let key = (width, height, pixel_angle.to_bits());
+    // A poisoned lock only means another render panicked while holding it; the cache stays valid.
+    let mut last = LAST.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    match &*last {
+        Some((k, g)) if *k == key => g.clone(),
+        _ => {
+            let g = std::sync::Arc::new(crate::glare::Glare::new(width, height, pixel_angle));
+            *last = Some((key, g.clone()));
+            g
+        }
+    }
 }
 
 /// What one camera sample returns.
