@@ -446,17 +446,30 @@ impl<'a> SeaTiers<'a> {
                 spread: t.spread,
                 ..TierOnRay::default()
             };
+            // Two halves of 4 f64 lanes: phases at the origin, phase rates, and the per-lane
+            // derivative, curvature and derivative-error bounds with their sums.
             let mut sigma32 = [0.0f32; LANES];
-            for l in 0..LANES {
-                s0[l] = t.kx[l] * o.x + t.kz[l] * o.z + t.offset[l];
-                let sg = t.kx[l] * d.x + t.kz[l] * d.z;
-                sigma[l] = sg;
-                sigma32[l] = sg as f32;
-                lanes[l] = (t.slope_factor[l] * sg.abs(), t.curvature_factor[l] * sg * sg);
-                info.lipschitz += lanes[l].0;
-                info.curvature += lanes[l].1;
-                info.slope_error += t.slope_error_factor[l] * sg.abs();
+            let (mut lip, mut curv, mut err) = (f64x4::ZERO, f64x4::ZERO, f64x4::ZERO);
+            for half in 0..2 {
+                let at = half * 4..half * 4 + 4;
+                let v = |a: &[f64; LANES]| f64x4::new(a[at.clone()].try_into().expect("4 lanes"));
+                let (kx, kz) = (v(&t.kx), v(&t.kz));
+                let phase = kx * f64x4::splat(o.x) + kz * f64x4::splat(o.z) + v(&t.offset);
+                let sg = kx * f64x4::splat(d.x) + kz * f64x4::splat(d.z);
+                let (l1, k1) = (v(&t.slope_factor) * sg.abs(), v(&t.curvature_factor) * sg * sg);
+                lip += l1;
+                curv += k1;
+                err += v(&t.slope_error_factor) * sg.abs();
+                let (l1, k1, sg) = (l1.to_array(), k1.to_array(), sg.to_array());
+                s0[at.clone()].copy_from_slice(&phase.to_array());
+                sigma[at.clone()].copy_from_slice(&sg);
+                for (i, l) in at.enumerate() {
+                    sigma32[l] = sg[i] as f32;
+                    lanes[l] = (l1[i], k1[i]);
+                }
             }
+            (info.lipschitz, info.curvature, info.slope_error) =
+                (lip.reduce_add(), curv.reduce_add(), err.reduce_add());
             state.amp_sigma[j] = (f32x8::new(t.amplitude) * f32x8::new(sigma32)).to_array();
             state.mask[j] = [1.0; LANES];
             if fading {
