@@ -63,6 +63,12 @@ fn psf_energy(theta_max_deg: f64) -> f64 {
 /// far below any output format's step), at half the memory traffic of `f64`.
 type C32 = Complex<f32>;
 
+/// `n` zeros, written in parallel (`vec!` writes a non-primitive element one by one, on one
+/// thread).
+fn zeros(n: usize) -> Vec<C32> {
+    (0..n).into_par_iter().map(|_| C32::new(0.0, 0.0)).collect()
+}
+
 /// An energy-preserving glare filter for images of one size and pixel angle; reusable across
 /// frames (the kernel's transform is computed once).
 pub struct Glare {
@@ -77,6 +83,9 @@ pub struct Glare {
     row_inv: Arc<dyn Fft<f32>>,
     col_fwd: Arc<dyn Fft<f32>>,
     col_inv: Arc<dyn Fft<f32>>,
+    /// The image-sized and the transform-sized buffers of [`Self::apply`], kept for the next call
+    /// (allocating and zeroing ~15 MB per frame cost more than the transforms).
+    scratch: std::sync::Mutex<(Vec<C32>, Vec<C32>)>,
 }
 
 impl Glare {
@@ -97,7 +106,7 @@ impl Glare {
         };
         let quadrant: Vec<Vec<f64>> =
             (0..height).into_par_iter().map(|dy| (0..width).map(|dx| weight(dx, dy)).collect()).collect();
-        let mut kernel = vec![C32::new(0.0, 0.0); pw * ph];
+        let mut kernel = zeros(pw * ph);
         let mut spread = 0.0;
         for (dy, row) in quadrant.iter().enumerate() {
             for (dx, &w) in row.iter().enumerate() {
@@ -127,8 +136,9 @@ impl Glare {
             row_inv: planner.plan_fft_inverse(pw),
             col_fwd: planner.plan_fft_forward(ph),
             col_inv: planner.plan_fft_inverse(ph),
+            scratch: std::sync::Mutex::new((Vec::new(), Vec::new())),
         };
-        let mut cols = vec![C32::new(0.0, 0.0); pw * ph];
+        let mut cols = zeros(pw * ph);
         g.forward(&mut kernel, ph, &mut cols);
         g.kernel_hat = cols.iter().map(|c| c.re).collect();
         g
@@ -173,8 +183,14 @@ impl Glare {
         // Only the image's rows are stored; the padding rows of the transform are zeros. One
         // buffer serves both transforms: red and green (real and imaginary parts) first, blue
         // after; each result goes back into `pixels` before the next transform.
-        let mut buf = vec![C32::new(0.0, 0.0); pw * self.height];
-        let mut spectrum = vec![C32::new(0.0, 0.0); pw * self.ph];
+        // A poisoned lock only means a panic elsewhere while applying: every element read here
+        // is written first (the padding columns and rows included), so the buffers stay usable.
+        let mut scratch = self.scratch.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        let (buf, spectrum) = &mut *scratch;
+        if buf.len() != pw * self.height {
+            *buf = zeros(pw * self.height);
+            *spectrum = zeros(pw * self.ph);
+        }
         for pass in 0..2 {
             buf.par_chunks_mut(pw).zip(pixels.par_chunks(w)).for_each(|(b, row)| {
                 for (x, p) in row.iter().enumerate() {
@@ -183,9 +199,9 @@ impl Glare {
                 }
                 b[row.len()..].fill(C32::new(0.0, 0.0)); // the padding columns (the last pass's output)
             });
-            self.forward(&mut buf, self.height, &mut spectrum);
+            self.forward(buf, self.height, spectrum);
             spectrum.par_iter_mut().zip(self.kernel_hat.par_iter()).for_each(|(v, k)| *v *= *k);
-            self.inverse(&mut spectrum, &mut buf, self.height);
+            self.inverse(spectrum, buf, self.height);
             // The part of each channel above `clip` stays in its pixel: `max(L − clip, 0)`.
             pixels.par_chunks_mut(w).zip(buf.par_chunks(pw)).for_each(|(row, b)| {
                 for (p, c) in row.iter_mut().zip(b) {

@@ -188,8 +188,10 @@ pub fn render_world(
     let spp = scene.camera.spp;
     let seed = scene.sea.seed;
     let field = SeaField::new(world);
-    let mut pixels = vec![DVec3::ZERO; w as usize * h as usize];
-    let mut aovs = vec![Aov::default(); w as usize * h as usize];
+    // The frame buffers (16 MB at 640×480) are first written by the workers, not by one thread.
+    let n = w as usize * h as usize;
+    let mut pixels: Vec<DVec3> = (0..n).into_par_iter().map(|_| DVec3::ZERO).collect();
+    let mut aovs: Vec<Aov> = (0..n).into_par_iter().map(|_| Aov::default()).collect();
     let work = |pixels: &mut [DVec3], aovs: &mut [Aov]| -> Counters {
         pixels
             .par_chunks_mut(w as usize)

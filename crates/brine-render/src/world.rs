@@ -122,20 +122,26 @@ pub fn auto_exposure_ev(log_average_luminance_cd_m2: f64, illuminance_lx: f64) -
 }
 
 /// Log-average luminance `exp(mean ln(Y + 10⁻⁶))` of linear sRGB pixels in kcd m⁻², returned in
-/// cd m⁻²; summed in pixel order (deterministic).
+/// cd m⁻²; summed in runs of 4096 pixels in parallel, then over the runs in pixel order (the same
+/// bits at any thread count).
 pub fn log_average_luminance_cd_m2(pixels: &[DVec3]) -> f64 {
+    use rayon::prelude::*;
     if pixels.is_empty() {
         return 0.0;
     }
-    let sum: f64 = pixels
-        .iter()
-        .map(|p| {
-            // Rec. 709 luminance of linear sRGB.
-            let y = 0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z;
-            (y.max(0.0) * 1000.0 + 1e-6).ln()
+    let runs: Vec<f64> = pixels
+        .par_chunks(4096)
+        .map(|run| {
+            run.iter()
+                .map(|p| {
+                    // Rec. 709 luminance of linear sRGB.
+                    let y = 0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z;
+                    (y.max(0.0) * 1000.0 + 1e-6).ln()
+                })
+                .sum::<f64>()
         })
-        .sum();
-    (sum / pixels.len() as f64).exp()
+        .collect();
+    (runs.iter().sum::<f64>() / pixels.len() as f64).exp()
 }
 
 /// Waves shorter than this are not drawn as geometry by the sine surface of Chen et al.: they only
