@@ -4,6 +4,7 @@ use std::f64::consts::TAU;
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use rayon::prelude::*;
 
 use crate::error::{WaveError, check};
 use crate::integrate::simpson_log;
@@ -411,17 +412,20 @@ fn fit_component(c: &SeaComponent<'_>, rng: &mut ChaCha8Rng) -> Result<Vec<RawWa
     }
     let dispersion = c.spectrum.dispersion();
     let amplified_from = o.high_frequency_start_factor * omega_p;
+    // The variates in the generator's order; then each wave's direction (an inverse transform
+    // of its own, 2048 density evaluations) in parallel: the same numbers at any thread count.
+    let variates: Vec<(f64, f64)> = bins.iter().map(|_| (rng.random(), rng.random())).collect();
+    let directions: Vec<f64> =
+        bins.par_iter().zip(&variates).map(|(bin, &(u_dir, _))| c.spreading.sample(bin.omega, u_dir)).collect();
     let mut raw = Vec::with_capacity(bins.len());
-    for bin in &bins {
-        let u_dir: f64 = rng.random();
-        let u_phase: f64 = rng.random();
+    for ((bin, &(_, u_phase)), theta) in bins.iter().zip(&variates).zip(directions) {
         let gain = if bin.omega >= amplified_from { o.high_frequency_gain } else { 1.0 };
         let amplitude = gain * bin.amplitude(c.spectrum, o.amplitude_rule);
         let k = dispersion.wavenumber(bin.omega);
         raw.push(RawWave {
             amplitude,
             wavenumber: k,
-            direction: o.wind_direction + c.spreading.sample(bin.omega, u_dir),
+            direction: o.wind_direction + theta,
             omega: bin.omega,
             phase: TAU * u_phase,
             steepness: o.choppiness * k * amplitude,
