@@ -284,6 +284,29 @@ mod tests {
         }
     }
 
+    /// A filter reused for a second image (its buffers hold the first one's transforms) gives
+    /// the same bits as a fresh filter.
+    #[test]
+    fn a_reused_filter_gives_the_fresh_filters_result() {
+        let (w, h) = (20usize, 14usize);
+        let image = |k: u64| -> Vec<DVec3> {
+            (0..w * h)
+                .map(|i| {
+                    let f = |c: u64| ((i as u64 * 2654435761 + c * 40503 + k * 977) % 1000) as f64 / 100.0;
+                    DVec3::new(f(1), f(2), f(3))
+                })
+                .collect()
+        };
+        let reused = Glare::new(w, h, 0.2f64.to_radians());
+        let (mut first, mut second) = (image(1), image(2));
+        reused.apply(&mut first, 5.0);
+        reused.apply(&mut second, 5.0);
+        let mut fresh = image(2);
+        Glare::new(w, h, 0.2f64.to_radians()).apply(&mut fresh, 5.0);
+        assert_eq!(second, fresh);
+        assert_ne!(first, second);
+    }
+
     #[test]
     fn glare_preserves_energy_inside_a_large_margin_and_spreads_a_point() {
         // f32 transforms: ~10 stages of ε₃₂ = 6×10⁻⁸ relative rounding of each output.
