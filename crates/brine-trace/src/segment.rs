@@ -194,7 +194,7 @@ mod tests {
 
     #[test]
     fn local_bound_is_the_slope_on_a_point_and_the_lipschitz_constant_far_away() {
-        let b = TierBounds { min: -1.0, max: 1.0, lipschitz: 2.0, curvature: 4.0 };
+        let b = TierBounds::symmetric(-1.0, 1.0, 2.0, 4.0);
         // s = 0: |d|; s = 0.25: |−0.5| + 4·0.25 = 1.5; s = 1: min(2, 4.5) = 2.
         assert!((local_lipschitz(&b, -0.5, 0.0) - 0.5).abs() < EXACT);
         assert!((local_lipschitz(&b, -0.5, 0.25) - 1.5).abs() < EXACT);
@@ -202,7 +202,7 @@ mod tests {
         assert!((local_lipschitz(&b, -0.5, f64::INFINITY) - 2.0).abs() < EXACT);
         // Unknown derivative or curvature: the global constant.
         assert!((local_lipschitz(&b, f64::NAN, 0.0) - 2.0).abs() < EXACT);
-        let unknown = TierBounds { curvature: f64::INFINITY, ..b };
+        let unknown = TierBounds::symmetric(-1.0, 1.0, 2.0, f64::INFINITY);
         assert!((local_lipschitz(&unknown, 0.1, 0.0) - 2.0).abs() < EXACT);
     }
 }

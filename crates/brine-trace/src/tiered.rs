@@ -25,7 +25,8 @@ pub struct TierScratch {
     value: Vec<f64>,
     /// Oriented derivative (a lower bound of it) of each sampled tier.
     slope: Vec<f64>,
-    /// Curvature bound used with `slope` (0 when the slope is the Lipschitz lower bound).
+    /// Bound of how concave the oriented tier can be, used with `slope` (0 when the slope is the
+    /// Lipschitz lower bound).
     curvature: Vec<f64>,
     /// 3D Lipschitz constant of each tier (cone mode).
     spread: Vec<f64>,
@@ -90,9 +91,12 @@ impl TierScratch {
     fn store(&mut self, j: usize, value: f64, slope: f64, sign: f64) {
         self.value[j] = sign * value;
         let b = self.bounds[j];
-        if slope.is_finite() && b.curvature.is_finite() {
+        // The oriented tier `sign·T` has `(sign·T)'' ≥ −concavity` on the positive side and
+        // `≥ −curvature` on the negative side (the one-sided bound of `T'' ≤ curvature`).
+        let curvature = if sign > 0.0 { b.concavity.min(b.curvature) } else { b.curvature };
+        if slope.is_finite() && curvature.is_finite() {
             self.slope[j] = (sign * slope).max(-b.lipschitz);
-            self.curvature[j] = b.curvature;
+            self.curvature[j] = curvature;
             self.exact[j] = true;
         } else {
             self.exact[j] = false;
@@ -686,7 +690,7 @@ fn run<R: RayTiers + ?Sized>(
                     log_step(&mut log, t, relaxed, StepKind::Certified);
                     t = relaxed;
                     guess = RELAXATION * s;
-                    k = scratch.next_depth(s);
+                    k = n;
                     sampled = n;
                     if options.footprint_angle > 0.0 && t >= REFRESH_GROWTH * t_refresh {
                         scratch.refresh(tiers, t, sign, false);

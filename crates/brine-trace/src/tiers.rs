@@ -17,11 +17,23 @@ pub struct TierBounds {
     pub lipschitz: f64,
     /// Bound of its second derivative along the ray, `|d²/dt²|` (per metre²), `+∞` if unknown.
     pub curvature: f64,
+    /// One-sided bound `d²/dt² ≥ −concavity` (per metre², `0 ≤ concavity ≤ curvature`): how
+    /// concave the tier can be. It alone limits a certified step toward a crossing from the
+    /// positive side (a lower bound of the sum needs only the lower bound of its second
+    /// derivative); a trochoid's sharp crest is convex in `F = y − h`, so there it is much smaller
+    /// than `curvature` (brine-waves `TracedTrochoids`). Set it to `curvature` when no better
+    /// one-sided bound is known.
+    pub concavity: f64,
 }
 
 impl TierBounds {
     /// A tier that is identically zero (e.g. faded out).
-    pub const ZERO: Self = Self { min: 0.0, max: 0.0, lipschitz: 0.0, curvature: 0.0 };
+    pub const ZERO: Self = Self { min: 0.0, max: 0.0, lipschitz: 0.0, curvature: 0.0, concavity: 0.0 };
+
+    /// Bounds with the same second-derivative bound on both sides (`concavity = curvature`).
+    pub const fn symmetric(min: f64, max: f64, lipschitz: f64, curvature: f64) -> Self {
+        Self { min, max, lipschitz, curvature, concavity: curvature }
+    }
 }
 
 /// A tier evaluated at one point of the ray.
@@ -145,6 +157,7 @@ impl<S: LipschitzSum + ?Sized> RayTiers for ComponentTiers<'_, S> {
                 b.max += c.max;
                 b.lipschitz += c.lipschitz;
                 b.curvature += c.curvature;
+                b.concavity += c.curvature;
             } else {
                 // w·n with w ∈ [0, 1] falling: bounds of the product (footprint.rs constants).
                 let size = c.min.abs().max(c.max.abs());
@@ -152,7 +165,9 @@ impl<S: LipschitzSum + ?Sized> RayTiers for ComponentTiers<'_, S> {
                 b.min += c.min.min(0.0);
                 b.max += c.max.max(0.0);
                 b.lipschitz += c.lipschitz + FADE_SLOPE * size / tt;
-                b.curvature += c.curvature + 2.0 * FADE_SLOPE * c.lipschitz / tt + FADE_CURVATURE * size / (tt * tt);
+                let k = c.curvature + 2.0 * FADE_SLOPE * c.lipschitz / tt + FADE_CURVATURE * size / (tt * tt);
+                b.curvature += k;
+                b.concavity += k;
             }
         }
         b

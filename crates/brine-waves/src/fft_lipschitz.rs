@@ -191,25 +191,25 @@ impl RayTiers for CascadeTiers<'_> {
     fn bounds(&mut self, tier: usize, t: f64) -> TierBounds {
         if tier == 0 {
             let (y0, y1) = (self.origin.y + self.direction.y * t, self.origin.y + self.direction.y * self.t_exit);
-            return TierBounds { min: y0.min(y1), max: y0.max(y1), lipschitz: self.direction.y.abs(), curvature: 0.0 };
+            return TierBounds::symmetric(y0.min(y1), y0.max(y1), self.direction.y.abs(), 0.0);
         }
         let c = self.cascades[tier - 1];
         if c.fade <= t {
             return TierBounds::ZERO; // faded out for good
         }
         if c.fade >= 1.5 * self.t_exit {
-            return TierBounds { min: c.min, max: c.max, lipschitz: c.lipschitz, curvature: c.curvature };
+            return TierBounds::symmetric(c.min, c.max, c.lipschitz, c.curvature);
         }
         // w·n with w ∈ [0, 1] non-increasing (brine-trace footprint.rs): |(wn)'| ≤ L + |w'| size,
         // |(wn)''| ≤ K + 2|w'| L + |w''| size, |w'| ≤ 4.5/t and |w''| ≤ 63/t² while fading.
         let size = c.min.abs().max(c.max.abs());
         let tt = t.max(c.fade / 1.5);
-        TierBounds {
-            min: c.min.min(0.0),
-            max: c.max.max(0.0),
-            lipschitz: c.lipschitz + FADE_SLOPE * size / tt,
-            curvature: c.curvature + 2.0 * FADE_SLOPE * c.lipschitz / tt + FADE_CURVATURE * size / (tt * tt),
-        }
+        TierBounds::symmetric(
+            c.min.min(0.0),
+            c.max.max(0.0),
+            c.lipschitz + FADE_SLOPE * size / tt,
+            c.curvature + 2.0 * FADE_SLOPE * c.lipschitz / tt + FADE_CURVATURE * size / (tt * tt),
+        )
     }
 
     fn sample(&mut self, tier: usize, t: f64) -> TierSample {

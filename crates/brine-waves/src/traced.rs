@@ -18,6 +18,7 @@ use wide::{f32x8, f64x4};
 use crate::fast_profile::{
     PROFILE_ERROR, ProfileMode, SERIES_ROWS, profile1, profile8, reduce_phases, series_polynomials,
 };
+use crate::trochoid::trough_curvature_factor;
 use crate::{Trochoid, TrochoidSet};
 
 /// Waves per lane group: one f32x8 vector.
@@ -50,8 +51,11 @@ struct Tier {
     steepness: [f32; LANES],
     /// `Aᵢ/√(1 − Qᵢ²)` (the max slope per unit wavenumber along `d̂`).
     slope_factor: [f64; LANES],
-    /// `Aᵢ/(1 − Qᵢ)²` (the curvature bound per unit wavenumber² along `d̂`).
+    /// `Aᵢ/(1 − Qᵢ)²` (the curvature bound per unit wavenumber² along `d̂`: the crest's).
     curvature_factor: [f64; LANES],
+    /// `Aᵢ c(Qᵢ)` (the trough's, [`Trochoid::max_trough_curvature`]): how concave `nᵢ = −hᵢ` can
+    /// be, per unit wavenumber² along `d̂`.
+    concavity_factor: [f64; LANES],
     /// `Aᵢ·PROFILE_ERROR/(1 − Qᵢ)²` (derivative error per unit `|σᵢ|`).
     slope_error_factor: [f64; LANES],
     /// Slope covariance `⟨sᵢ²⟩ (k̂x², k̂x k̂z, k̂z²)` per lane, one array per entry (0 for padding
@@ -126,6 +130,7 @@ impl TracedTrochoids {
                 steepness: [0.0; LANES],
                 slope_factor: [0.0; LANES],
                 curvature_factor: [0.0; LANES],
+                concavity_factor: [0.0; LANES],
                 slope_error_factor: [0.0; LANES],
                 slope_covariance: [[0.0; LANES]; 3],
                 mode: ProfileMode::for_steepness(0.0),
@@ -149,6 +154,7 @@ impl TracedTrochoids {
                 t.steepness[l] = q as f32;
                 t.slope_factor[l] = a / (1.0 - q * q).sqrt();
                 t.curvature_factor[l] = a / ((1.0 - q) * (1.0 - q));
+                t.concavity_factor[l] = a * trough_curvature_factor(q);
                 t.slope_error_factor[l] = a * PROFILE_ERROR * (1.0 + 1.0 / ((1.0 - q) * (1.0 - q)));
                 let mss = w.mean_square_slope();
                 t.slope_covariance[0][l] = mss * d.x * d.x;
@@ -354,6 +360,8 @@ struct TierOnRay {
     lipschitz: f64,
     /// `Σ Aᵢσᵢ²/(1 − Qᵢ)²` over the lanes in use.
     curvature: f64,
+    /// `Σ Aᵢσᵢ² c(Qᵢ)` over the lanes in use (`nᵢ'' ≥ −Aᵢσᵢ² c(Qᵢ)`).
+    concavity: f64,
     /// Bound of the derivative error.
     slope_error: f64,
     /// Smallest and largest fade distance of the tier's waves (m).
@@ -381,8 +389,9 @@ struct RayState {
     fade: Vec<[f32; LANES]>,
     /// 1 for a lane in use, 0 for a lane held at its minimum (cone mode).
     mask: Vec<[f32; LANES]>,
-    /// `Aᵢ |σᵢ|/√(1 − Qᵢ²)` and `Aᵢ σᵢ²/(1 − Qᵢ)²` per lane (derivative and curvature bounds).
-    lane_bounds: Vec<[(f64, f64); LANES]>,
+    /// `Aᵢ |σᵢ|/√(1 − Qᵢ²)`, `Aᵢ σᵢ²/(1 − Qᵢ)²` and `Aᵢ σᵢ² c(Qᵢ)` per lane (derivative,
+    /// curvature and concavity bounds).
+    lane_bounds: Vec<[(f64, f64, f64); LANES]>,
     tier: Vec<TierOnRay>,
 }
 
@@ -416,7 +425,7 @@ impl<'a> SeaTiers<'a> {
         state.sigma.resize(n, [0.0; LANES]);
         state.fade.resize(n, [f32::INFINITY; LANES]);
         state.mask.resize(n, [1.0; LANES]);
-        state.lane_bounds.resize(n, [(0.0, 0.0); LANES]);
+        state.lane_bounds.resize(n, [(0.0, 0.0, 0.0); LANES]);
         state.tier.resize(n, TierOnRay::default());
         state.amp_sigma.resize(n, [0.0; LANES]);
         let slope_error = if cone == 0.0 {
@@ -449,7 +458,7 @@ impl<'a> SeaTiers<'a> {
             // Two halves of 4 f64 lanes: phases at the origin, phase rates, and the per-lane
             // derivative, curvature and derivative-error bounds with their sums.
             let mut sigma32 = [0.0f32; LANES];
-            let (mut lip, mut curv, mut err) = (f64x4::ZERO, f64x4::ZERO, f64x4::ZERO);
+            let (mut lip, mut curv, mut conc, mut err) = (f64x4::ZERO, f64x4::ZERO, f64x4::ZERO, f64x4::ZERO);
             for half in 0..2 {
                 let at = half * 4..half * 4 + 4;
                 let v = |a: &[f64; LANES]| f64x4::new(a[at.clone()].try_into().expect("4 lanes"));
@@ -457,19 +466,21 @@ impl<'a> SeaTiers<'a> {
                 let phase = kx * f64x4::splat(o.x) + kz * f64x4::splat(o.z) + v(&t.offset);
                 let sg = kx * f64x4::splat(d.x) + kz * f64x4::splat(d.z);
                 let (l1, k1) = (v(&t.slope_factor) * sg.abs(), v(&t.curvature_factor) * sg * sg);
+                let c1 = v(&t.concavity_factor) * sg * sg;
                 lip += l1;
                 curv += k1;
+                conc += c1;
                 err += v(&t.slope_error_factor) * sg.abs();
-                let (l1, k1, sg) = (l1.to_array(), k1.to_array(), sg.to_array());
+                let (l1, k1, c1, sg) = (l1.to_array(), k1.to_array(), c1.to_array(), sg.to_array());
                 s0[at.clone()].copy_from_slice(&phase.to_array());
                 sigma[at.clone()].copy_from_slice(&sg);
                 for (i, l) in at.enumerate() {
                     sigma32[l] = sg[i] as f32;
-                    lanes[l] = (l1[i], k1[i]);
+                    lanes[l] = (l1[i], k1[i], c1[i]);
                 }
             }
-            (info.lipschitz, info.curvature, info.slope_error) =
-                (lip.reduce_add(), curv.reduce_add(), err.reduce_add());
+            (info.lipschitz, info.curvature, info.concavity, info.slope_error) =
+                (lip.reduce_add(), curv.reduce_add(), conc.reduce_add(), err.reduce_add());
             state.amp_sigma[j] = (f32x8::new(t.amplitude) * f32x8::new(sigma32)).to_array();
             state.mask[j] = [1.0; LANES];
             if fading {
@@ -516,7 +527,8 @@ impl<'a> SeaTiers<'a> {
                 s0[l] = t.kx[l] * o.x + t.kz[l] * o.z + t.offset[l];
                 let sg = t.kx[l] * d.x + t.kz[l] * d.z;
                 sigma[l] = sg;
-                lanes[l] = (t.slope_factor[l] * sg.abs(), t.curvature_factor[l] * sg * sg);
+                lanes[l] =
+                    (t.slope_factor[l] * sg.abs(), t.curvature_factor[l] * sg * sg, t.concavity_factor[l] * sg * sg);
                 fade[l] = f32::INFINITY;
                 mask[l] = 1.0;
                 amp_sigma[l] = t.amplitude[l] * sg as f32;
@@ -536,6 +548,7 @@ impl<'a> SeaTiers<'a> {
                 }
                 info.lipschitz += lanes[l].0;
                 info.curvature += lanes[l].1;
+                info.concavity += lanes[l].2;
                 info.slope_error += t.slope_error_factor[l] * sg.abs();
                 info.amplitude += a;
                 info.spread += t.slope_factor[l] * t.wavenumber[l];
@@ -568,30 +581,35 @@ impl SeaTiers<'_> {
                 max: info.amplitude - info.held,
                 lipschitz: info.lipschitz,
                 curvature: info.curvature,
+                concavity: info.concavity,
             };
         }
         // Faded products wᵢ·nᵢ with wᵢ non-increasing in t (footprint.rs): |wᵢnᵢ| ≤ wᵢ(t)Aᵢ,
         // |(wᵢnᵢ)'| ≤ wᵢ(t)Lᵢ + |wᵢ'|Aᵢ, |(wᵢnᵢ)''| ≤ wᵢ(t)Kᵢ + 2|wᵢ'|Lᵢ + |wᵢ''|Aᵢ, with
-        // |wᵢ'| ≤ 4.5/t and |wᵢ''| ≤ 63/t² while fading (t ∈ [Tᵢ/1.5, Tᵢ]), 0 after.
+        // |wᵢ'| ≤ 4.5/t and |wᵢ''| ≤ 63/t² while fading (t ∈ [Tᵢ/1.5, Tᵢ]), 0 after. One-sided:
+        // (wᵢnᵢ)'' ≥ −wᵢCᵢ − 2|wᵢ'|Lᵢ − |wᵢ''|Aᵢ with nᵢ'' ≥ −Cᵢ (wᵢ ≥ 0).
         let tier = &self.sea.tiers[j];
-        let (mut amp, mut lip, mut curv) = (0.0, 0.0, 0.0);
+        let (mut amp, mut lip, mut curv, mut conc) = (0.0, 0.0, 0.0, 0.0);
         for l in 0..tier.count as usize {
             let big_t = f64::from(self.state.fade[j][l]);
             if big_t <= t {
                 continue;
             }
-            let (a_i, (l_i, k_i)) = (f64::from(tier.amplitude[l]), self.state.lane_bounds[j][l]);
+            let (a_i, (l_i, k_i, c_i)) = (f64::from(tier.amplitude[l]), self.state.lane_bounds[j][l]);
             let w = footprint_weight(big_t, t);
             amp += w * a_i;
             lip += w * l_i;
             curv += w * k_i;
+            conc += w * c_i;
             if big_t < 1.5 * self.t_exit {
                 let tt = t.max(big_t / 1.5);
                 lip += FADE_SLOPE * a_i / tt;
-                curv += 2.0 * FADE_SLOPE * l_i / tt + FADE_CURVATURE * a_i / (tt * tt);
+                let fade = 2.0 * FADE_SLOPE * l_i / tt + FADE_CURVATURE * a_i / (tt * tt);
+                curv += fade;
+                conc += fade;
             }
         }
-        TierBounds { min: -amp, max: amp, lipschitz: lip, curvature: curv }
+        TierBounds { min: -amp, max: amp, lipschitz: lip, curvature: curv, concavity: conc }
     }
 
     /// The sea's lane group `j` (8 waves) at `t`.
@@ -637,7 +655,7 @@ impl RayTiers for SeaTiers<'_> {
     fn bounds(&mut self, tier: usize, t: f64) -> TierBounds {
         if tier == 0 {
             let (y0, y1) = (self.origin.y + self.direction.y * t, self.origin.y + self.direction.y * self.t_exit);
-            return TierBounds { min: y0.min(y1), max: y0.max(y1), lipschitz: self.direction.y.abs(), curvature: 0.0 };
+            return TierBounds::symmetric(y0.min(y1), y0.max(y1), self.direction.y.abs(), 0.0);
         }
         // The bounds of a sum: the sums of the bounds.
         let mut b = TierBounds::ZERO;
@@ -647,6 +665,7 @@ impl RayTiers for SeaTiers<'_> {
             b.max += g.max;
             b.lipschitz += g.lipschitz;
             b.curvature += g.curvature;
+            b.concavity += g.concavity;
         }
         b
     }
@@ -841,12 +860,17 @@ mod tests {
         sum - held
     }
 
+    /// Rounding of a second difference of f64 tier values (|T| ≲ 10 m) at a spacing of 1 cm:
+    /// about 4·10 m·2⁻⁵² / (10⁻² m)² ≈ 10⁻¹⁰ m⁻¹, with margin.
+    const SECOND_DIFFERENCE_ROUNDING: f64 = 1e-8;
+
     proptest! {
         #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
 
         /// Along random rays, every tier's samples stay within its bounds, its derivative within
-        /// its Lipschitz bound, the change of the derivative within the curvature bound, and the
-        /// f32 sample within the error bound of the exact f64 tier.
+        /// its Lipschitz bound, the change of the derivative within the curvature bound (and above
+        /// the one-sided concavity bound), and the f32 sample within the error bound of the exact
+        /// f64 tier.
         #[test]
         fn tier_samples_respect_their_bounds(
             n in 1usize..120,
@@ -881,6 +905,13 @@ mod tests {
                         prop_assert!(second.abs() <= b.curvature * (1.0 + 1e-6) + 2.0 * eta / dt + 1e-9, "tier {j} t {t}: curvature {second} > {}", b.curvature);
                         let exact = exact_tier(&sea, tiers.state, &ray, j, t);
                         prop_assert!((s.value - exact).abs() <= eps, "tier {j} t {t}: f32 {} vs f64 {exact} (ε = {eps:e})", s.value);
+                        // One-sided: the second difference of the exact tier (a weighted mean of
+                        // T'' over [t, t + 2h]) never falls below −concavity.
+                        let h2 = 1e-2;
+                        let (e1, e2) = (exact_tier(&sea, tiers.state, &ray, j, t + h2), exact_tier(&sea, tiers.state, &ray, j, t + 2.0 * h2));
+                        let second_exact = (e2 - 2.0 * e1 + exact) / (h2 * h2);
+                        prop_assert!(b.concavity <= b.curvature, "tier {j}: concavity {} > curvature {}", b.concavity, b.curvature);
+                        prop_assert!(second_exact >= -b.concavity * (1.0 + 1e-6) - SECOND_DIFFERENCE_ROUNDING, "tier {j} t {t}: T'' {second_exact} < −{}", b.concavity);
                         previous = Some((t, s.value));
                     }
                     let _ = previous;

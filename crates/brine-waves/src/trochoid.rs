@@ -109,6 +109,47 @@ impl Trochoid {
     pub fn max_slope(&self) -> f64 {
         self.wavenumber * self.amplitude / (1.0 - self.steepness * self.steepness).sqrt()
     }
+
+    /// Largest downward curvature of the profile, at the crest: `−d²h/dx² ≤ k²A/(1 − Q)²`.
+    ///
+    /// From `d²h/dx² = k²A (Q − cos θ)/(1 − Q cos θ)³` (differentiating `dh/dx` above once more
+    /// with `dθ/dx = k/(1 − Q cos θ)`), whose minimum `−k²A/(1 − Q)²` is at `θ = 0`.
+    ///
+    /// # Returns
+    /// The curvature bound (1/m): with the wave's `σ = k k̂·d̂_xz` in place of `k`, the bound of
+    /// the second derivative of `h` along a ray.
+    ///
+    /// # References
+    /// Equation sheet §1 (trochoid profile, `x = θ/k − (Q/k) sin θ`, `h = A cos θ`); derived.
+    pub fn max_crest_curvature(&self) -> f64 {
+        let q = self.steepness;
+        self.wavenumber * self.wavenumber * self.amplitude / ((1.0 - q) * (1.0 - q))
+    }
+
+    /// Largest upward curvature of the profile, `max d²h/dx² = k²A·c(Q)`, with
+    /// `c(Q) = 1/(1 + Q)²` (at the trough) for `Q ≤ 1/3` and `c(Q) = 4/(27 Q (1 − Q²)²)` (where
+    /// `cos θ = (3Q² − 1)/(2Q)`) above.
+    ///
+    /// The maximum over `c = cos θ ∈ [−1, 1]` of `(Q − c)/(1 − Qc)³`: its derivative has the sign
+    /// of `3Q² − 1 − 2Qc`, negative on the whole interval when `Q ≤ 1/3`. The troughs are round
+    /// while the crests sharpen: at `Q = 0.9`, `c = 4.56` against the crest's `1/(1 − Q)² = 100`.
+    /// For `F = y − h`, this is how concave `F` can be, which alone limits a certified step
+    /// toward the surface from above.
+    ///
+    /// # Returns
+    /// The curvature bound (1/m), used with `σ` as [`Self::max_crest_curvature`].
+    ///
+    /// # References
+    /// Equation sheet §1 (trochoid profile); derived here.
+    pub fn max_trough_curvature(&self) -> f64 {
+        self.wavenumber * self.wavenumber * self.amplitude * trough_curvature_factor(self.steepness)
+    }
+}
+
+/// `c(Q) = max_θ (Q − cos θ)/(1 − Q cos θ)³` for `Q ∈ [0, 1)`: `1/(1 + Q)²` up to `Q = 1/3`,
+/// `4/(27 Q (1 − Q²)²)` above (see [`Trochoid::max_trough_curvature`]).
+pub(crate) fn trough_curvature_factor(q: f64) -> f64 {
+    if q <= 1.0 / 3.0 { 1.0 / ((1.0 + q) * (1.0 + q)) } else { 4.0 / (27.0 * q * (1.0 - q * q).powi(2)) }
 }
 
 impl Trochoid {
@@ -328,5 +369,39 @@ mod tests {
         assert!(e.to_string().contains("wavenumber_rad_m"), "{e}");
         let e = Trochoid::new(1.0, 1.0, 0.0, 0.0, 0.0, 1.0).unwrap_err();
         assert!(e.to_string().contains("steepness"), "{e}");
+    }
+
+    /// Second differences of `h(x) = A cos θ(kx)` at `dx = 10⁻³ m` (k = 1): truncation
+    /// `h⁗ dx²/12` and the grid's miss of the extremum stay below 10⁻³ of the bounds for
+    /// `Q ≤ 0.9`; rounding `4·A·2⁻⁵²/dx²` is 10⁻¹⁰.
+    const CURVATURE_FD_REL: f64 = 1e-3;
+
+    /// The crest and trough curvature bounds are the extremes of `d²h/dx²`, found here by
+    /// finite differences of heights from Kepler's equation over one wavelength.
+    #[test]
+    fn curvature_bounds_are_the_extremes_of_the_profiles_second_derivative() {
+        for q in [0.0, 0.01, 0.2, 1.0 / 3.0, 0.5, 0.7, 0.9] {
+            let w = Trochoid::new(0.5, 1.0, 0.0, 0.0, 0.0, q).unwrap();
+            let h = |x: f64| 0.5 * solve_trochoid_phase(x, q).1;
+            let dx = 1e-3;
+            let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+            let steps = (std::f64::consts::TAU / dx) as usize;
+            for i in 0..steps {
+                let x = -std::f64::consts::PI + i as f64 * dx;
+                let second = (h(x + dx) - 2.0 * h(x) + h(x - dx)) / (dx * dx);
+                lo = lo.min(second);
+                hi = hi.max(second);
+            }
+            let (crest, trough) = (w.max_crest_curvature(), w.max_trough_curvature());
+            assert!((-lo - crest).abs() <= CURVATURE_FD_REL * crest, "Q = {q}: crest {} vs {crest}", -lo);
+            assert!((hi - trough).abs() <= CURVATURE_FD_REL * trough, "Q = {q}: trough {hi} vs {trough}");
+            assert!(trough <= crest, "Q = {q}");
+        }
+        // Closed forms: Q = 0 is a cosine (both k²A); Q = 0.9 gives 4/(27·0.9·0.19²) against 100.
+        assert!((trough_curvature_factor(0.0) - 1.0).abs() < 1e-15);
+        assert!((trough_curvature_factor(0.9) - 4.0 / (27.0 * 0.9 * 0.19 * 0.19)).abs() < 1e-12);
+        // Both branches meet at Q = 1/3: 1/(4/3)² = 4/(27·(1/3)·(8/9)²) = 9/16.
+        assert!((trough_curvature_factor(1.0 / 3.0) - 9.0 / 16.0).abs() < 1e-12);
+        assert!((trough_curvature_factor(1.0 / 3.0 + 1e-12) - 9.0 / 16.0).abs() < 1e-9);
     }
 }
