@@ -5,7 +5,7 @@ use brine_optics::{
     SlopeVariance, SunDisc, WATER_IOR, fresnel_dielectric, reflect, reflected_disc_radiance, reflected_sun_radiance,
     refract,
 };
-use brine_trace::{Aabb, LipschitzSum, Ray, TraceOptions, TraceStats, trace};
+use brine_trace::{Aabb, LipschitzSum, Ray, TraceOptions, TraceStats, trace, trace_tile};
 use brine_trace::{Hit, Method};
 use brine_waves::{GerstnerField, SineField, TracedTrochoids, WaveSurface};
 
@@ -115,7 +115,8 @@ pub struct Aov {
     pub foam: f32,
     /// Whitecap coverage at the hit, `[0, 1]`.
     pub whitecap: f32,
-    /// Evaluations of the implicit function `F` spent on the primary ray.
+    /// Evaluations of the implicit function `F` spent on the primary ray (those of the image
+    /// coherence's cones shared equally among the rays below each cone).
     pub evaluations: f32,
 }
 
@@ -165,7 +166,8 @@ fn pixel_seed(seed: u64, index: u64) -> u64 {
     z ^ (z >> 31)
 }
 
-/// Renders `scene`; `on_row` is called once per finished row (from any thread).
+/// Renders `scene`; `on_row` is called once per finished row (from any thread, in bursts of a
+/// band of 16 rows).
 ///
 /// # Errors
 /// [`RenderError`] if a model rejects the scene or the thread pool cannot start.
@@ -193,29 +195,57 @@ pub fn render_world(
     let mut pixels: Vec<DVec3> = (0..n).into_par_iter().map(|_| DVec3::ZERO).collect();
     let mut aovs: Vec<Aov> = (0..n).into_par_iter().map(|_| Aov::default()).collect();
     let work = |pixels: &mut [DVec3], aovs: &mut [Aov]| -> Counters {
+        let width = w as usize;
         pixels
-            .par_chunks_mut(w as usize)
-            .zip(aovs.par_chunks_mut(w as usize))
+            .par_chunks_mut(width * TILE)
+            .zip(aovs.par_chunks_mut(width * TILE))
             .enumerate()
-            .map(|(y, (row, aov_row))| {
+            .map(|(band, (rows, aov_rows))| {
                 let mut cx = Counters::new(options.profile);
-                for (x, (out, aov)) in row.iter_mut().zip(aov_row.iter_mut()).enumerate() {
-                    let index = y as u64 * u64::from(w) + x as u64;
-                    let mut rng = ChaCha8Rng::seed_from_u64(pixel_seed(seed, index));
-                    let mut sum = DVec3::ZERO;
-                    for s in 0..spp {
-                        let (jx, jy) = if spp == 1 { (0.5, 0.5) } else { (rng.random::<f64>(), rng.random::<f64>()) };
-                        let d = world.camera.direction(x as f64 + jx, y as f64 + jy);
-                        let before = cx.primary.evaluations;
-                        let sample = radiance(world, &field, d, &mut cx);
-                        if s == 0 {
-                            *aov = Aov { evaluations: (cx.primary.evaluations - before) as f32, ..sample.aov };
+                let (y0, band_h) = (band * TILE, rows.len() / width);
+                // Each pixel's jitters, drawn from its own generator in sample order.
+                let jitter: Vec<(f64, f64)> = (0..rows.len())
+                    .flat_map(|i| {
+                        let index = (y0 + i / width) as u64 * u64::from(w) + (i % width) as u64;
+                        let mut rng = ChaCha8Rng::seed_from_u64(pixel_seed(seed, index));
+                        (0..spp).map(
+                            move |_| {
+                                if spp == 1 { (0.5, 0.5) } else { (rng.random::<f64>(), rng.random::<f64>()) }
+                            },
+                        )
+                    })
+                    .collect();
+                rows.iter_mut().for_each(|p| *p = DVec3::ZERO);
+                let mut tile = TileRays::default();
+                for s in 0..spp as usize {
+                    for x0 in (0..width).step_by(TILE) {
+                        let tile_w = TILE.min(width - x0);
+                        tile.directions.clear();
+                        for y in 0..band_h {
+                            for x in x0..x0 + tile_w {
+                                let (jx, jy) = jitter[(y * width + x) * spp as usize + s];
+                                tile.directions.push(world.camera.direction(x as f64 + jx, (y0 + y) as f64 + jy));
+                            }
                         }
-                        sum += sample.radiance;
+                        let started = cx.clock();
+                        field.trace_tile(world, &mut tile, tile_w, &mut cx.primary);
+                        cx.lap(Stage::Trace, started);
+                        for y in 0..band_h {
+                            for x in x0..x0 + tile_w {
+                                let k = y * tile_w + x - x0;
+                                let sample = radiance(world, &field, tile.directions[k], tile.hits[k], &mut cx);
+                                if s == 0 {
+                                    aov_rows[y * width + x] = Aov { evaluations: tile.costs[k] as f32, ..sample.aov };
+                                }
+                                rows[y * width + x] += sample.radiance;
+                            }
+                        }
                     }
-                    *out = sum / f64::from(spp);
                 }
-                on_row();
+                rows.iter_mut().for_each(|p| *p /= f64::from(spp));
+                for _ in 0..band_h {
+                    on_row();
+                }
                 cx
             })
             .reduce(
@@ -291,14 +321,23 @@ struct Sample {
     aov: Aov,
 }
 
-/// Radiance (linear sRGB, kcd m⁻²) arriving at the camera along the unit direction `d`, and the
-/// sample's output variables.
-fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, cx: &mut Counters) -> Sample {
+/// Rows per band of the frame loop and columns per tile: the primary rays of a tile are traced
+/// together by brine-trace's cone quadtree ([`brine_trace::trace_tile`], image coherence).
+const TILE: usize = 16;
+
+/// The primary rays of one tile (row-major) and what tracing them found; reused between tiles.
+#[derive(Default)]
+struct TileRays {
+    directions: Vec<DVec3>,
+    hits: Vec<Option<Hit>>,
+    /// Evaluations of `F` per ray, the cones' shared equally among the rays below them.
+    costs: Vec<f64>,
+}
+
+/// Radiance (linear sRGB, kcd m⁻²) arriving at the camera along the unit direction `d` whose
+/// primary ray found `hit`, and the sample's output variables.
+fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, hit: Option<Hit>, cx: &mut Counters) -> Sample {
     let origin = world.camera.position;
-    let ray = Ray::new(origin, d).expect("camera rays are finite and normalised");
-    let started = cx.clock();
-    let hit = field.trace(&ray, true, world, &mut cx.primary);
-    cx.lap(Stage::Trace, started);
     if world.underwater {
         return underwater_radiance(world, field, d, hit.map(|h| (h.t, h.point)), cx);
     }
@@ -736,6 +775,33 @@ impl<'a> SeaField<'a> {
         }
     }
 
+    /// Traces the primary rays of a tile (`width` per row) from the camera, with footprint fading;
+    /// the trochoid and FFT seas share cones among the rays (image coherence, `trace_tile`), the
+    /// others trace ray by ray.
+    fn trace_tile(&self, world: &World, tile: &mut TileRays, width: usize, stats: &mut TraceStats) {
+        let n = tile.directions.len();
+        tile.hits.clear();
+        tile.hits.resize(n, None);
+        tile.costs.clear();
+        tile.costs.resize(n, 0.0);
+        let origin = world.camera.position;
+        let options =
+            TraceOptions { method: Method::Tiered, footprint_angle: world.camera.pixel_angle(), ..world.trace };
+        let (dirs, hits, costs) = (&tile.directions, &mut tile.hits[..], Some(&mut tile.costs[..]));
+        match self {
+            SeaField::Traced(t) => trace_tile(*t, origin, dirs, width, &options, stats, hits, costs),
+            SeaField::Fft(f) => trace_tile(*f, origin, dirs, width, &options, stats, hits, costs),
+            _ => {
+                for (i, d) in dirs.iter().enumerate() {
+                    let ray = Ray::new(origin, *d).expect("camera rays are finite and normalised");
+                    let before = stats.evaluations;
+                    hits[i] = self.trace(&ray, true, world, stats);
+                    tile.costs[i] = (stats.evaluations - before) as f64;
+                }
+            }
+        }
+    }
+
     /// Traces a secondary ray up to `t_max` metres.
     fn trace_within(&self, ray: &Ray, t_max: f64, world: &World, stats: &mut TraceStats) -> Option<Hit> {
         let options = TraceOptions { t_max, ..world.trace };
@@ -799,5 +865,51 @@ impl<'a> SeaField<'a> {
         let across = c.x * wz * wz - 2.0 * c.y * wx * wz + c.z * wx * wx;
         let v = &world.variance_unresolved;
         SlopeVariance::new(v.sigma_x2() + along.max(0.0), v.sigma_y2() + across.max(0.0)).unwrap_or(*v)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// f32 depth AOVs and the f64 hit differ by rounding only; the hit itself is within the trace
+    /// tolerance of the first crossing for either start, so two hits are within twice it.
+    const HITS_AGREE_TOLERANCES: f64 = 2.0;
+
+    /// Image coherence changes only where each primary ray starts tracing: a tile's hits are the
+    /// hits of its rays traced one by one (the same first crossing, each refined to the trace
+    /// tolerance), and its misses are theirs.
+    #[test]
+    fn tiled_primary_hits_are_the_hits_of_each_ray_alone() {
+        let mut scene = Scene::default_scene();
+        scene.camera.width = 640;
+        scene.camera.height = 480;
+        let world = World::new(&scene).expect("the default scene is valid");
+        let field = SeaField::new(&world);
+        let (mut hits, mut misses) = (0, 0);
+        // Tiles across the image: the sky, the horizon, mid-distance and the foreground.
+        for (x0, y0) in [(0, 0), (312, 150), (600, 156), (100, 170), (400, 300), (200, 460)] {
+            let mut tile = TileRays::default();
+            for y in 0..TILE {
+                for x in 0..TILE {
+                    tile.directions.push(world.camera.direction((x0 + x) as f64 + 0.5, (y0 + y) as f64 + 0.5));
+                }
+            }
+            field.trace_tile(&world, &mut tile, TILE, &mut TraceStats::default());
+            for (d, tiled) in tile.directions.iter().zip(&tile.hits) {
+                let ray = Ray::new(world.camera.position, *d).expect("unit direction");
+                let alone = field.trace(&ray, true, &world, &mut TraceStats::default());
+                match (tiled, alone) {
+                    (Some(a), Some(b)) => {
+                        let tol = HITS_AGREE_TOLERANCES * world.trace.tolerance_at(b.t);
+                        assert!((a.t - b.t).abs() <= tol, "tile ({x0}, {y0}): {} vs {} alone", a.t, b.t);
+                        hits += 1;
+                    }
+                    (None, None) => misses += 1,
+                    (a, b) => panic!("tile ({x0}, {y0}), direction {d}: tiled {a:?}, alone {b:?}"),
+                }
+            }
+        }
+        assert!(hits > 800 && misses > 100, "{hits} hits, {misses} misses: the tiles should see sea and sky");
     }
 }
