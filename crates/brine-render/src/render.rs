@@ -881,9 +881,16 @@ mod tests {
     /// tolerance), and its misses are theirs.
     #[test]
     fn tiled_primary_hits_are_the_hits_of_each_ray_alone() {
+        for surface in [crate::scene::SurfaceKind::Trochoids, crate::scene::SurfaceKind::Fft] {
+            tiles_match_single_rays(surface);
+        }
+    }
+
+    fn tiles_match_single_rays(surface: crate::scene::SurfaceKind) {
         let mut scene = Scene::default_scene();
         scene.camera.width = 640;
         scene.camera.height = 480;
+        scene.sea.surface = surface;
         let world = World::new(&scene).expect("the default scene is valid");
         let field = SeaField::new(&world);
         let (mut hits, mut misses) = (0, 0);

@@ -92,13 +92,16 @@ impl LipschitzSum for FftFrame {
         SCRATCH.with(|cell| {
             let mut guard = cell.borrow_mut();
             let (scratch, state) = &mut *guard;
-            let mut tiers = CascadeTiers::new(self, state, ray, t_exit, options.footprint_angle);
+            let mut tiers = CascadeTiers::new(self, state, ray, t_exit, options.footprint_angle, 0.0);
             trace_tiers_with(scratch, &mut tiers, ray, t_enter, t_exit, options, stats, log)
         })
     }
 
-    /// Cones need every ray of the cone to see the same surface: with footprint fading (weights
-    /// that differ from ray to ray) the cone gives up, as the generic default does.
+    /// Cones need a surface that bounds every ray of the cone from below: with footprint fading
+    /// (weights that differ from ray to ray) a cascade that fades for some ray of the cone before
+    /// the cone's end is held at its lower bound `min(0, −max H)` (that of `w·n` for any weight
+    /// `w ∈ [0, 1]`), the others are used whole; as for the trochoids, a downward cone then
+    /// certifies at most `CONE_REACH` (traced.rs) times where it starts or meets the slab.
     fn certify_cone(
         &self,
         ray: &Ray,
@@ -108,13 +111,18 @@ impl LipschitzSum for FftFrame {
         options: &TraceOptions,
         stats: &mut TraceStats,
     ) -> f64 {
-        if options.footprint_angle > 0.0 {
-            return t_enter;
-        }
+        let (o, d) = (ray.origin(), ray.direction());
+        let t_exit = if options.footprint_angle > 0.0 && d.y < 0.0 {
+            let top = self.height_bounds().1;
+            let slab = if o.y > top { (o.y - top) / -d.y } else { 0.0 };
+            t_exit.min(crate::traced::CONE_REACH * t_enter.max(slab).max(1.0))
+        } else {
+            t_exit
+        };
         SCRATCH.with(|cell| {
             let mut guard = cell.borrow_mut();
             let (scratch, state) = &mut *guard;
-            let mut tiers = CascadeTiers::new(self, state, ray, t_exit, 0.0);
+            let mut tiers = CascadeTiers::new(self, state, ray, t_exit, options.footprint_angle, half_angle);
             certify_cone_with(scratch, &mut tiers, ray, half_angle, t_enter, t_exit, options, stats)
         })
     }
@@ -139,6 +147,9 @@ struct CascadeOnRay {
     spread: f64,
     /// Fade distance `T` (m), `+∞` without fading.
     fade: f64,
+    /// Cone mode: the cascade fades for some ray of the cone before the end and is held at its
+    /// lower bound `min` (then `min = max`, no slope, no curvature, no spread).
+    held: bool,
 }
 
 /// [`RayTiers`] of an [`FftFrame`] along one ray: tier 0 is `y`, then one tier per cascade, in
@@ -154,12 +165,16 @@ struct CascadeTiers<'a> {
 }
 
 impl<'a> CascadeTiers<'a> {
+    /// The tiers along `ray` up to `t_exit`, faded for a pixel of `footprint_angle` rad; with
+    /// `cone > 0`, tiers that bound every ray within `cone` rad of `ray` (see
+    /// [`FftFrame::certify_cone`]).
     fn new(
         frame: &'a FftFrame,
         state: &'a mut Vec<CascadeOnRay>,
         ray: &Ray,
         t_exit: f64,
         footprint_angle: f64,
+        cone: f64,
     ) -> Self {
         let d = ray.direction();
         state.clear();
@@ -167,7 +182,7 @@ impl<'a> CascadeTiers<'a> {
         for (c, cascade) in frame.cascades().iter().enumerate() {
             let (lo, hi) = cascade.height_bounds();
             size += lo.abs().max(hi.abs());
-            state.push(CascadeOnRay {
+            let mut on_ray = CascadeOnRay {
                 cascade: c,
                 min: -hi,
                 max: -lo,
@@ -175,7 +190,27 @@ impl<'a> CascadeTiers<'a> {
                 curvature: cascade.directional_curvature(d.x, d.z),
                 spread: cascade.max_slope(),
                 fade: if footprint_angle > 0.0 { cascade.fade_distance(d, footprint_angle) } else { f64::INFINITY },
-            });
+                held: false,
+            };
+            if cone > 0.0 && footprint_angle > 0.0 {
+                // T grows with |d_y|, which is at least |d_y| − θ within the cone.
+                let lowest = DVec3::new(0.0, (d.y.abs() - cone).max(0.0), 0.0);
+                if cascade.fade_distance(lowest, footprint_angle) < 1.5 * t_exit {
+                    let v = on_ray.min.min(0.0);
+                    on_ray = CascadeOnRay {
+                        min: v,
+                        max: v,
+                        lipschitz: 0.0,
+                        curvature: 0.0,
+                        spread: 0.0,
+                        held: true,
+                        ..on_ray
+                    };
+                }
+                // Used whole (w = 1 on the interval for every ray of the cone) or held.
+                on_ray.fade = f64::INFINITY;
+            }
+            state.push(on_ray);
         }
         let key = |c: &CascadeOnRay| if c.lipschitz > 0.0 { (c.max - c.min) / c.lipschitz } else { f64::INFINITY };
         state.sort_by(|a, b| key(b).total_cmp(&key(a)));
@@ -217,6 +252,9 @@ impl RayTiers for CascadeTiers<'_> {
             return TierSample { value: self.origin.y + self.direction.y * t, slope: self.direction.y, terms: 0 };
         }
         let c = self.cascades[tier - 1];
+        if c.held {
+            return TierSample { value: c.min, slope: 0.0, terms: 0 };
+        }
         let w = footprint_weight(c.fade, t);
         if w == 0.0 {
             return TierSample { value: 0.0, slope: 0.0, terms: 0 };

@@ -703,7 +703,7 @@ impl RayTiers for SeaTiers<'_> {
 /// Measured on the frame of issue #7 (640×480, N = 100, every phenomenon, 16 × 16 tiles):
 /// evaluations per frame 1.446 M without a limit, 1.581 M at 1.1, 1.307 M at 1.25, 1.141 M at
 /// 1.4, **1.136 M at 1.5**, 1.137 M at 1.75, 1.139 M at 2, 1.157 M at 4, 1.193 M at 8.
-const CONE_REACH: f64 = 1.5;
+pub(crate) const CONE_REACH: f64 = 1.5;
 
 impl LipschitzSum for TracedTrochoids {
     fn component_count(&self) -> usize {

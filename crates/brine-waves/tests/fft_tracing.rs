@@ -222,3 +222,47 @@ proptest! {
         check(frame, &ray, Method::Tiered, 0.002)?;
     }
 }
+
+/// A unit vector at angle `angle` from `axis`, around it by `phi`.
+fn tilt(axis: DVec3, angle: f64, phi: f64) -> DVec3 {
+    let u = axis.any_orthonormal_vector();
+    let v = axis.cross(u);
+    (axis * angle.cos() + (u * phi.cos() + v * phi.sin()) * angle.sin()).normalize()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// No ray of a cone crosses its own surface (faded by its own direction when fading) before
+    /// the distance the cone certified; the f64 splines are exact up to rounding (`AT_ROOT_ABS`).
+    #[test]
+    fn a_cone_certifies_every_ray_it_contains(
+        which in 0usize..4,
+        height in 0.5f64..20.0,
+        azimuth in -PI..PI,
+        dip in 0.01f64..1.2,
+        half_angle in 1e-4f64..0.05,
+        footprint in prop_oneof![Just(0.0), Just(0.002), Just(0.02)],
+        t_enter in prop_oneof![Just(0.0), 0.5f64..30.0],
+    ) {
+        let frame = &frames()[which].1;
+        let axis = DVec3::new(dip.cos() * azimuth.cos(), -dip.sin(), dip.cos() * azimuth.sin());
+        let origin = DVec3::new(13.0, height, -7.0);
+        let ray = Ray::new(origin, axis).unwrap();
+        let o = TraceOptions { method: Method::Tiered, t_max: 200.0, footprint_angle: footprint, ..TraceOptions::default() };
+        // A cone can only start where its axis has not crossed (as in the quadtree).
+        let t_enter = if f_along(frame, &ray, footprint, t_enter) > 0.0 { t_enter } else { 0.0 };
+        let t_c = frame.certify_cone(&ray, half_angle, t_enter, o.t_max, &o, &mut TraceStats::default());
+        prop_assert!(t_c >= t_enter && t_c <= o.t_max, "t_c = {t_c}");
+        // A cone that certifies nothing (t_c = t_enter) claims nothing about its rays.
+        for k in (0..8).filter(|_| t_c > t_enter) {
+            let d = tilt(axis, half_angle * f64::from(k % 4) / 3.0, 0.9 * f64::from(k));
+            let r = Ray::new(origin, d).unwrap();
+            for j in 0..=2000 {
+                let t = t_enter + (t_c - t_enter) * f64::from(j) / 2000.0;
+                let f = f_along(frame, &r, footprint, t);
+                prop_assert!(f > -AT_ROOT_ABS, "ray {k} crosses at t = {t} in [{t_enter}, t_c = {t_c}] (F = {f})");
+            }
+        }
+    }
+}
