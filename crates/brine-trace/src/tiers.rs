@@ -31,6 +31,11 @@ impl TierBounds {
     pub const ZERO: Self = Self { min: 0.0, max: 0.0, lipschitz: 0.0, curvature: 0.0, concavity: 0.0 };
 
     /// Bounds with the same second-derivative bound on both sides (`concavity = curvature`).
+    ///
+    /// # Arguments
+    /// - `min`, `max`: bounds of the tier's sum (m, or the unit of `F`), `min ≤ max`.
+    /// - `lipschitz`: bound of `|d/dt|` along the ray (per metre), `≥ 0`.
+    /// - `curvature`: bound of `|d²/dt²|` (per metre²), `≥ 0`, `+∞` if unknown.
     pub const fn symmetric(min: f64, max: f64, lipschitz: f64, curvature: f64) -> Self {
         Self { min, max, lipschitz, curvature, concavity: curvature }
     }

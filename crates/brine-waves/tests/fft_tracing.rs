@@ -201,21 +201,23 @@ fn check(frame: &FftFrame, ray: &Ray, method: Method, footprint: f64) -> Result<
     Ok(())
 }
 
+prop_compose! {
+    /// One of the frames and a downward camera ray over it: 0.5–20 m up, any azimuth, dipping
+    /// 0.01–1.2 rad (grazing to steep).
+    fn camera_ray()(which in 0usize..4, height in 0.5f64..20.0, azimuth in -PI..PI, dip in 0.01f64..1.2) -> (usize, Ray) {
+        let dir = DVec3::new(dip.cos() * azimuth.cos(), -dip.sin(), dip.cos() * azimuth.sin());
+        (which, Ray::new(DVec3::new(13.0, height, -7.0), dir).unwrap())
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(24))]
 
     /// Every certified method (and the tiered one with footprint fading, against a march of the
     /// faded function) returns the first crossing.
     #[test]
-    fn traced_hits_are_the_first_crossing(
-        which in 0usize..4,
-        height in 0.5f64..20.0,
-        azimuth in -PI..PI,
-        dip in 0.01f64..1.2,
-    ) {
+    fn traced_hits_are_the_first_crossing((which, ray) in camera_ray()) {
         let frame = &frames()[which].1;
-        let dir = DVec3::new(dip.cos() * azimuth.cos(), -dip.sin(), dip.cos() * azimuth.sin());
-        let ray = Ray::new(DVec3::new(13.0, height, -7.0), dir).unwrap();
         for method in [Method::GlobalLipschitz, Method::Directional, Method::Relaxed, Method::Darles, Method::Tiered] {
             check(frame, &ray, method, 0.0)?;
         }
@@ -237,18 +239,13 @@ proptest! {
     /// the distance the cone certified; the f64 splines are exact up to rounding (`AT_ROOT_ABS`).
     #[test]
     fn a_cone_certifies_every_ray_it_contains(
-        which in 0usize..4,
-        height in 0.5f64..20.0,
-        azimuth in -PI..PI,
-        dip in 0.01f64..1.2,
+        (which, ray) in camera_ray(),
         half_angle in 1e-4f64..0.05,
         footprint in prop_oneof![Just(0.0), Just(0.002), Just(0.02)],
         t_enter in prop_oneof![Just(0.0), 0.5f64..30.0],
     ) {
         let frame = &frames()[which].1;
-        let axis = DVec3::new(dip.cos() * azimuth.cos(), -dip.sin(), dip.cos() * azimuth.sin());
-        let origin = DVec3::new(13.0, height, -7.0);
-        let ray = Ray::new(origin, axis).unwrap();
+        let (origin, axis) = (ray.origin(), ray.direction());
         let o = TraceOptions { method: Method::Tiered, t_max: 200.0, footprint_angle: footprint, ..TraceOptions::default() };
         // A cone can only start where its axis has not crossed (as in the quadtree).
         let t_enter = if f_along(frame, &ray, footprint, t_enter) > 0.0 { t_enter } else { 0.0 };
