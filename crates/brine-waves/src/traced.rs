@@ -305,7 +305,14 @@ impl TracedTrochoids {
                     let v = |a: &[f64; LANES]| f64x4::new(a[lanes.clone()].try_into().expect("4 lanes"));
                     let (tkx, tkz, k) = (v(&tier.kx), v(&tier.kz), v(&tier.wavenumber));
                     let sigma = tkx * dx + tkz * dz;
-                    let ratio = reach / (k * k + sigma * sigma * inv_dy2).sqrt();
+                    let resolution = k * k + sigma * sigma * inv_dy2;
+                    // Tᵢ/t ≥ 1.5 on every lane, i.e. (2π/(αt))² ≥ 2.25 (kᵢ² + σᵢ²/d_y²): no wave of
+                    // these four has begun to fade (w = 1, nothing lost), without the square root
+                    // and division, which cost as much as the profile itself.
+                    if (reach * reach).simd_ge(f64x4::splat(2.25) * resolution).all() {
+                        continue;
+                    }
+                    let ratio = reach / resolution.sqrt();
                     let u = ((ratio - one) * f64x4::splat(2.0)).max(zero).min(one);
                     let w = u * u * (f64x4::splat(3.0) - f64x4::splat(2.0) * u);
                     let gone = one - w;
