@@ -498,9 +498,9 @@ impl<'a> SeaTiers<'a> {
                 // Padding lanes (A = 0) count as faded out, so that no weight is NaN.
                 fade[real..].fill(0.0);
                 // Plain comparisons (the fades are never NaN): `f32::min`'s NaN rule costs a blend.
-                let (lo, hi) = fade[..real]
-                    .iter()
-                    .fold((f32::INFINITY, 0.0f32), |(lo, hi), &f| (if f < lo { f } else { lo }, if f > hi { f } else { hi }));
+                let (lo, hi) = fade[..real].iter().fold((f32::INFINITY, 0.0f32), |(lo, hi), &f| {
+                    (if f < lo { f } else { lo }, if f > hi { f } else { hi })
+                });
                 (info.fade_min, info.fade_max) = (f64::from(lo), f64::from(hi));
                 if info.fade_max == 0.0 {
                     info.fade_max = f64::INFINITY; // an empty tier never fades
