@@ -28,6 +28,26 @@ const WIDTH: usize = 640;
 const HEIGHT: usize = 480;
 const FOV_DEG: f64 = 50.0;
 
+/// The benchmark's cameras: name, height (m), pitch (degrees).
+const CAMERAS: [(&str, f64, f64); 3] =
+    [("2 m grazing", 2.0, -2.0), ("10 m horizon", 10.0, -9.0), ("50 m down", 50.0, -50.0)];
+
+/// The benchmark's tracer options (tiered, 3 km, steps from 1 mm + 10⁻⁴ t) at a tolerance and a
+/// footprint angle (rad, 0: no fading).
+fn bench_options(tolerance: f64, tolerance_relative: f64, footprint_angle: f64) -> TraceOptions {
+    TraceOptions {
+        method: Method::Tiered,
+        t_max: 3000.0,
+        max_steps: 200_000,
+        min_step: 1e-3,
+        min_step_relative: 1e-4,
+        tolerance,
+        tolerance_relative,
+        footprint_angle,
+        ..TraceOptions::default()
+    }
+}
+
 /// Directions of every `stride`-th pixel of a benchmark camera (bearing 100°, pitch in degrees).
 fn directions(pitch_deg: f64, stride: usize) -> Vec<DVec3> {
     let (b, e) = (100f64.to_radians(), pitch_deg.to_radians());
@@ -66,21 +86,10 @@ fn main() {
         "| camera | tolerance | hits | mean | median | p99 | pruned | full certified | probe | refinement | time µs/ray |"
     );
     println!("|---|---|---|---|---|---|---|---|---|---|---|");
-    for (name, height, pitch) in [("2 m grazing", 2.0, -2.0), ("10 m horizon", 10.0, -9.0), ("50 m down", 50.0, -50.0)]
-    {
+    for (name, height, pitch) in CAMERAS {
         let dirs = directions(pitch, stride);
         for (tol_name, tol, tol_rel) in [("0.1 mm + 1e-6 t", 1e-4, 1e-6), ("1 mm + 1e-5 t", 1e-3, 1e-5)] {
-            let o = TraceOptions {
-                method: Method::Tiered,
-                t_max: 3000.0,
-                max_steps: 200_000,
-                min_step: 1e-3,
-                min_step_relative: 1e-4,
-                tolerance: tol,
-                tolerance_relative: tol_rel,
-                footprint_angle: footprint,
-                ..TraceOptions::default()
-            };
+            let o = bench_options(tol, tol_rel, footprint);
             let mut per_hit = Vec::new();
             let mut parts = TraceStats::default();
             let start = std::time::Instant::now();
@@ -163,18 +172,8 @@ fn oracle_table(set: &TrochoidSet, sea: &TracedTrochoids, n: usize, stride: usiz
     );
     println!("|---|---|---|---|---|");
     let amplitude = set.total_amplitude();
-    for (name, height, pitch) in [("2 m grazing", 2.0, -2.0), ("10 m horizon", 10.0, -9.0), ("50 m down", 50.0, -50.0)]
-    {
-        let o = TraceOptions {
-            method: Method::Tiered,
-            t_max: 3000.0,
-            max_steps: 200_000,
-            min_step: 1e-3,
-            min_step_relative: 1e-4,
-            tolerance: 1e-4,
-            tolerance_relative: 1e-6,
-            ..TraceOptions::default()
-        };
+    for (name, height, pitch) in CAMERAS {
+        let o = bench_options(1e-4, 1e-6, 0.0);
         let (mut oracle, mut tiered, mut evals) = (Vec::new(), Vec::new(), 0.0);
         for d in directions(pitch, stride) {
             let origin = DVec3::new(0.0, height, 0.0);
