@@ -337,3 +337,89 @@ fn a_cone_holds_a_cascade_that_fades_at_a_trough() {
     }
     assert!(checked >= 12, "only {checked} cones started above the surface");
 }
+
+/// A downward cone certifies at most `CONE_REACH` (1.5) times the later of its start and the
+/// slab's entry (or 1 m) when fading: its hold decisions are made for that shortened end only.
+/// Grazing cones (dips 0.3°–2.3°) of single-cascade frames enter the slab long before a trough
+/// where the cascade's weight is 0.1 (`T/t = 1.1`) and aim at half the trough's depth, so the
+/// shortened end is before the cascade starts to fade (it is used whole, not held) and the faded
+/// axis crosses at the trough. Run past the shortened end, the whole cascade would let a cone
+/// certify over the faded crossing wherever the whole surface stays below the axis up to the
+/// trough (measured: with the certificate run to the cone's full end, the test fails at the 80 m
+/// tile, dip 0.02, azimuth 45°).
+#[test]
+fn a_cone_stops_at_its_reach_before_a_cascade_fades() {
+    let elf = Elfouhaily::from_fetch(12.0, 2e4).unwrap();
+    let spreading = elf.spreading(Directions::Downwind);
+    let mut checked = 0;
+    for (seed, tile) in [(5, 80.0), (6, 11.7), (7, 1.7)] {
+        let o = FftOptions {
+            resolution: 64,
+            tile_sizes: vec![tile],
+            choppiness: 0.0,
+            loop_period: None,
+            seed,
+            wind_direction: 0.3,
+        };
+        let frame = FftOcean::new(&elf, &spreading, &o).unwrap().at_time(1.0);
+        let cascade = &frame.cascades()[0];
+        let top = frame.height_bounds().1;
+        let (mut p0, mut h0) = ((0.0, 0.0), f64::INFINITY);
+        for j in 0..128 {
+            for i in 0..128 {
+                let (x, z) = (tile * f64::from(i) / 128.0, tile * f64::from(j) / 128.0);
+                let h = cascade.height(x, z);
+                if h < h0 {
+                    (p0, h0) = ((x, z), h);
+                }
+            }
+        }
+        for footprint in [0.05, 0.2] {
+            for dip in [0.005f64, 0.01, 0.02, 0.04] {
+                for a in 0..24 {
+                    let azimuth = f64::from(a) * PI / 12.0;
+                    let d = DVec3::new(dip.cos() * azimuth.cos(), -dip.sin(), dip.cos() * azimuth.sin());
+                    let big_t = frame.component_fade_distance(1, d, footprint);
+                    let t_star = big_t / 1.1;
+                    let ray = Ray::new(DVec3::new(p0.0, 0.5 * h0, p0.1) - d * t_star, d).unwrap();
+                    // The cone starts where its axis enters the slab. Its reach, 1.5 × max(start,
+                    // 1 m), must end before the cascade starts to fade (at T/1.5; 1 % for the
+                    // cone's rays, whose |d_y| is a little smaller), and the faded axis must cross
+                    // at the trough but not before the start.
+                    let t_enter = ((ray.origin().y - top) / -d.y).max(0.0);
+                    let reach = 1.5 * t_enter.max(1.0);
+                    if reach * 1.5 * 1.01 >= big_t
+                        || f_along(&frame, &ray, footprint, t_star) >= 0.0
+                        || f_along(&frame, &ray, footprint, t_enter) <= 0.0
+                    {
+                        continue;
+                    }
+                    let opts = TraceOptions {
+                        method: Method::Tiered,
+                        t_max: 2.0 * t_star,
+                        footprint_angle: footprint,
+                        ..TraceOptions::default()
+                    };
+                    let half_angle = 1e-4;
+                    let t_c =
+                        frame.certify_cone(&ray, half_angle, t_enter, opts.t_max, &opts, &mut TraceStats::default());
+                    for k in 0..8 {
+                        let r =
+                            Ray::new(ray.origin(), tilt(d, half_angle * f64::from(k % 4) / 3.0, 0.9 * f64::from(k)))
+                                .unwrap();
+                        for j in 0..=2000 {
+                            let t = t_enter + (t_c - t_enter) * f64::from(j) / 2000.0;
+                            let f = f_along(&frame, &r, footprint, t);
+                            assert!(
+                                f > -AT_ROOT_ABS,
+                                "tile {tile}, dip {dip}, azimuth {azimuth}: ray {k} crosses at t = {t} < t_c = {t_c}"
+                            );
+                        }
+                    }
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked >= 100, "only {checked} cones started above the surface before their reach");
+}
