@@ -351,9 +351,12 @@ mod tests {
     /// At `ρ` ≈ 1550 (`r` = 200 µm) `|Q_e − 2| ≤ 4/ρ + 8/ρ²` ≈ 2.6×10⁻³; 0.02 allows the bound.
     const LARGE_DROP_Q: f64 = 0.02;
 
-    /// Closed form vs series at `ρ` = 10⁻²: the series' next term `ρ⁶/1200` ≈ 10⁻¹⁵, but the closed
-    /// form loses `4/ρ²·ε` ≈ 10⁻¹¹ to cancellation; 10⁻⁹ bounds both.
-    const SERIES_SWITCH: f64 = 1e-9;
+    /// Both sides of the switch at `ρ` = 10⁻² against the series to `ρ⁶`
+    /// (`Q_e = ρ²/2 − ρ⁴/36 + ρ⁶/1440 − …`, the Taylor expansions of `sin` and `cos` to `ρ⁸`):
+    /// the next term is ~10⁻¹⁹, and the closed form loses about `(4/ρ²)·ε/2` ≈ 4×10⁻¹² to the
+    /// cancellation in `1 − cos ρ`. 2×10⁻¹¹ bounds that, and is 7× below the change a wrong
+    /// `ρ⁴` coefficient (`1/24` for `1/36`) would make.
+    const SERIES_SWITCH: f64 = 2e-11;
 
     #[test]
     fn segment_depth_matches_brute_force() {
@@ -378,9 +381,12 @@ mod tests {
         let e = ExtinctionEfficiency::AnomalousDiffraction { wavelength_nm: 550.0, refractive_index: 1.34 };
         assert!(e.q_e(1e-4) < SMALL_DROP_Q);
         assert!((e.q_e(200.0) - 2.0).abs() < LARGE_DROP_Q);
-        // Series and closed form agree at the switch.
-        let rho: f64 = 1e-2;
-        let closed = 2.0 - 4.0 / rho * rho.sin() + 4.0 / (rho * rho) * (1.0 - rho.cos());
-        assert!((closed - rho * rho * (0.5 - rho * rho / 36.0)).abs() < SERIES_SWITCH);
+        // Just below the switch (series) and just above it (closed form), against the series to ρ⁶.
+        let r_of_rho = |rho: f64| rho * 550.0 / (4.0 * std::f64::consts::PI * 1e3 * 0.34);
+        for rho in [1e-2 * (1.0 - 1e-6), 1e-2 * (1.0 + 1e-6)] {
+            let expected = rho * rho * (0.5 - rho * rho * (1.0 / 36.0 - rho * rho / 1440.0));
+            let q = e.q_e(r_of_rho(rho));
+            assert!((q - expected).abs() < SERIES_SWITCH, "ρ = {rho}: {q} vs {expected}");
+        }
     }
 }

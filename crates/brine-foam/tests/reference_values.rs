@@ -16,7 +16,9 @@ fn csv(text: &str) -> Vec<Vec<String>> {
 
 #[test]
 fn monahan_coverage_laws() {
-    for row in csv(include_str!("data/whitecap_coverage.csv")) {
+    let rows = csv(include_str!("data/whitecap_coverage.csv"));
+    assert_eq!(rows.len(), 5, "the table's five published values");
+    for row in rows {
         let (u, dt, expected): (f64, f64, f64) =
             (row[1].parse().unwrap(), row[2].parse().unwrap(), row[3].parse().unwrap());
         let law = match row[0].as_str() {
@@ -40,7 +42,9 @@ fn koepke_effective_reflectance() {
 
 #[test]
 fn msd86_source_function() {
-    for row in csv(include_str!("data/msd86_flux.csv")) {
+    let rows = csv(include_str!("data/msd86_flux.csv"));
+    assert_eq!(rows.len(), 4, "the table's four published values");
+    for row in rows {
         let (u, expected): (f64, f64) = (row[0].parse().unwrap(), row[2].parse().unwrap());
         let value = if let Some((a, b)) = row[1].split_once('-') {
             // Simpson's rule in ln r on 2000 panels: converged to 1e-9.

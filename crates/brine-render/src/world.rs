@@ -201,7 +201,7 @@ pub enum Whitecaps {
     },
     /// Of an FFT frame: mip-mapped moments of the Jacobian grids (Dupuy & Bruneton 2012).
     Fft {
-        /// Pyramids of `J` and `J²` per cascade.
+        /// Pyramids of `kᵢ = Jᵢ − 1 + 1/n` and `kᵢ²` per cascade.
         stats: Box<FftJacobianStatistics>,
         /// Calibrated threshold per footprint size, or `None` for the raw `alpha`.
         calibration: Option<FftCalibration>,

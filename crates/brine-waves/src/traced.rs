@@ -927,6 +927,11 @@ mod tests {
                         let s = tiers.sample(j, t);
                         prop_assert!(s.value >= b.min - eps && s.value <= b.max + eps, "tier {j} t {t}: {} ∉ [{}, {}]", s.value, b.min, b.max);
                         prop_assert!(s.slope.abs() <= b.lipschitz + eta, "tier {j} t {t}: slope {} > {}", s.slope, b.lipschitz);
+                        // The value itself between samples, not only the reported slope: each f32
+                        // sample is within ε of the exact tier, which is L-Lipschitz on [t0, t_exit].
+                        if let Some((tp, vp)) = previous {
+                            prop_assert!((s.value - vp).abs() <= b.lipschitz * (t - tp) * (1.0 + 1e-12) + 2.0 * eps, "tier {j} t {t}: |Δvalue| {} > L Δt {}", (s.value - vp).abs(), b.lipschitz * (t - tp));
+                        }
                         let s2 = tiers.sample(j, t + dt);
                         // Finite difference of the slope, with the f32 slope error over dt.
                         let second = (s2.slope - s.slope) / dt;
@@ -942,7 +947,6 @@ mod tests {
                         prop_assert!(second_exact >= -b.concavity * (1.0 + 1e-6) - SECOND_DIFFERENCE_ROUNDING, "tier {j} t {t}: T'' {second_exact} < −{}", b.concavity);
                         previous = Some((t, s.value));
                     }
-                    let _ = previous;
                 }
             }
         }

@@ -29,14 +29,15 @@ const CALIBRATION_ERF: ErfMethod = ErfMethod::AbramowitzStegun;
 /// Dupuy & Bruneton leave `α` to the artist. The FFT surface is a finite sample of the sea, so
 /// the coverage is an empirical quantity: `M` points `xⱼ` are drawn uniformly over the largest tile
 /// (ChaCha8, seeded; the smaller, non-commensurate tiles are then sampled at effectively random
-/// phases), and at each footprint size `s` of a table (log-spaced from the finest grid spacing to
-/// beyond the largest tile) `α(s)` solves
+/// phases), and at each footprint size `s` of a table (log-spaced from a tenth of the finest grid
+/// spacing to twice the largest tile) `α(s)` solves
 ///
 /// `(1/M) Σⱼ ½[1 + erf((α − μⱼ(s))/√(2σⱼ²(s)))] = W*`
 ///
 /// by bisection (the left side increases with `α`), `(μⱼ, σⱼ²)` the footprint moments of
-/// [`FftJacobianStatistics::moments_at`]. At the smallest size the moments are the pointwise `J`
-/// (no variance), and `α` is the `W*` quantile of `J` over the sea; at the largest they are the
+/// [`FftJacobianStatistics::moments_at`]. At the smallest size the moments are nearly the pointwise
+/// `J` (the interpolated reads between grid points leave a little variance), and `α` is close to
+/// the `W*` quantile of `J` over the sea; at the largest they are the
 /// whole sea's and `α = μ + σ√2 erf⁻¹(2W* − 1)`. Between table sizes `α` is linear in `ln s`.
 ///
 /// # References

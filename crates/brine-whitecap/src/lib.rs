@@ -7,6 +7,11 @@
 //! `W · Lambert(0.4)`, and a calibration of the threshold `α` against a target coverage — the
 //! Monahan coverage of brine-foam at the same wind.
 //!
+//! For an FFT ocean (brine-waves' `FftFrame`), [`FftJacobianStatistics`] holds per cascade a
+//! mip-mapped pyramid of `kᵢ = Jᵢ − 1 + 1/n` and `kᵢ²` and reads `μ = Σᵢ⟨kᵢ⟩`,
+//! `σ² = Σᵢ(⟨kᵢ²⟩ − ⟨kᵢ⟩²)` over a footprint, as Dupuy & Bruneton publish it; [`FftCalibration`]
+//! calibrates `α(s)` per footprint size on sample points of the frame.
+//!
 //! ## Notation
 //!
 //! | symbol | Rust | unit | meaning |
@@ -21,6 +26,13 @@
 //! | `W` | [`whitecap_coverage`] | 1 | whitecap coverage of the footprint, `[0, 1]` |
 //! | `ρ_wc` | [`WHITECAP_REFLECTANCE`] | 1 | whitecap reflectance, 0.4 |
 //! | `I_wc` | [`whitecap_radiance`] | irradiance unit sr⁻¹ | whitecap radiance |
+//! | `n` | [`FftJacobianStatistics::cascade_count`] | 1 | number of FFT cascades |
+//! | `λ` | `FftOptions::choppiness` | 1 | choppiness of the FFT displacement, one for all cascades |
+//! | `Jᵢ` | `FftCascade::jacobians` | 1 | Jacobian of cascade `i`'s displacement alone, on its displaced grid |
+//! | `aᵢ`, `bᵢ`, `cᵢ` | — | 1 | `λ∂Dₓ,ᵢ/∂x`, `λ∂D_z,ᵢ/∂z`, `λ∂Dₓ,ᵢ/∂z`; `Jᵢ = (1 + aᵢ)(1 + bᵢ) − cᵢ²` |
+//! | `⟨kᵢ⟩`, `⟨kᵢ²⟩` | [`FftJacobianStatistics::cascade_moments`] | 1 | footprint means of `kᵢ = 1/n + aᵢ + bᵢ + aᵢbᵢ − cᵢ²` and of `kᵢ²` |
+//! | `Δ_min`, `L_max` | [`FftJacobianStatistics::finest_spacing`], [`FftJacobianStatistics::largest_tile`] | m | finest grid spacing, largest tile |
+//! | `α(s)` | [`FftCalibration::alpha_for_footprint`] | 1 | threshold calibrated for the footprint size `s` |
 //!
 //! ## Validity
 //!
@@ -28,6 +40,14 @@
 //! moments assume independent, uniformly distributed phases: true for a set whose wave vectors are
 //! incommensurate, over an area much larger than the longest wave. The per-pixel Gaussian law of
 //! `J` is the model's assumption (Dupuy & Bruneton); the calibration does not rely on it.
+//!
+//! FFT route: any `FftFrame` (1–8 cascades, `λ ∈ [0, 4]`; `λ = 0` gives `J = 1`). Its moments are
+//! the published approximation: the cross-cascade products of `J` and the covariances between
+//! cascades are neglected, the footprint is a box of width `√12 s` read trilinearly (isotropic),
+//! and the means are over the displaced surface (so the tile mean of `J` is not exactly 1). The
+//! calibration is plain Monte Carlo over the largest tile (relative error `√((1 − W*)/(W* M))` for
+//! a target `W*` and `M` points); `α(s)` holds the target at its table sizes (to sampling) and is
+//! interpolated in `ln s` between them.
 //!
 //! ## Example
 //!

@@ -243,6 +243,7 @@ pub fn run_spray(args: &SprayArgs) -> Result<(), CliError> {
 
 #[cfg(test)]
 mod tests {
+    use approx::assert_relative_eq;
     use clap::Parser;
 
     use super::*;
@@ -269,12 +270,17 @@ mod tests {
 
     #[test]
     fn foam_issue_example() {
-        // ΔT = 12 − 20 = −8 °C: 1.95e-5 · 10^2.55 · e^{−0.6888} = 3.475e-3.
+        // The JSON carries the library's f64 value: a few roundings of pow and exp.
+        const ROUNDING: f64 = 1e-12;
+        // Monahan & O'Muircheartaigh 1986, W = 1.95×10⁻⁵ U^2.55 e^{0.0861 ΔT}, at ΔT = 12 − 20 =
+        // −8 °C: 1.95e-5 · 10^2.55 · e^{−0.6888} = 3.4746×10⁻³ (the issue's example).
         let v = foam("--u10 10 --t-water-c 12 --t-air-c 20 --json").unwrap();
-        assert!((v["coverage"].as_f64().unwrap() - 3.4747e-3).abs() < 1e-6, "{v}");
+        let expected = 1.95e-5 * 10f64.powf(2.55) * (0.0861 * -8.0f64).exp();
+        assert_relative_eq!(v["coverage"].as_f64().unwrap(), expected, max_relative = ROUNDING);
         assert_eq!(v["law"], "monahan-1986-stability");
+        // Monahan & O'Muircheartaigh 1980, W = 3.84×10⁻⁶ U^3.41: 9.870×10⁻³ at 10 m/s.
         let v = foam("--u10 10 --json").unwrap();
-        assert!((v["coverage"].as_f64().unwrap() - 9.870e-3).abs() < 1e-5);
+        assert_relative_eq!(v["coverage"].as_f64().unwrap(), 3.84e-6 * 10f64.powf(3.41), max_relative = ROUNDING);
         let v = foam("--u10 3 --json").unwrap();
         assert!(v["coverage"].as_f64().unwrap().abs() < 1e-300);
     }
