@@ -78,15 +78,21 @@ impl Camera {
 mod tests {
     use super::*;
 
+    /// Unit vectors from sines and cosines of round angles, cross products and normalisations:
+    /// `cos 90°` rounds to 6×10⁻¹⁷ instead of 0 and the rest is exact or a few ulps of 1;
+    /// 10⁻¹² is a wide margin.
+    const UNIT_VECTOR_ROUNDING: f64 = 1e-12;
+
     #[test]
     fn bearing_90_is_east_and_right_of_north_is_east() {
-        assert!((direction_from_bearing(90.0, 0.0) - DVec3::X).length() < 1e-12);
+        assert!((direction_from_bearing(90.0, 0.0) - DVec3::X).length() < UNIT_VECTOR_ROUNDING);
         let c = CameraConfig { yaw_deg: Some(0.0), pitch_deg: Some(0.0), ..CameraConfig::default() };
         let cam = Camera::from_config(&c);
-        assert!((cam.forward - DVec3::NEG_Z).length() < 1e-12);
-        assert!((cam.right - DVec3::X).length() < 1e-12);
+        assert!((cam.forward - DVec3::NEG_Z).length() < UNIT_VECTOR_ROUNDING);
+        assert!((cam.right - DVec3::X).length() < UNIT_VECTOR_ROUNDING);
         assert!(
-            (cam.direction(f64::from(cam.width) / 2.0, f64::from(cam.height) / 2.0) - cam.forward).length() < 1e-12
+            (cam.direction(f64::from(cam.width) / 2.0, f64::from(cam.height) / 2.0) - cam.forward).length()
+                < UNIT_VECTOR_ROUNDING
         );
     }
 }

@@ -134,13 +134,35 @@ pub fn faded_components<S: LipschitzSum + ?Sized>(
 mod tests {
     use super::*;
 
+    /// The weights at the ends of the transition come from exact branches (the early return 1, or
+    /// `u = 0`); 10⁻¹⁵ (about 4.5 ulps of 1) only allows for rounding.
+    const END_WEIGHT: f64 = 1e-15;
+
+    /// At `T/t = 1.25` the smoothstep is at `u = 1/2`, `S = 1/2`, every step exact in binary;
+    /// 10⁻¹² is a rounding allowance only.
+    const MID_WEIGHT: f64 = 1e-12;
+
     #[test]
     fn weight_is_one_near_zero_far_and_smooth_between() {
-        assert!((footprint_weight(15.0, 10.0) - 1.0).abs() < 1e-15);
-        assert!(footprint_weight(10.0, 10.0).abs() < 1e-15);
-        assert!((footprint_weight(12.5, 10.0) - 0.5).abs() < 1e-12);
-        assert!((footprint_weight(f64::INFINITY, 1e9) - 1.0).abs() < 1e-15);
+        assert!((footprint_weight(15.0, 10.0) - 1.0).abs() < END_WEIGHT);
+        assert!(footprint_weight(10.0, 10.0).abs() < END_WEIGHT);
+        assert!((footprint_weight(12.5, 10.0) - 0.5).abs() < MID_WEIGHT);
+        assert!((footprint_weight(f64::INFINITY, 1e9) - 1.0).abs() < END_WEIGHT);
     }
+
+    /// The central difference at `h = 10⁻⁵` against `FADE_SLOPE/t` (0.64–0.96 here), relative: its
+    /// truncation `h²|w‴|/6` is ≈ 10⁻¹⁰ (`|w‴| ≲ 6.4` on this grid, whose points stay ≥ 5.8×10⁻⁴
+    /// from the two kinks where `w″` jumps) and its rounding `ε/h` ≈ 2×10⁻¹¹; 10⁻⁶ is a wide margin.
+    const SLOPE_FD_REL: f64 = 1e-6;
+
+    /// The second difference at `h = 10⁻⁵` against `FADE_CURVATURE/t²` (≥ 63/49 ≈ 1.3 here),
+    /// relative: its rounding `4ε/h²` ≈ 9×10⁻⁶ absolute dominates (truncation `h²|w⁗|/12` is far
+    /// smaller); 10⁻³ is a margin of about 100.
+    const CURVATURE_FD_REL: f64 = 1e-3;
+
+    /// The analytic slope against the central difference (per metre): truncation ≈ 10⁻¹⁰ and
+    /// rounding ≈ 2×10⁻¹¹ as for [`SLOPE_FD_REL`]; 10⁻⁶ is a wide margin.
+    const SLOPE_FD_ABS: f64 = 1e-6;
 
     #[test]
     fn slope_and_curvature_bounds_hold_on_a_fine_grid() {
@@ -153,9 +175,9 @@ mod tests {
             let d2 = (footprint_weight(big_t, t + h) - 2.0 * footprint_weight(big_t, t)
                 + footprint_weight(big_t, t - h))
                 / (h * h);
-            assert!(d1.abs() <= FADE_SLOPE / t * (1.0 + 1e-6), "t = {t}: {d1}");
-            assert!(d2.abs() <= FADE_CURVATURE / (t * t) * (1.0 + 1e-3), "t = {t}: {d2}");
-            assert!((footprint_weight_slope(big_t, t) - d1).abs() < 1e-6, "t = {t}");
+            assert!(d1.abs() <= FADE_SLOPE / t * (1.0 + SLOPE_FD_REL), "t = {t}: {d1}");
+            assert!(d2.abs() <= FADE_CURVATURE / (t * t) * (1.0 + CURVATURE_FD_REL), "t = {t}: {d2}");
+            assert!((footprint_weight_slope(big_t, t) - d1).abs() < SLOPE_FD_ABS, "t = {t}");
         }
     }
 }

@@ -116,27 +116,41 @@ pub fn bisect_crossing(
 mod tests {
     use super::*;
 
+    /// The bracket length requested of the refinement, which the test also uses as the bound on
+    /// the error of the root: the returned midpoint is within half of it of a crossing, so the
+    /// other half covers the rounding of the reference root.
+    const CUBIC_TOLERANCE: f64 = 1e-10;
+
     #[test]
     fn finds_the_root_of_a_cubic_to_tolerance() {
         let f = |t: f64| t * t * t - 2.0;
-        let (t, n) = refine_crossing(f, 0.0, f(0.0), 2.0, f(2.0), 1e-10);
-        assert!((t - 2f64.cbrt()).abs() <= 1e-10, "t = {t}");
+        let (t, n) = refine_crossing(f, 0.0, f(0.0), 2.0, f(2.0), CUBIC_TOLERANCE);
+        assert!((t - 2f64.cbrt()).abs() <= CUBIC_TOLERANCE, "t = {t}");
         assert!(n < 80, "{n} evaluations");
     }
+
+    /// The bracket length requested of the bisection and the bound on the error of its midpoint
+    /// (within half of it of the crossing, as for [`CUBIC_TOLERANCE`]); 30 halvings of `[0, 1]`
+    /// reach it.
+    const BISECTION_TOLERANCE: f64 = 1e-9;
 
     #[test]
     fn bisection_halves_to_tolerance() {
         let f = |t: f64| t - 0.3;
-        let (t, n) = bisect_crossing(f, 0.0, -0.3, 1.0, 0.7, 1e-9);
-        assert!((t - 0.3).abs() <= 1e-9);
+        let (t, n) = bisect_crossing(f, 0.0, -0.3, 1.0, 0.7, BISECTION_TOLERANCE);
+        assert!((t - 0.3).abs() <= BISECTION_TOLERANCE);
         assert_eq!(n, 30); // ⌈log₂(10⁹)⌉
     }
+
+    /// The bracket length requested on the step function, and the bound on the distance of the
+    /// result from the jump at 0.3 (the final bracket holds the jump).
+    const STEP_TOLERANCE: f64 = 1e-9;
 
     #[test]
     fn keeps_the_bracket_on_a_step_function() {
         // A discontinuous function still has its sign change located within the tolerance.
         let f = |t: f64| if t < 0.3 { 1.0 } else { -1.0 };
-        let (t, _) = refine_crossing(f, 0.0, 1.0, 1.0, -1.0, 1e-9);
-        assert!((t - 0.3).abs() <= 1e-9);
+        let (t, _) = refine_crossing(f, 0.0, 1.0, 1.0, -1.0, STEP_TOLERANCE);
+        assert!((t - 0.3).abs() <= STEP_TOLERANCE);
     }
 }

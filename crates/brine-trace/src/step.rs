@@ -244,6 +244,19 @@ mod tests {
         }
     }
 
+    /// The Lipschitz step `c/Λ = 2/4` is exact in binary; 10⁻¹⁵ (about 9 ulps of 0.5) only
+    /// allows for rounding.
+    const LIPSCHITZ_STEP_ABS: f64 = 1e-15;
+
+    /// The root `c/|D| = 1/0.1` carries the representation error of 0.1 (relative 5.6×10⁻¹⁷,
+    /// below half an ulp of 10, so it rounds away); 10⁻¹² is a wide rounding allowance.
+    const LINEAR_ROOT_ABS: f64 = 1e-12;
+
+    /// Lower limit of the small-`c` step: Newton's `c/|D|` = 10⁻⁵ less 0.1 %. The certified step
+    /// falls short of Newton's by `≈ K c/(2D²)` = 1.5×10⁻⁴ relative (`c` = 10⁻⁶, `|D|` = 0.1,
+    /// `K` = 3), so the limit is about 7 times that deficit below Newton's step.
+    const NEWTON_STEP_FLOOR: f64 = 0.999e-5;
+
     #[test]
     fn certified_step_reduces_to_lipschitz_and_newton() {
         let lipschitz = StepBound {
@@ -254,13 +267,13 @@ mod tests {
             reserve: 0.0,
             reserve_lipschitz: 0.0,
         };
-        assert!((lipschitz.first_root() - 0.5).abs() < 1e-15);
+        assert!((lipschitz.first_root() - 0.5).abs() < LIPSCHITZ_STEP_ABS);
         // Exact linear function g = 1 − 0.1 s: root 10.
         let linear = StepBound { value: 1.0, slope: -0.1, curvature: 0.0, lipschitz: 1.0, ..lipschitz };
-        assert!((linear.first_root() - 10.0).abs() < 1e-12);
+        assert!((linear.first_root() - 10.0).abs() < LINEAR_ROOT_ABS);
         // Small c: the step approaches Newton's c/|D| from below.
         let newton = StepBound { value: 1e-6, slope: -0.1, curvature: 3.0, lipschitz: 1.0, ..lipschitz };
         let s = newton.first_root();
-        assert!(s < 1e-5 && s > 0.999e-5, "{s}"); // deficit ≈ Kc/(2D²) = 3×10⁻⁴
+        assert!(s < 1e-5 && s > NEWTON_STEP_FLOOR, "{s}");
     }
 }

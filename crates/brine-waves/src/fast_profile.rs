@@ -490,6 +490,11 @@ mod tests {
         }
     }
 
+    /// The same nine-term series in f64, as cosines of multiples of `s` and as monomials of
+    /// `cos s`: rounding only, on values of order 1 (the large monomial coefficients, up to 256 in
+    /// `T₈`, multiply `a₈` ~ 10⁻⁸); 10⁻¹² (about 4500 ulps of 1) is a wide margin.
+    const SERIES_FORMS_ABS: f64 = 1e-12;
+
     #[test]
     fn series_polynomials_equal_the_cosine_series() {
         let (q, m) = (0.08, 8);
@@ -502,9 +507,16 @@ mod tests {
             let slope: f64 = a.iter().enumerate().map(|(n, an)| n as f64 * an * (n as f64 * s).sin()).sum();
             let poly: f64 = (0..9).map(|k| p[k] * c.powi(k as i32)).sum();
             let poly_slope: f64 = sn * (0..8).map(|k| p[9 + k] * c.powi(k as i32)).sum::<f64>();
-            assert!((direct - poly).abs() < 1e-12 && (slope - poly_slope).abs() < 1e-12, "s = {s}");
+            assert!(
+                (direct - poly).abs() < SERIES_FORMS_ABS && (slope - poly_slope).abs() < SERIES_FORMS_ABS,
+                "s = {s}"
+            );
         }
     }
+
+    /// The expansion's `O(Q³)` remainder at `Q = 10⁻³`: 10⁻⁹ = `Q³`; the largest term it
+    /// drops is `−Q³/3` in `a₂` (`a₂ = Q/2 − Q³/3 + …`), 3.3×10⁻¹⁰.
+    const EXPANSION_REMAINDER: f64 = 1e-9;
 
     #[test]
     fn series_matches_its_small_steepness_expansion() {
@@ -513,9 +525,24 @@ mod tests {
         let a = series_coefficients(q, 3);
         let expected = [-q / 2.0, 1.0 - 3.0 * q * q / 8.0, q / 2.0, 3.0 * q * q / 8.0];
         for (x, e) in a.iter().zip(expected) {
-            assert!((x - e).abs() < 1e-9, "{a:?}");
+            assert!((x - e).abs() < EXPANSION_REMAINDER, "{a:?}");
         }
     }
+
+    /// Slack of `|r| ≤ π/4` (rad) for the rounding of `n = round(2s/π)` at a tie. None of the
+    /// phases tested is near one (the nearest, 2.4, is 0.028 of a quarter turn from it), so the
+    /// bound holds with room; at a tie with `|s|` ~ 10⁵ the rounding of `2s/π` could exceed it.
+    const QUADRANT_EDGE: f64 = 1e-12;
+
+    /// `(sin, cos)` of `n π/2 + r_hi + r_lo` against those of `s`: at `|s|` ≤ 7.77×10⁵ the f64
+    /// `r = s − n·FRAC_PI_2` is off by at most half an ulp of `n π/2` (5.8×10⁻¹¹) plus `n` times
+    /// the error of `FRAC_PI_2` (3.0×10⁻¹¹), 8.8×10⁻¹¹ in all (2.7×10⁻¹¹ for −7.77×10⁵); the
+    /// `r_hi + r_lo` split adds ~10⁻¹⁵.
+    const REDUCTION_ABS: f64 = 1e-10;
+
+    /// `sin(s_full)` against `sin s`: `s_full` (`|s_full|` ≤ 5π/4) is stored in f32, half an ulp
+    /// of which is 1.2×10⁻⁷ between 2 and 4; 10⁻⁶ is a margin of 8.
+    const FULL_PHASE_F32: f64 = 1e-6;
 
     #[test]
     fn phase_reduction_is_exact_to_f64_rounding() {
@@ -527,10 +554,11 @@ mod tests {
             let (sr, cr) = r.sin_cos();
             let back_s = sr * f64::from(cq) + cr * f64::from(sq);
             let back_c = cr * f64::from(cq) - sr * f64::from(sq);
-            assert!(r.abs() <= std::f64::consts::FRAC_PI_4 + 1e-12, "{s}");
-            assert!((back_s - ss).abs() < 1e-10 && (back_c - cs).abs() < 1e-10, "{s}");
+            assert!(r.abs() <= std::f64::consts::FRAC_PI_4 + QUADRANT_EDGE, "{s}");
+            assert!((back_s - ss).abs() < REDUCTION_ABS && (back_c - cs).abs() < REDUCTION_ABS, "{s}");
             assert!(
-                (f64::from(full).sin() - ss).abs() < 1e-6 && f64::from(full).abs() <= 1.25 * std::f64::consts::PI,
+                (f64::from(full).sin() - ss).abs() < FULL_PHASE_F32
+                    && f64::from(full).abs() <= 1.25 * std::f64::consts::PI,
                 "{s}"
             );
         }

@@ -892,6 +892,20 @@ mod tests {
     /// about 4·10 m·2⁻⁵² / (10⁻² m)² ≈ 10⁻¹⁰ m⁻¹, with margin.
     const SECOND_DIFFERENCE_ROUNDING: f64 = 1e-8;
 
+    /// Relative slack of `|ΔT| ≤ L Δt` between two samples: the f64 rounding of `L Δt` and of the
+    /// sums that form `L`, a few ulps; 10⁻¹² is a wide margin.
+    const LIPSCHITZ_ROUNDING_REL: f64 = 1e-12;
+
+    /// Relative slack of the curvature and concavity checks (`|ΔT′|/dt ≤ K`, second difference
+    /// `≥ −C`), which hold exactly by the mean value theorem once the f32 errors are added: the
+    /// bounds' fade terms use the f32-rounded amplitudes (6×10⁻⁸ relative) and f64 sums. 10⁻⁶ is
+    /// a margin over these, not a measured error.
+    const BOUND_ROUNDING_REL: f64 = 1e-6;
+
+    /// Absolute slack of `|ΔT′|/dt` (m⁻¹) for the f64 rounding of the slope difference over
+    /// `dt` = 10⁻³ m: about ulp(`L`)/`dt` ≈ 2×10⁻¹³ `L`; 10⁻⁹ covers it for any `L` below 10³.
+    const SLOPE_DIFFERENCE_ROUNDING: f64 = 1e-9;
+
     proptest! {
         #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
 
@@ -930,12 +944,12 @@ mod tests {
                         // The value itself between samples, not only the reported slope: each f32
                         // sample is within ε of the exact tier, which is L-Lipschitz on [t0, t_exit].
                         if let Some((tp, vp)) = previous {
-                            prop_assert!((s.value - vp).abs() <= b.lipschitz * (t - tp) * (1.0 + 1e-12) + 2.0 * eps, "tier {j} t {t}: |Δvalue| {} > L Δt {}", (s.value - vp).abs(), b.lipschitz * (t - tp));
+                            prop_assert!((s.value - vp).abs() <= b.lipschitz * (t - tp) * (1.0 + LIPSCHITZ_ROUNDING_REL) + 2.0 * eps, "tier {j} t {t}: |Δvalue| {} > L Δt {}", (s.value - vp).abs(), b.lipschitz * (t - tp));
                         }
                         let s2 = tiers.sample(j, t + dt);
                         // Finite difference of the slope, with the f32 slope error over dt.
                         let second = (s2.slope - s.slope) / dt;
-                        prop_assert!(second.abs() <= b.curvature * (1.0 + 1e-6) + 2.0 * eta / dt + 1e-9, "tier {j} t {t}: curvature {second} > {}", b.curvature);
+                        prop_assert!(second.abs() <= b.curvature * (1.0 + BOUND_ROUNDING_REL) + 2.0 * eta / dt + SLOPE_DIFFERENCE_ROUNDING, "tier {j} t {t}: curvature {second} > {}", b.curvature);
                         let exact = exact_tier(&sea, tiers.state, &ray, j, t);
                         prop_assert!((s.value - exact).abs() <= eps, "tier {j} t {t}: f32 {} vs f64 {exact} (ε = {eps:e})", s.value);
                         // One-sided: the second difference of the exact tier (a weighted mean of
@@ -944,13 +958,27 @@ mod tests {
                         let (e1, e2) = (exact_tier(&sea, tiers.state, &ray, j, t + h2), exact_tier(&sea, tiers.state, &ray, j, t + 2.0 * h2));
                         let second_exact = (e2 - 2.0 * e1 + exact) / (h2 * h2);
                         prop_assert!(b.concavity <= b.curvature, "tier {j}: concavity {} > curvature {}", b.concavity, b.curvature);
-                        prop_assert!(second_exact >= -b.concavity * (1.0 + 1e-6) - SECOND_DIFFERENCE_ROUNDING, "tier {j} t {t}: T'' {second_exact} < −{}", b.concavity);
+                        prop_assert!(second_exact >= -b.concavity * (1.0 + BOUND_ROUNDING_REL) - SECOND_DIFFERENCE_ROUNDING, "tier {j} t {t}: T'' {second_exact} < −{}", b.concavity);
                         previous = Some((t, s.value));
                     }
                 }
             }
         }
     }
+
+    /// The f32 gradient against the f64 one, relative to the slope sum `Σ Lᵢ` (at most the
+    /// largest possible slope): per wave the f32 slope error `PROFILE_ERROR·(1 + 1/(1 − Q)²)` in
+    /// units of `kA` is at most 2.9×10⁻⁶ of its `Lᵢ = kA/√(1 − Q²)` for `Q ≤ 0.6` (this set);
+    /// 10⁻⁵ leaves room for the f32 amplitudes and sums.
+    const F32_GRADIENT_REL: f64 = 1e-5;
+
+    /// At 1 m a footprint of 2 mrad is far below every wave, so no wave should have faded and the
+    /// lost covariance should be exactly 0; 10⁻¹² accepts rounding residue only.
+    const NOTHING_FADED: f64 = 1e-12;
+
+    /// At 1000 km every wave has faded: the lost covariance's trace is `Σ mssᵢ (d_x² + d_z²)` with
+    /// unit `d` in f64, against `Σ mssᵢ`: rounding of 80 terms, ~10⁻¹⁴ relative; 10⁻⁹ is loose.
+    const ALL_FADED_REL: f64 = 1e-9;
 
     #[test]
     fn faded_gradient_matches_the_f64_gradient_and_fades() {
@@ -962,25 +990,26 @@ mod tests {
         for i in 0..200 {
             let (x, z) = (i as f64 * 2.37 - 200.0, i as f64 * -0.71 + 40.0);
             let (fast, reference) = (sea.faded_gradient(x, z, d, 0.0, 10.0), exact.gradient(x, z));
-            // f32 kernel: relative 10⁻⁵ of the slope sum Σ Lᵢ (at most the largest possible slope).
             let scale: f64 = set.waves().iter().map(Trochoid::max_slope).sum();
-            assert!((fast - reference).length() <= 1e-5 * scale, "{fast} vs {reference}");
+            assert!((fast - reference).length() <= F32_GRADIENT_REL * scale, "{fast} vs {reference}");
         }
         // Far away every short wave has faded: the gradient loses them and the covariance gains them.
         let near = sea.faded_slope_covariance(d, 0.002, 1.0);
         let far = sea.faded_slope_covariance(d, 0.002, 1e6);
-        assert!(near.x.abs() < 1e-12 && far.x > 0.0 && far.z > 0.0);
+        assert!(near.x.abs() < NOTHING_FADED && far.x > 0.0 && far.z > 0.0);
         let total: f64 = set.waves().iter().map(Trochoid::mean_square_slope).sum();
-        assert!(((far.x + far.z) - total).abs() < 1e-9 * total, "all waves faded at 1000 km");
+        assert!(((far.x + far.z) - total).abs() < ALL_FADED_REL * total, "all waves faded at 1000 km");
     }
+
+    /// The one-pass covariance against the wave-by-wave one: the same terms summed in another
+    /// order, rounding of a sum of ≤ 80 positive terms.
+    const ORDER_ROUNDING: f64 = 1e-13;
 
     /// The one-pass covariance equals the wave-by-wave one of `faded_slope_covariance` (set
     /// order, weights from `fade_weight`) at distances where the waves fade one after the other;
     /// the gradient of the one pass is tested against the f64 surface above.
     #[test]
     fn fused_covariance_equals_the_wave_by_wave_one() {
-        // The same terms summed in another order: rounding of a sum of ≤ 80 positive terms.
-        const ORDER_ROUNDING: f64 = 1e-13;
         let set = set(80, 0.6, 9);
         let sea = TracedTrochoids::new(&set, 0.7);
         let d = DVec3::new(0.6, -0.08, -0.8).normalize();

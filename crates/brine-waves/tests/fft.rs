@@ -331,6 +331,13 @@ fn a_finer_grid_keeps_the_large_waves() {
     }
 }
 
+/// Least anticorrelation `−Σ ∂h/∂t · ∂h/∂s / Σ |∂h/∂t| |∂h/∂s|` of the height's rate with the
+/// slope along the wind: deep-water waves around the peak under a narrow spreading (`s = 40`)
+/// carry nearly all their energy within ±20° of the wind, and a single wave travelling down-wind
+/// gives exactly 1 (its `∂h/∂t` and `∂h/∂s` are in antiphase everywhere).
+/// Measured on this test's three wind directions: 0.9963–0.9977; 0.8 is a loose floor.
+const WIND_ANTICORRELATION: f64 = 0.8;
+
 #[test]
 fn waves_travel_with_the_wind() {
     // A narrow down-wind spreading: ∂h/∂t = −c ∂h/∂s along the travel direction s, so the
@@ -351,8 +358,7 @@ fn waves_travel_with_the_wind() {
             corr += dhdt * along;
             norm += dhdt.abs() * along.abs();
         }
-        // Deep-water waves around the peak: nearly all energy within ±20° of the wind.
-        assert!(corr < -0.8 * norm, "wind {wind}: correlation {}", corr / norm);
+        assert!(corr < -WIND_ANTICORRELATION * norm, "wind {wind}: correlation {}", corr / norm);
     }
 }
 

@@ -693,6 +693,10 @@ mod tests {
         assert!((st.variance() - expected).abs() < ULPS);
     }
 
+    /// The precondition `Σ Qᵢ ≤ 1` of [`F32_MOMENTS_ERROR`], up to the rounding of a sum of 100
+    /// steepnesses (the fit caps the sum at 0.9 by default, so it holds with room).
+    const STEEPNESS_SUM_ROUNDING: f64 = 1e-12;
+
     /// The f32 route against the f64 one on the fitted sea of `simd_moments_match_the_scalar_ones`.
     #[test]
     fn f32_moments_match_the_f64_ones() {
@@ -702,7 +706,7 @@ mod tests {
         let set =
             fit_trochoids(&pm, &spreading, 100, 4, &FitOptions { choppiness: 2.5, ..FitOptions::default() }).unwrap();
         let st = JacobianStatistics::new(&set).unwrap();
-        assert!(st.total_steepness() <= 1.0 + 1e-12);
+        assert!(st.total_steepness() <= 1.0 + STEEPNESS_SUM_ROUNDING);
         let mut worst = 0.0f64;
         for i in 0..300 {
             let u = DVec2::new(i as f64 * 37.1 - 3000.0, 1200.0 - i as f64 * 11.3);
