@@ -281,32 +281,9 @@ proptest! {
 /// first cones certify past the crossing (measured: this test fails).
 #[test]
 fn a_cone_holds_a_cascade_that_fades_at_a_trough() {
-    let elf = Elfouhaily::from_fetch(12.0, 2e4).unwrap();
-    let spreading = elf.spreading(Directions::Downwind);
     let mut checked = 0;
     for (seed, tile) in [(5, 11.7), (6, 1.7), (7, 80.0)] {
-        let o = FftOptions {
-            resolution: 64,
-            tile_sizes: vec![tile],
-            choppiness: 0.0,
-            loop_period: None,
-            seed,
-            wind_direction: 0.3,
-        };
-        let frame = FftOcean::new(&elf, &spreading, &o).unwrap().at_time(1.0);
-        let cascade = &frame.cascades()[0];
-        // The deepest point of a 128² grid over the tile.
-        let (mut p0, mut h0) = ((0.0, 0.0), f64::INFINITY);
-        for j in 0..128 {
-            for i in 0..128 {
-                let (x, z) = (tile * f64::from(i) / 128.0, tile * f64::from(j) / 128.0);
-                let h = cascade.height(x, z);
-                if h < h0 {
-                    (p0, h0) = ((x, z), h);
-                }
-            }
-        }
-        assert!(h0 < 0.0);
+        let (frame, p0, h0) = trough_frame(seed, tile);
         for (dip, azimuth, footprint) in [(0.4, 0.0, 0.02), (0.7, 2.0, 0.02), (0.25, -1.0, 0.05), (1.0, 4.0, 0.01)] {
             let d = DVec3::new(f64::cos(dip) * f64::cos(azimuth), -f64::sin(dip), f64::cos(dip) * f64::sin(azimuth));
             let t_star = frame.component_fade_distance(1, d, footprint) / 1.1;
@@ -326,18 +303,15 @@ fn a_cone_holds_a_cascade_that_fades_at_a_trough() {
                 }
                 let half_angle = 1e-3;
                 let t_c = frame.certify_cone(&ray, half_angle, t_enter, opts.t_max, &opts, &mut TraceStats::default());
-                for k in 0..8 {
-                    let r = Ray::new(ray.origin(), tilt(d, half_angle * f64::from(k % 4) / 3.0, 0.9 * f64::from(k)))
-                        .unwrap();
-                    for j in 0..=2000 {
-                        let t = t_enter + (t_c - t_enter) * f64::from(j) / 2000.0;
-                        let f = f_along(&frame, &r, footprint, t);
-                        assert!(
-                            f > -AT_ROOT_ABS,
-                            "tile {tile}, dip {dip}, t_enter {t_enter}: ray {k} crosses at t = {t} < t_c = {t_c} (F = {f})"
-                        );
-                    }
-                }
+                assert_cone_rays_clear(
+                    &frame,
+                    &ray,
+                    half_angle,
+                    footprint,
+                    t_enter,
+                    t_c,
+                    &format!("tile {tile}, dip {dip}"),
+                );
                 checked += 1;
             }
         }
@@ -356,31 +330,10 @@ fn a_cone_holds_a_cascade_that_fades_at_a_trough() {
 /// tile, dip 0.02, azimuth 45°).
 #[test]
 fn a_cone_stops_at_its_reach_before_a_cascade_fades() {
-    let elf = Elfouhaily::from_fetch(12.0, 2e4).unwrap();
-    let spreading = elf.spreading(Directions::Downwind);
     let mut checked = 0;
     for (seed, tile) in [(5, 80.0), (6, 11.7), (7, 1.7)] {
-        let o = FftOptions {
-            resolution: 64,
-            tile_sizes: vec![tile],
-            choppiness: 0.0,
-            loop_period: None,
-            seed,
-            wind_direction: 0.3,
-        };
-        let frame = FftOcean::new(&elf, &spreading, &o).unwrap().at_time(1.0);
-        let cascade = &frame.cascades()[0];
+        let (frame, p0, h0) = trough_frame(seed, tile);
         let top = frame.height_bounds().1;
-        let (mut p0, mut h0) = ((0.0, 0.0), f64::INFINITY);
-        for j in 0..128 {
-            for i in 0..128 {
-                let (x, z) = (tile * f64::from(i) / 128.0, tile * f64::from(j) / 128.0);
-                let h = cascade.height(x, z);
-                if h < h0 {
-                    (p0, h0) = ((x, z), h);
-                }
-            }
-        }
         for footprint in [0.05, 0.2] {
             for dip in [0.005f64, 0.01, 0.02, 0.04] {
                 for a in 0..24 {
@@ -410,23 +363,63 @@ fn a_cone_stops_at_its_reach_before_a_cascade_fades() {
                     let half_angle = 1e-4;
                     let t_c =
                         frame.certify_cone(&ray, half_angle, t_enter, opts.t_max, &opts, &mut TraceStats::default());
-                    for k in 0..8 {
-                        let r =
-                            Ray::new(ray.origin(), tilt(d, half_angle * f64::from(k % 4) / 3.0, 0.9 * f64::from(k)))
-                                .unwrap();
-                        for j in 0..=2000 {
-                            let t = t_enter + (t_c - t_enter) * f64::from(j) / 2000.0;
-                            let f = f_along(&frame, &r, footprint, t);
-                            assert!(
-                                f > -AT_ROOT_ABS,
-                                "tile {tile}, dip {dip}, azimuth {azimuth}: ray {k} crosses at t = {t} < t_c = {t_c}"
-                            );
-                        }
-                    }
+                    let what = format!("tile {tile}, dip {dip}, azimuth {azimuth}");
+                    assert_cone_rays_clear(&frame, &ray, half_angle, footprint, t_enter, t_c, &what);
                     checked += 1;
                 }
             }
         }
     }
     assert!(checked >= 100, "only {checked} cones started above the surface before their reach");
+}
+
+/// A single-cascade frame (64², no choppiness) of a `tile` m tile, with the deepest point of a
+/// 128² grid over it and its height (m, negative).
+fn trough_frame(seed: u64, tile: f64) -> (FftFrame, (f64, f64), f64) {
+    let elf = Elfouhaily::from_fetch(12.0, 2e4).unwrap();
+    let spreading = elf.spreading(Directions::Downwind);
+    let o = FftOptions {
+        resolution: 64,
+        tile_sizes: vec![tile],
+        choppiness: 0.0,
+        loop_period: None,
+        seed,
+        wind_direction: 0.3,
+    };
+    let frame = FftOcean::new(&elf, &spreading, &o).unwrap().at_time(1.0);
+    let cascade = &frame.cascades()[0];
+    let (mut p0, mut h0) = ((0.0, 0.0), f64::INFINITY);
+    for j in 0..128 {
+        for i in 0..128 {
+            let (x, z) = (tile * f64::from(i) / 128.0, tile * f64::from(j) / 128.0);
+            let h = cascade.height(x, z);
+            if h < h0 {
+                (p0, h0) = ((x, z), h);
+            }
+        }
+    }
+    assert!(h0 < 0.0, "tile {tile}: no trough below sea level");
+    (frame, p0, h0)
+}
+
+/// No ray of the cone of `half_angle` rad around `axis` (the axis and seven rays up to the rim)
+/// crosses its own faded surface on `[t_enter, t_c]` (2001 samples each).
+fn assert_cone_rays_clear(
+    frame: &FftFrame,
+    axis: &Ray,
+    half_angle: f64,
+    footprint: f64,
+    t_enter: f64,
+    t_c: f64,
+    what: &str,
+) {
+    for k in 0..8 {
+        let d = tilt(axis.direction(), half_angle * f64::from(k % 4) / 3.0, 0.9 * f64::from(k));
+        let r = Ray::new(axis.origin(), d).unwrap();
+        for j in 0..=2000 {
+            let t = t_enter + (t_c - t_enter) * f64::from(j) / 2000.0;
+            let f = f_along(frame, &r, footprint, t);
+            assert!(f > -AT_ROOT_ABS, "{what}, t_enter {t_enter}: ray {k} crosses at t = {t} < t_c = {t_c} (F = {f})");
+        }
+    }
 }
