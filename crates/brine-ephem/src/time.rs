@@ -13,15 +13,16 @@ const JD_UNIX_EPOCH: f64 = 2_440_587.5;
 /// Julian date of Schlyter's day 0, 1999-12-31 00:00 UT ("2000 Jan 0.0").
 const JD_SCHLYTER_EPOCH: f64 = 2_451_543.5;
 
-/// Earliest and latest instants accepted: 1800-01-01 and 2200-01-01 UTC (Unix seconds). Outside,
-/// Schlyter's linear elements and the ΔT estimate lose their meaning.
-const VALID_UNIX_SECONDS: (i64, i64) = (-5_364_662_400, 7_258_118_400);
+/// The instants accepted, the years 1800 to 2200 inclusive: from 1800-01-01 00:00 UTC up to, not
+/// including, 2201-01-01 00:00 UTC (Unix seconds). Outside, Schlyter's linear elements and the ΔT
+/// estimate lose their meaning.
+const VALID_UNIX_SECONDS: (i64, i64) = (-5_364_662_400, 7_289_654_400);
 
 /// Parses an ISO 8601 / RFC 3339 UTC instant such as `2024-06-21T12:00:00Z` (an offset such as
 /// `+02:00` is also accepted and converted to UTC).
 ///
 /// # Arguments
-/// - `text`: the instant; must lie in 1800-01-01 .. 2200-01-01 UTC.
+/// - `text`: the instant; must lie in the years 1800–2200 (UTC), both included.
 ///
 /// # Returns
 /// The instant as a [`Timestamp`].
@@ -40,7 +41,7 @@ pub fn parse_utc(text: &str) -> Result<Timestamp, EphemError> {
     Ok(t)
 }
 
-/// Checks that `t` lies in the supported range, 1800-01-01 .. 2200-01-01 UTC.
+/// Checks that `t` lies in the supported range, the years 1800–2200 (UTC), both included.
 ///
 /// # Arguments
 /// - `t`: the instant.
@@ -55,7 +56,7 @@ pub fn check_range(t: Timestamp) -> Result<Timestamp, EphemError> {
     if s < VALID_UNIX_SECONDS.0 || s >= VALID_UNIX_SECONDS.1 {
         return Err(EphemError::Time {
             input: t.to_string(),
-            message: "outside the supported years 1800..2200".to_string(),
+            message: "outside the supported years 1800–2200".to_string(),
         });
     }
     Ok(t)

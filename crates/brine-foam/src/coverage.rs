@@ -23,6 +23,10 @@ pub const MAX_WIND_M_S: f64 = 60.0;
 /// clamped, so a wrong input cannot pass silently.
 pub const MAX_ABS_DELTA_T_C: f64 = 30.0;
 
+/// Room for the rounding of a difference of two temperatures given in decimals (°C): far below
+/// any physical meaning, far above the f64 rounding of values within ±60 °C (about 10⁻¹⁴).
+const DECIMAL_ROUNDING_C: f64 = 1e-9;
+
 /// Checks `ΔT` against [`MAX_ABS_DELTA_T_C`].
 fn check_delta_t(delta_t_c: f64) -> Result<f64, FoamError> {
     check(
@@ -74,7 +78,8 @@ impl WhitecapLaw {
     /// Their difference `ΔT = t_water_c − t_air_c` (°C) must also lie in `[−30, 30]`.
     ///
     /// # Returns
-    /// [`WhitecapLaw::Monahan1986Stability`] with `delta_t_c = t_water_c − t_air_c` exactly (°C).
+    /// [`WhitecapLaw::Monahan1986Stability`] with `delta_t_c = t_water_c − t_air_c` (°C), exactly
+    /// but for a difference within 10⁻⁹ °C of ±30 (the rounding of decimal inputs), which is ±30.
     ///
     /// # Errors
     /// [`FoamError::OutOfRange`] naming `t_water_c` or `t_air_c` outside its range, or
@@ -87,7 +92,16 @@ impl WhitecapLaw {
     pub fn monahan_1986_from_temperatures(t_water_c: f64, t_air_c: f64) -> Result<Self, FoamError> {
         let t_water_c = check("t_water_c", t_water_c, (-2.0..=40.0).contains(&t_water_c), "[-2, 40] °C")?;
         let t_air_c = check("t_air_c", t_air_c, (-60.0..=60.0).contains(&t_air_c), "[-60, 60] °C")?;
-        let delta_t_c = check_delta_t(t_water_c - t_air_c)?;
+        // Two temperatures written with a few decimals differ by their rounding as well
+        // (12.7 − 42.7 = −30.000000000000004): a difference within DECIMAL_ROUNDING_C of the
+        // envelope is the envelope.
+        let raw = t_water_c - t_air_c;
+        let delta_t_c = if raw.abs() <= MAX_ABS_DELTA_T_C + DECIMAL_ROUNDING_C {
+            raw.clamp(-MAX_ABS_DELTA_T_C, MAX_ABS_DELTA_T_C)
+        } else {
+            raw
+        };
+        let delta_t_c = check_delta_t(delta_t_c)?;
         Ok(Self::Monahan1986Stability { delta_t_c })
     }
 
@@ -200,6 +214,17 @@ mod tests {
         assert!(cover(0.0, WhitecapLaw::Monahan1980).abs() < f64::MIN_POSITIVE);
         assert!(cover(3.6, WhitecapLaw::Monahan1980).abs() < f64::MIN_POSITIVE);
         assert!(cover(3.62, WhitecapLaw::Monahan1980) > 0.0);
+    }
+
+    #[test]
+    fn a_difference_of_thirty_degrees_written_in_decimals_is_accepted() {
+        // 12.7 − 42.7 rounds to −30.000000000000004 in f64; it is the envelope's end, not past it.
+        let law = WhitecapLaw::monahan_1986_from_temperatures(12.7, 42.7).unwrap();
+        assert_eq!(law, WhitecapLaw::Monahan1986Stability { delta_t_c: -30.0 });
+        let law = WhitecapLaw::monahan_1986_from_temperatures(32.2, 2.2).unwrap();
+        assert_eq!(law, WhitecapLaw::Monahan1986Stability { delta_t_c: 30.0 });
+        // A real step past it is still refused.
+        assert!(WhitecapLaw::monahan_1986_from_temperatures(12.7, 42.8).is_err());
     }
 
     #[test]

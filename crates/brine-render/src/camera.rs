@@ -42,7 +42,10 @@ impl Camera {
         let position = DVec3::from_array(c.position);
         let forward = match c.look_at {
             Some(t) => (DVec3::from_array(t) - position).normalize(),
-            None => direction_from_bearing(c.yaw_deg.unwrap_or(0.0), c.pitch_deg.unwrap_or(0.0)),
+            None => direction_from_bearing(
+                c.yaw_deg.unwrap_or(crate::Scene::DEFAULT_YAW_DEG),
+                c.pitch_deg.unwrap_or(crate::Scene::DEFAULT_PITCH_DEG),
+            ),
         };
         // Looking straight up or down: pick north as the image's up.
         let world_up = if forward.cross(DVec3::Y).length_squared() < 1e-12 { DVec3::NEG_Z } else { DVec3::Y };

@@ -110,6 +110,8 @@ fn write_with_aovs(
     // before the umask).
     #[cfg(unix)]
     builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
+    // Registered before the temporary exists, so that a signal at any moment finds it.
+    let _guard = InProgress::register(path);
     let mut tmp = builder.tempfile_in(dir).map_err(io)?;
     match format {
         OutputFormat::Png => {
@@ -158,6 +160,115 @@ fn write_with_aovs(
 }
 
 use image::ImageEncoder as _;
+
+/// Outputs being written: on a signal, their temporaries are removed
+/// ([`remove_temporaries_on_signal`]).
+static IN_PROGRESS: std::sync::Mutex<Vec<std::path::PathBuf>> = std::sync::Mutex::new(Vec::new());
+
+/// An output registered as being written, from before its temporary file is made until after it
+/// is renamed into place.
+struct InProgress(std::path::PathBuf);
+
+impl InProgress {
+    fn register(path: &Path) -> Self {
+        IN_PROGRESS.lock().unwrap_or_else(std::sync::PoisonError::into_inner).push(path.to_path_buf());
+        Self(path.to_path_buf())
+    }
+}
+
+impl Drop for InProgress {
+    fn drop(&mut self) {
+        let mut list = IN_PROGRESS.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        list.retain(|p| p != &self.0);
+    }
+}
+
+/// Installs a SIGINT/SIGTERM (Ctrl-C) handler that removes the temporary files being written and
+/// ends the process with exit code 130, so that an interrupted render leaves no temporary file
+/// (an existing output is never touched: it is replaced only by a complete file's rename).
+/// SIGKILL cannot be caught; `--resume` removes what it leaves ([`remove_stale_temporaries`]).
+///
+/// # Errors
+/// A message if a handler cannot be installed (one is already installed, for instance).
+pub fn remove_temporaries_on_signal() -> Result<(), String> {
+    ctrlc::set_handler(|| {
+        let list = IN_PROGRESS.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        for p in list.iter() {
+            remove_stale_temporaries(p);
+        }
+        eprintln!("\ninterrupted: no partial output was left");
+        std::process::exit(130);
+    })
+    .map_err(|e| format!("cannot install the signal handler: {e}"))
+}
+
+/// Checks, before a long render, that `path` can be written: not a folder, in an existing folder
+/// where a file can be created (a trial temporary file, removed at once).
+///
+/// # Errors
+/// A message naming the path and the cause.
+pub fn check_writable(path: &Path) -> Result<(), String> {
+    let shown = path.display();
+    if path.is_dir() {
+        return Err(format!("cannot write {shown}: it is a folder (give a file name ending in .png or .exr)"));
+    }
+    let dir = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    if !dir.is_dir() {
+        return Err(format!("cannot write {shown}: folder {} does not exist", dir.display()));
+    }
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("image");
+    tempfile::Builder::new()
+        .prefix(&format!(".{name}."))
+        .suffix(".tmp")
+        .tempfile_in(dir)
+        .map(drop)
+        .map_err(|e| format!("cannot write {shown}: cannot create a file in {}: {e}", dir.display()))
+}
+
+/// Whether `path` holds a complete image of its format (PNG or EXR), decoded to the last pixel:
+/// what `--resume` asks of a frame before it skips it.
+pub fn decodes_completely(path: &Path) -> bool {
+    match OutputFormat::from_path(path) {
+        Ok(OutputFormat::Png) => image::ImageReader::open(path)
+            .ok()
+            .and_then(|r| r.with_guessed_format().ok())
+            .is_some_and(|r| r.decode().is_ok()),
+        Ok(OutputFormat::Exr) => exr::prelude::read_all_data_from_file(path).is_ok(),
+        Err(_) => false,
+    }
+}
+
+/// Removes the temporary files that an interrupted write of `path` left beside it
+/// (`.NAME.XXXXXX.tmp`, the names [`write_image`] uses), e.g. after a SIGKILL.
+///
+/// # Returns
+/// How many were removed.
+pub fn remove_stale_temporaries(path: &Path) -> usize {
+    let dir = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    let Some(name) = path.file_name().and_then(|n| n.to_str()) else { return 0 };
+    let prefix = format!(".{name}.");
+    let Ok(entries) = std::fs::read_dir(dir) else { return 0 };
+    let mut removed = 0;
+    for e in entries.flatten() {
+        let file = e.file_name();
+        let Some(f) = file.to_str() else { continue };
+        // tempfile's random part: six alphanumeric characters between the prefix and ".tmp".
+        let is_ours = f
+            .strip_prefix(&prefix)
+            .and_then(|r| r.strip_suffix(".tmp"))
+            .is_some_and(|mid| mid.len() == 6 && mid.bytes().all(|b| b.is_ascii_alphanumeric()));
+        if is_ours && std::fs::remove_file(e.path()).is_ok() {
+            removed += 1;
+        }
+    }
+    removed
+}
 
 #[cfg(test)]
 mod tests {

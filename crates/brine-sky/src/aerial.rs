@@ -114,10 +114,25 @@ pub fn henyey_greenstein(cos_theta: f64, g: f64) -> f64 {
 /// Preetham et al. 1999, Appendix A.3 (flat exponential atmosphere); equation sheet §8.
 pub fn optical_depth(beta0: f64, scale_height_m: f64, height_m: f64, cos_theta: f64, length_m: f64) -> f64 {
     let x = length_m * cos_theta / scale_height_m;
-    // (1 − e^{−x})/x, stable for small |x|.
-    let f = if x.abs() < 1e-8 { 1.0 - 0.5 * x } else { -(-x).exp_m1() / x };
-    beta0 * (-height_m / scale_height_m).exp() * length_m * f
+    let above = -height_m / scale_height_m;
+    if x.abs() < 1e-8 {
+        // (1 − e^{−x})/x → 1 − x/2 for small |x|.
+        beta0 * above.exp() * length_m * (1.0 - 0.5 * x)
+    } else if x > 0.0 {
+        // Upward: e^{−x} ≤ 1, no overflow.
+        beta0 * above.exp() * length_m * (-(-x).exp_m1() / x)
+    } else {
+        // Downward: e^{−αh₀}(e^{|x|} − 1) = e^{−αh₁} − e^{−αh₀} with h₁ = h₀ + s cos θ the end's
+        // height. Written so, an eye far above the air (e^{−αh₀} underflowing to 0 while e^{|x|}
+        // overflows) gives the finite depth of the air below instead of 0 × ∞. The exponent is
+        // capped where e^{…} would overflow (an end hundreds of kilometres below sea level).
+        let end = (above - x).min(EXP_MAX_ARGUMENT);
+        beta0 * length_m * (end.exp() - above.exp()) / -x
+    }
 }
+
+/// Largest argument of `exp` that stays finite in f64 (`ln(f64::MAX)` ≈ 709.78, rounded down).
+const EXP_MAX_ARGUMENT: f64 = 709.0;
 
 /// Extinction and in-scattering of a segment of air.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -242,7 +257,7 @@ impl Scattering {
         let extinction = (-tau).exp();
         let one_minus = DVec3::ONE - extinction;
         let mut source = ambient;
-        if tau.min_element() > 0.0 {
+        if tau.min_element() > 0.0 && tau.is_finite() {
             for &(l, e) in lights {
                 let c = direction.dot(l).clamp(-1.0, 1.0);
                 let phase = (tr * rayleigh_phase(c) + tm * henyey_greenstein(c, HAZE_ASYMMETRY)) / tau;
@@ -270,6 +285,8 @@ mod tests {
     /// The optical depth at cos θ = 10⁻⁹ against the horizontal limit: the first-order term
     /// `α s cos θ/2` is 2×10⁻⁵ × 10⁻⁹ here; 10⁻⁶ leaves rounding room.
     const GRAZING_LIMIT: f64 = 1e-6;
+    /// Depths at cos θ = ±10⁻⁶ over 50 km (|x| = 4.2×10⁻⁵) differ by about |x| to first order.
+    const ACROSS_HORIZONTAL: f64 = 1e-4;
 
     #[test]
     fn coefficient_oracles() {
@@ -305,6 +322,28 @@ mod tests {
         let a = optical_depth(1e-5, 1200.0, 10.0, 1e-9, 5e4);
         let b = optical_depth(1e-5, 1200.0, 10.0, 0.0, 5e4);
         assert_relative_eq!(a, b, max_relative = GRAZING_LIMIT);
+    }
+
+    #[test]
+    fn an_eye_far_above_the_air_sees_the_air_below_it() {
+        // From 900 km down to the sea at 23.7° below the horizon: the whole column of air below
+        // the eye, τ = β₀ H (1 − e^{−h₀/H})/sin(23.7°) → β₀ H / sin(23.7°), not 0 × ∞ = NaN.
+        let h0 = 9e5;
+        let sin_dip = 23.7f64.to_radians().sin();
+        let s = h0 / sin_dip;
+        for scale in [8803.0, 1200.0] {
+            let t = optical_depth(1e-5, scale, h0, -sin_dip, s);
+            assert_relative_eq!(t, 1e-5 * scale / sin_dip, max_relative = ROUNDING);
+        }
+        // And the downward branch agrees with the small-|x| and upward forms where they meet.
+        let a = optical_depth(1e-5, 1200.0, 10.0, -1e-6, 5e4);
+        let b = optical_depth(1e-5, 1200.0, 10.0, 1e-6, 5e4);
+        assert_relative_eq!(a, b, max_relative = ACROSS_HORIZONTAL);
+        let sc = Scattering::new(3.0).unwrap();
+        let d = DVec3::new(0.0, -sin_dip, (1.0 - sin_dip * sin_dip).sqrt());
+        let ap = sc.aerial_perspective(h0, d, s, &[(DVec3::Y, DVec3::splat(100.0))], DVec3::splat(1.0));
+        assert!(ap.extinction.is_finite() && ap.inscatter.is_finite(), "{ap:?}");
+        assert!(ap.extinction.min_element() > 0.0 && ap.extinction.max_element() < 1.0, "{ap:?}");
     }
 
     #[test]

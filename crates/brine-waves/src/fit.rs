@@ -311,7 +311,8 @@ impl std::fmt::Debug for SeaComponent<'_> {
 /// change the sea's waves (only, through the cap, their steepness).
 ///
 /// # Arguments
-/// - `components`: the spectra, at least one, at most 10 000 waves in all.
+/// - `components`: the spectra, at least one, at most 11 000 waves in all (a wind sea of
+///   10 000 and swells of up to 1 000).
 /// - `seed`: random seed.
 /// - `max_total_steepness`: cap on `Σ Qᵢ` over the whole set, `(0, 0.99]`.
 /// - `limit`: what to do above the cap.
@@ -334,7 +335,7 @@ pub fn fit_sea_state(
         "(0, 0.99]",
     )?;
     let total_waves: usize = components.iter().map(|c| c.n_waves).sum();
-    check("n_waves", total_waves as f64, (1..=10_000).contains(&total_waves), "[1, 10000] in all")?;
+    check("n_waves", total_waves as f64, (1..=MAX_TOTAL_WAVES).contains(&total_waves), "[1, 11000] in all")?;
     let mut raw = Vec::with_capacity(total_waves);
     for (j, c) in components.iter().enumerate() {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
@@ -367,6 +368,9 @@ pub fn fit_sea_state(
         .collect::<Result<Vec<_>, _>>()?;
     Ok(TrochoidSet::new(waves))
 }
+
+/// Most waves a fitted set may hold in all: a wind sea of 10 000 waves and swells of up to 1 000.
+const MAX_TOTAL_WAVES: usize = 11_000;
 
 /// A wave before the steepness cap.
 struct RawWave {

@@ -57,14 +57,14 @@ impl Jonswap {
     ///
     /// # Arguments
     /// - `u10`: wind speed 10 m above the sea (m s⁻¹), `(0, 60]`.
-    /// - `fetch_m`: fetch `F` (m), `(0, 10⁷]`; clamped to `X̃ = gF/U₁₀² ≤ 1.70×10⁴` (fully
+    /// - `fetch_m`: fetch `F` (m), `(0, 10⁸]`; clamped to `X̃ = gF/U₁₀² ≤ 1.70×10⁴` (fully
     ///   developed sea, see the type's docs).
     ///
     /// # Errors
     /// [`WaveError::OutOfRange`] naming the first parameter outside its range.
     pub fn from_fetch(u10: f64, fetch_m: f64) -> Result<Self, WaveError> {
         let u10 = check("u10_m_s", u10, u10 > 0.0 && u10 <= 60.0, "(0, 60] m/s")?;
-        let fetch = check("fetch_m", fetch_m, fetch_m > 0.0 && fetch_m <= 1e7, "(0, 1e7] m")?;
+        let fetch = check("fetch_m", fetch_m, fetch_m > 0.0 && fetch_m <= 1e8, "(0, 1e8] m")?;
         let x = (G * fetch / (u10 * u10)).min(Self::fully_developed_fetch());
         let alpha = 0.076 * libm::pow(x, -0.22);
         let omega_p = 22.0 * libm::pow(x, -1.0 / 3.0) * G / u10;

@@ -9,25 +9,25 @@ use super::CliError;
 #[derive(Debug, Clone, clap::Args)]
 pub struct PlaceArgs {
     /// Latitude (degrees, north positive), [-90, 90].
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::finite)]
     pub lat: f64,
     /// Longitude (degrees, east positive), [-180, 360].
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::finite)]
     pub lon: f64,
     /// UTC instant, ISO 8601 with an offset (e.g. 2024-06-21T12:00:00Z).
     #[arg(long)]
     pub time: String,
     /// Height above the WGS84 ellipsoid (m).
-    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = super::finite)]
     pub height_m: f64,
     /// Add atmospheric refraction to the altitude (apparent instead of airless altitude).
     #[arg(long)]
     pub refraction: bool,
     /// Air pressure for the refraction (hPa).
-    #[arg(long, default_value_t = 1013.25)]
+    #[arg(long, default_value_t = 1013.25, value_parser = super::finite)]
     pub pressure_hpa: f64,
     /// Air temperature for the refraction (°C).
-    #[arg(long, default_value_t = 15.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 15.0, allow_hyphen_values = true, value_parser = super::finite)]
     pub temperature_c: f64,
     /// Print JSON instead of text.
     #[arg(long)]

@@ -30,19 +30,19 @@ pub enum LawArg {
 #[derive(Debug, Clone, clap::Args)]
 pub struct FoamArgs {
     /// Wind speed 10 m above the sea, U10 (m/s, [0, 60]).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::finite)]
     pub u10: f64,
     /// Water temperature (°C, [-2, 40]); with --t-air-c, selects the 1986 stability law.
-    #[arg(long, allow_negative_numbers = true, requires = "t_air_c")]
+    #[arg(long, allow_negative_numbers = true, requires = "t_air_c", value_parser = super::finite)]
     pub t_water_c: Option<f64>,
     /// Air temperature (°C, [-60, 60]).
-    #[arg(long, allow_negative_numbers = true, requires = "t_water_c")]
+    #[arg(long, allow_negative_numbers = true, requires = "t_water_c", value_parser = super::finite)]
     pub t_air_c: Option<f64>,
     /// Coverage law (default: monahan-1986-stability with temperatures, monahan-1980 without).
     #[arg(long, value_enum)]
     pub law: Option<LawArg>,
     /// Wind speed below which there are no whitecaps (m/s, [0, 10]; Darles: 13 km/h).
-    #[arg(long, default_value_t = DARLES_ONSET_WIND_M_S)]
+    #[arg(long, default_value_t = DARLES_ONSET_WIND_M_S, value_parser = super::finite)]
     pub onset_m_s: f64,
     /// Print JSON.
     #[arg(long)]
@@ -119,20 +119,20 @@ pub fn run_foam(args: &FoamArgs) -> Result<(), CliError> {
 #[derive(Debug, Clone, clap::Args)]
 pub struct SprayArgs {
     /// Wind speed 10 m above the sea, U10 (m/s, [0, 60]).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::finite)]
     pub u10: f64,
     /// Drop radii r80 (µm) for the size distribution: one value, or START:STOP:COUNT
     /// (log-spaced, both ends included; COUNT in [1, 10000]).
     #[arg(long, default_value = "0.8:15:20", allow_hyphen_values = true)]
     pub radius_um: String,
     /// Scale height of the exponential profile (m, (0, 10000]).
-    #[arg(long, default_value_t = 1000.0)]
+    #[arg(long, default_value_t = 1000.0, value_parser = super::finite)]
     pub scale_height_m: f64,
     /// Height above which there is no spray, Darles' maximal height (m, (0, 10000]).
-    #[arg(long, default_value_t = 2000.0)]
+    #[arg(long, default_value_t = 2000.0, value_parser = super::finite)]
     pub max_height_m: f64,
     /// Wavelength of light (nm, [300, 2500]): anomalous-diffraction extinction efficiency instead of 2.
-    #[arg(long)]
+    #[arg(long, value_parser = super::finite)]
     pub wavelength_nm: Option<f64>,
     /// Print JSON.
     #[arg(long)]

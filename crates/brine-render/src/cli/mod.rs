@@ -27,7 +27,64 @@ macro_rules! outln {
 }
 pub(crate) use outln;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, Parser, Subcommand};
+
+/// Parses a flag's number, refusing NaN and infinities (clap names the flag in its message).
+pub(crate) fn finite(s: &str) -> Result<f64, String> {
+    let x: f64 = s.trim().parse().map_err(|_| format!("expected a number, got {s:?}"))?;
+    if x.is_finite() { Ok(x) } else { Err(format!("expected a finite number, got {s}")) }
+}
+
+/// A parser of a flag's number in `[lo, hi]` (NaN and infinities refused).
+pub(crate) fn within(lo: f64, hi: f64) -> impl Fn(&str) -> Result<f64, String> + Clone + Send + Sync + 'static {
+    move |s: &str| {
+        let x = finite(s)?;
+        if (lo..=hi).contains(&x) { Ok(x) } else { Err(format!("{} is out of range: expected [{lo}, {hi}]", s.trim())) }
+    }
+}
+
+/// Rewrites a model's message so that it names the flags the user typed: a parameter name that
+/// is also an argument of `subcommand` (`t_water_c`) becomes its flag (`--t-water-c`).
+fn name_flags(subcommand: &str, message: &str) -> String {
+    let cli = Cli::command();
+    let Some(sub) = cli.find_subcommand(subcommand) else { return message.to_owned() };
+    let mut out = message.to_owned();
+    // The subcommand's arguments and those of its own subcommands (`brine optics fresnel`).
+    let mut args: Vec<(String, String)> = std::iter::once(sub)
+        .chain(sub.get_subcommands())
+        .flat_map(|c| c.get_arguments())
+        .filter_map(|a| a.get_long().map(|l| (a.get_id().as_str().to_owned(), format!("--{l}"))))
+        .collect();
+    // The models' names of parameters whose flag is spelt otherwise (same unit).
+    for (model, id) in [("u10_m_s", "u10"), ("latitude_deg", "lat"), ("longitude_deg", "lon"), ("n_waves", "waves")] {
+        if let Some(flag) = args.iter().find(|(a, _)| a == id).map(|(_, f)| f.clone()) {
+            args.push((model.to_owned(), flag));
+        }
+    }
+    // Longer names first, so that `t_water_c` is not taken for a `t` inside it.
+    args.sort_by_key(|(id, _)| std::cmp::Reverse(id.len()));
+    for (id, flag) in args {
+        out = replace_word(&out, &id, &flag);
+    }
+    out
+}
+
+/// Replaces the whole-word occurrences of `word` (not inside another identifier, not after a `.`
+/// or a `-`) by `by`.
+fn replace_word(text: &str, word: &str, by: &str) -> String {
+    let ident = |c: char| c.is_ascii_alphanumeric() || c == '_';
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(at) = rest.find(word) {
+        let before = rest[..at].chars().next_back();
+        let after = rest[at + word.len()..].chars().next();
+        let whole = before.is_none_or(|c| !ident(c) && c != '.' && c != '-') && after.is_none_or(|c| !ident(c));
+        out += &rest[..at];
+        out += if whole { by } else { word };
+        rest = &rest[at + word.len()..];
+    }
+    out + rest
+}
 
 mod ephem;
 mod foam;
@@ -47,14 +104,6 @@ pub enum CliError {
     /// A failure while working, such as I/O (exit code 1).
     #[error("{0}")]
     Failure(String),
-    /// A subcommand whose model has not landed yet (exit code 2).
-    #[error("`brine {command}` is not implemented yet (issue #{issue})")]
-    NotYet {
-        /// The subcommand.
-        command: &'static str,
-        /// The issue that brings it.
-        issue: u32,
-    },
 }
 
 impl CliError {
@@ -62,7 +111,7 @@ impl CliError {
     pub fn exit_code(&self) -> u8 {
         match self {
             CliError::Failure(_) => 1,
-            CliError::Input(_) | CliError::NotYet { .. } => 2,
+            CliError::Input(_) => 2,
         }
     }
 }
@@ -110,12 +159,35 @@ pub enum Command {
 /// Parses the process arguments and runs; prints `error: …` on failure.
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
+    let sub = cli.command.as_ref().map(subcommand_name);
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e}");
+            let message = match (&e, sub) {
+                // Scene keys are named as in the scene file; model parameters as the flags.
+                (CliError::Input(m), Some(s)) if s != "render" => name_flags(s, m),
+                _ => e.to_string(),
+            };
+            eprintln!("error: {message}");
             ExitCode::from(e.exit_code())
         }
+    }
+}
+
+/// The name of a subcommand as typed.
+fn subcommand_name(c: &Command) -> &'static str {
+    match c {
+        Command::Render(_) => "render",
+        Command::Spectrum(_) => "spectrum",
+        Command::Fit(_) => "fit",
+        Command::Sun(_) => "sun",
+        Command::Moon(_) => "moon",
+        Command::Sky(_) => "sky",
+        Command::Optics(_) => "optics",
+        Command::Foam(_) => "foam",
+        Command::Spray(_) => "spray",
+        Command::Whitecap(_) => "whitecap",
+        Command::Texture(_) => "texture",
     }
 }
 
@@ -137,5 +209,30 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Some(Command::Spray(args)) => foam::run_spray(&args),
         Some(Command::Whitecap(args)) => whitecap::run_whitecap(&args),
         Some(Command::Texture(args)) => texture::run_texture(&args),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn model_parameters_are_named_as_the_flags_typed() {
+        let m = name_flags("foam", "t_water_c = 50 is out of range: expected [-2, 40] °C (t_water_c − t_air_c)");
+        assert_eq!(m, "--t-water-c = 50 is out of range: expected [-2, 40] °C (--t-water-c − --t-air-c)");
+        // Not inside another name, not after a dot (scene keys), not in another subcommand.
+        assert_eq!(replace_word("x_t_water_c sea.t_water_c", "t_water_c", "--t-water-c"), "x_t_water_c sea.t_water_c");
+        assert_eq!(name_flags("nope", "t_water_c"), "t_water_c");
+    }
+
+    #[test]
+    fn numbers_of_flags_are_finite_and_in_range() {
+        assert_eq!(finite("1.5"), Ok(1.5));
+        for bad in ["nan", "NaN", "inf", "-inf", "1e309", "x"] {
+            assert!(finite(bad).is_err(), "{bad}");
+        }
+        let clouds = within(0.0, 1.0);
+        assert_eq!(clouds("1"), Ok(1.0));
+        assert!(clouds("-0.1").is_err() && clouds("1.0001").is_err() && clouds("nan").is_err());
     }
 }

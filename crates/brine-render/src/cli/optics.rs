@@ -31,13 +31,13 @@ pub enum OpticsCommand {
 #[derive(Debug, clap::Args)]
 pub struct FresnelArgs {
     /// Index of the medium the light comes from (1.0 for air).
-    #[arg(long)]
+    #[arg(long, value_parser = super::finite)]
     pub n1: f64,
     /// Index of the medium across the interface (1.333 for water).
-    #[arg(long)]
+    #[arg(long, value_parser = super::finite)]
     pub n2: f64,
     /// Cosine of the angle of incidence, [0, 1].
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::finite)]
     pub cos_theta: f64,
     /// Print JSON.
     #[arg(long)]
@@ -52,7 +52,7 @@ pub struct WaterArgs {
     #[arg(long = "type")]
     pub water_type: Option<String>,
     /// Chlorophyll-a concentration of Case-1 water (mg m⁻³), [0, 100].
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::finite)]
     pub chlorophyll_mg_m3: Option<f64>,
     /// Wavelengths (nm) in [400, 700]: one value, a list `450,550,650` or a range `start:stop:step`.
     #[arg(long, default_value = "400:700:10", allow_hyphen_values = true)]

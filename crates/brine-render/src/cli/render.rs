@@ -43,7 +43,8 @@ pub struct RenderArgs {
     /// normal rate; needs `--frames` and a `[place]`.
     #[arg(long, value_parser = parse_time_lapse, requires = "frames")]
     pub time_lapse: Option<(brine_ephem::Timestamp, brine_ephem::Timestamp)>,
-    /// With `--frames`: skip frames whose output file already exists.
+    /// With `--frames`: skip the frames already written in full (a frame that does not decode
+    /// completely is made again; temporaries left by a killed run are removed).
     #[arg(long, requires = "frames")]
     pub resume: bool,
 }
@@ -99,6 +100,11 @@ pub fn frame_path(pattern: &std::path::Path, frame: u32) -> Result<PathBuf, Stri
     Ok(pattern.with_file_name(file))
 }
 
+/// The scene's name in messages: its path, or the default scene's name.
+fn scene_name(args: &RenderArgs) -> String {
+    args.scene.as_ref().map_or_else(|| crate::scene::DEFAULT_SCENE_NAME.to_owned(), |p| p.display().to_string())
+}
+
 /// Loads the scene named by `args` (or the default) and applies the command-line overrides.
 ///
 /// # Errors
@@ -109,16 +115,16 @@ pub fn scene_of(args: &RenderArgs) -> Result<Scene, CliError> {
         None => Scene::default_scene(),
     };
     if let Some(o) = &args.output {
-        let format =
-            OutputFormat::from_path(o).map_err(|m| CliError::Input(m.replacen("output.path", "--output", 1)))?;
-        if scene.output.aovs && format != OutputFormat::Exr {
-            return Err(CliError::Input(format!(
-                "--output {}: the scene asks for output.aovs, which needs an .exr output",
-                o.display()
-            )));
-        }
+        OutputFormat::from_path(o).map_err(|m| CliError::Input(m.replacen("output.path", "--output", 1)))?;
         scene.output.path = o.clone();
     }
+    // The output's constraints are checked once `-o` has set the path (a scene asking for AOVs
+    // with the default `ocean.png` is fine with `-o x.exr`).
+    scene.check_output().map_err(|m| {
+        let file = scene_name(args);
+        let how = if args.output.is_some() { " (given by --output)" } else { "" };
+        CliError::Input(format!("{file}: {m}{how}"))
+    })?;
     if let Some(w) = args.width {
         scene.camera.width = w;
     }
@@ -167,16 +173,6 @@ pub fn scene_at_frame(
 pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     let scene = scene_of(args)?;
     let pattern = scene.output.path.clone();
-    // Fail before a long render if the destination folder is missing.
-    if let Some(dir) = pattern.parent().filter(|p| !p.as_os_str().is_empty())
-        && !dir.is_dir()
-    {
-        return Err(CliError::Input(format!(
-            "cannot write {}: folder {} does not exist",
-            pattern.display(),
-            dir.display()
-        )));
-    }
     let frames: Vec<(u32, PathBuf)> = match args.frames {
         None => vec![(0, pattern.clone())],
         Some((a, b)) => (a..b)
@@ -184,7 +180,20 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
             .collect::<Result<_, _>>()
             .map_err(CliError::Input)?,
     };
-    let todo: Vec<&(u32, PathBuf)> = frames.iter().filter(|(_, p)| !(args.resume && p.exists())).collect();
+    // Fail before a long render if the destination cannot be written (a missing folder, a folder
+    // given as the file, a read-only place such as /proc).
+    crate::output::check_writable(&frames[0].1).map_err(CliError::Input)?;
+    // An interrupted render leaves no temporary file behind.
+    let _ = crate::output::remove_temporaries_on_signal();
+    if args.resume {
+        for (_, p) in &frames {
+            crate::output::remove_stale_temporaries(p);
+        }
+    }
+    // `--resume` skips the frames already written in full; a truncated or empty frame is made
+    // again.
+    let todo: Vec<&(u32, PathBuf)> =
+        frames.iter().filter(|(_, p)| !(args.resume && crate::output::decodes_completely(p))).collect();
     let (w, h, spp) = (scene.camera.width, scene.camera.height, scene.camera.spp);
     let show = !args.quiet && std::io::stderr().is_terminal();
     let bar = ProgressBar::with_draw_target(
@@ -218,7 +227,7 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     for (frame, path) in &todo {
         let s = scene_at_frame(&scene, *frame, (first, last), args.time_lapse)?;
         let frame = render(&s, &options, &on_row).map_err(|e| match e {
-            RenderError::World(w) => CliError::Input(w.to_string()),
+            RenderError::World(w) => CliError::Input(format!("{}: {w}", scene_name(args))),
             other => CliError::Failure(other.to_string()),
         })?;
         write_frame(path, &frame, frame.exposure_ev, scene.output.aovs)

@@ -12,40 +12,40 @@ use crate::write_image;
 #[derive(Debug, Clone, clap::Args)]
 pub struct SkyArgs {
     /// Turbidity T, [1.7, 10].
-    #[arg(long, default_value_t = 3.0)]
+    #[arg(long, default_value_t = 3.0, value_parser = super::within(1.7, 10.0))]
     pub turbidity: f64,
     /// Sun elevation (degrees), [-90, 90].
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::within(-90.0, 90.0))]
     pub sun_elevation_deg: f64,
     /// Sun azimuth, compass bearing from north through east (degrees).
-    #[arg(long, default_value_t = 180.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 180.0, allow_hyphen_values = true, value_parser = super::finite)]
     pub sun_azimuth_deg: f64,
-    /// Moon elevation (degrees); with --moon-azimuth-deg adds the Moon.
-    #[arg(long, allow_hyphen_values = true, requires = "moon_azimuth_deg")]
+    /// Moon elevation (degrees), [-90, 90]; with --moon-azimuth-deg adds the Moon.
+    #[arg(long, allow_hyphen_values = true, requires = "moon_azimuth_deg", value_parser = super::within(-90.0, 90.0))]
     pub moon_elevation_deg: Option<f64>,
     /// Moon azimuth (degrees from north through east).
-    #[arg(long, allow_hyphen_values = true, requires = "moon_elevation_deg")]
+    #[arg(long, allow_hyphen_values = true, requires = "moon_elevation_deg", value_parser = super::finite)]
     pub moon_azimuth_deg: Option<f64>,
     /// Moon phase angle (degrees, 0 = full), [0, 180].
-    #[arg(long, default_value_t = 0.0)]
+    #[arg(long, default_value_t = 0.0, value_parser = super::within(0.0, 180.0))]
     pub moon_phase_deg: f64,
-    /// Moon distance (km).
-    #[arg(long, default_value_t = 384_400.0)]
+    /// Moon distance (km), [300 000, 420 000] (perigee 356 400, apogee 406 700).
+    #[arg(long, default_value_t = 384_400.0, value_parser = super::within(3.0e5, 4.2e5))]
     pub moon_distance_km: f64,
-    /// Cloud cover [0, 1]; 0 (default) is a clear sky.
-    #[arg(long, default_value_t = 0.0)]
+    /// Cloud cover, [0, 1]; 0 (default) is a clear sky.
+    #[arg(long, default_value_t = 0.0, value_parser = super::within(0.0, 1.0))]
     pub clouds: f64,
     /// Cloud seed.
     #[arg(long, default_value_t = 1)]
     pub cloud_seed: u64,
     /// Time (s) at which the clouds are drawn.
-    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = super::finite)]
     pub time_s: f64,
-    /// View elevation (degrees) for --json.
-    #[arg(long, default_value_t = 90.0, allow_hyphen_values = true)]
+    /// View elevation (degrees) for --json, [-90, 90].
+    #[arg(long, default_value_t = 90.0, allow_hyphen_values = true, value_parser = super::within(-90.0, 90.0))]
     pub view_elevation_deg: f64,
     /// View azimuth (degrees from north through east) for --json.
-    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = super::finite)]
     pub view_azimuth_deg: f64,
     /// Print the radiance toward the view direction as JSON (XYZ and linear sRGB, kcd/m²).
     #[arg(long)]
@@ -57,8 +57,8 @@ pub struct SkyArgs {
     /// Image size in pixels (square).
     #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=8192))]
     pub size: u32,
-    /// Exposure EV (1.2·2^EV cd/m² maps to white); default: the zenith at mid-grey.
-    #[arg(long, allow_hyphen_values = true)]
+    /// Exposure EV, [-10, 30] (1.2·2^EV cd/m² maps to white); default: the zenith at mid-grey.
+    #[arg(long, allow_hyphen_values = true, value_parser = super::within(-10.0, 30.0))]
     pub exposure_ev: Option<f64>,
 }
 
@@ -75,17 +75,12 @@ fn direction(elevation_deg: f64, azimuth_deg: f64) -> DVec3 {
 /// if the image cannot be written.
 pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
     let input = |m: String| CliError::Input(m);
-    if !(-90.0..=90.0).contains(&args.sun_elevation_deg) {
-        return Err(input(format!(
-            "sun_elevation_deg = {} is out of range: expected [-90, 90]°",
-            args.sun_elevation_deg
-        )));
-    }
-    if !(0.0..=180.0).contains(&args.moon_phase_deg) {
-        return Err(input(format!("moon_phase_deg = {} is out of range: expected [0, 180]°", args.moon_phase_deg)));
-    }
     if !args.json && args.out.is_none() {
         return Err(input("nothing to do: give --json and/or --out FILE".to_string()));
+    }
+    if let Some(path) = &args.out {
+        crate::output::OutputFormat::from_path(path).map_err(|m| input(m.replacen("output.path", "--out", 1)))?;
+        crate::output::check_writable(path).map_err(|m| input(format!("--out: {m}")))?;
     }
     let moon = match (args.moon_elevation_deg, args.moon_azimuth_deg) {
         (Some(e), Some(a)) => Some(MoonParams {

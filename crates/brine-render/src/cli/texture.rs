@@ -76,13 +76,13 @@ pub struct TextureArgs {
     #[arg(long, value_parser = parse_vec3, default_value = "0,8,0", allow_hyphen_values = true)]
     pub position: DVec3,
     /// Compass bearing of the view (degrees, 0 north, 90 east).
-    #[arg(long, default_value_t = 225.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 225.0, allow_hyphen_values = true, value_parser = super::finite)]
     pub yaw_deg: f64,
     /// Elevation of the view (degrees, negative looks down), [-90, 90].
-    #[arg(long, default_value_t = -20.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = -20.0, allow_hyphen_values = true, value_parser = super::finite)]
     pub pitch_deg: f64,
     /// Vertical field of view (degrees), (0, 180).
-    #[arg(long, default_value_t = 60.0)]
+    #[arg(long, default_value_t = 60.0, value_parser = super::finite)]
     pub fov_deg: f64,
     /// Image width (pixels).
     #[arg(long, default_value_t = 384, value_parser = clap::value_parser!(u32).range(1..=16384))]
@@ -91,28 +91,28 @@ pub struct TextureArgs {
     #[arg(long, default_value_t = 384, value_parser = clap::value_parser!(u32).range(1..=16384))]
     pub height: u32,
     /// Sun elevation (degrees), [-90, 90].
-    #[arg(long, default_value_t = 35.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 35.0, allow_hyphen_values = true, value_parser = super::finite)]
     pub sun_elevation_deg: f64,
     /// Sun azimuth, compass bearing (degrees).
-    #[arg(long, default_value_t = 200.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 200.0, allow_hyphen_values = true, value_parser = super::finite)]
     pub sun_azimuth_deg: f64,
     /// Atmospheric turbidity, [1.7, 10].
-    #[arg(long, default_value_t = 3.0)]
+    #[arg(long, default_value_t = 3.0, value_parser = super::finite)]
     pub turbidity: f64,
     /// Synthesis, height and animation parameters.
     #[command(flatten)]
     pub tuning: Box<TextureTuning>,
     /// Depth of the bed below sea level (m).
-    #[arg(long, default_value_t = 2.0)]
+    #[arg(long, default_value_t = 2.0, value_parser = super::finite)]
     pub bed_depth_m: f64,
     /// No mip-mapping in projection mode (the paper's plain bilinear lookup).
     #[arg(long)]
     pub no_mipmaps: bool,
     /// Wind speed for the sun's highlight in trace mode (m/s), [0, 60].
-    #[arg(long, default_value_t = 6.0)]
+    #[arg(long, default_value_t = 6.0, value_parser = super::finite)]
     pub wind_m_s: f64,
     /// Exposure EV100 in trace mode; automatic (metered on the first frame) when absent.
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::finite)]
     pub exposure_ev: Option<f64>,
     /// No progress bar and no summary.
     #[arg(short, long)]
@@ -124,19 +124,19 @@ pub struct TextureArgs {
 #[derive(Debug, Clone, clap::Args)]
 pub struct TextureTuning {
     /// Size of a small-wave texel on the sea (m).
-    #[arg(long, default_value_t = OceanParams::default().texel_m)]
+    #[arg(long, default_value_t = OceanParams::default().texel_m, value_parser = super::finite)]
     pub texel_m: f64,
     /// Size of a bed texel (m).
-    #[arg(long, default_value_t = OceanParams::default().bed_texel_m)]
+    #[arg(long, default_value_t = OceanParams::default().bed_texel_m, value_parser = super::finite)]
     pub bed_texel_m: f64,
     /// Main-structure texels per small-wave texel (the `scale` of Eq. 3).
-    #[arg(long, default_value_t = OceanParams::default().scale)]
+    #[arg(long, default_value_t = OceanParams::default().scale, value_parser = super::finite)]
     pub scale: f64,
     /// Height factor hf of the small waves (m), Eq. 1.
-    #[arg(long, default_value_t = OceanParams::default().height_factor_small_m)]
+    #[arg(long, default_value_t = OceanParams::default().height_factor_small_m, value_parser = super::finite)]
     pub hf_small_m: f64,
     /// Height factor hf of the main structure (m), Eq. 1.
-    #[arg(long, default_value_t = OceanParams::default().height_factor_main_m)]
+    #[arg(long, default_value_t = OceanParams::default().height_factor_main_m, value_parser = super::finite)]
     pub hf_main_m: f64,
     /// Velocity of the small-wave pattern "east,south" (m/s).
     #[arg(long, value_parser = parse_vec2, allow_hyphen_values = true)]
@@ -166,7 +166,7 @@ pub struct TextureTuning {
     #[arg(long, default_value_t = OceanParams::default().links_per_frame)]
     pub links: usize,
     /// Animation frames per second.
-    #[arg(long, default_value_t = OceanParams::default().fps)]
+    #[arg(long, default_value_t = OceanParams::default().fps, value_parser = super::finite)]
     pub fps: f64,
     /// Form of the relighting factor (Eq. 9).
     #[arg(long, value_enum, default_value = "paper")]

@@ -38,16 +38,16 @@ pub struct SpectrumParams {
     #[arg(long, value_enum, default_value = "pm")]
     pub model: SpectrumModel,
     /// Wind speed 10 m above the sea (m/s), (0, 60]; Phillips' wind speed V.
-    #[arg(long = "u10", default_value_t = 10.0)]
+    #[arg(long = "u10", default_value_t = 10.0, value_parser = super::finite)]
     pub u10: f64,
     /// Fetch (m): JONSWAP and TMA (default 100 km), Elfouhaily (default: fully developed sea).
-    #[arg(long)]
+    #[arg(long, value_parser = super::finite)]
     pub fetch_m: Option<f64>,
     /// Water depth (m): TMA only, required there.
-    #[arg(long)]
+    #[arg(long, value_parser = super::finite)]
     pub depth_m: Option<f64>,
     /// Peak enhancement γ (JONSWAP and TMA, default 3.3), [1, 20].
-    #[arg(long)]
+    #[arg(long, value_parser = super::finite)]
     pub gamma: Option<f64>,
 }
 
@@ -106,10 +106,10 @@ pub struct SpectrumArgs {
     #[command(flatten)]
     pub spectrum: SpectrumParams,
     /// Lowest angular frequency (rad/s), > 0 (default 0.3 ωₚ).
-    #[arg(long)]
+    #[arg(long, value_parser = super::finite)]
     pub omega_min: Option<f64>,
     /// Highest angular frequency (rad/s), > omega-min (default 10 ωₚ).
-    #[arg(long)]
+    #[arg(long, value_parser = super::finite)]
     pub omega_max: Option<f64>,
     /// Number of samples, [2, 100000].
     #[arg(long, default_value_t = 200)]
@@ -237,25 +237,25 @@ pub struct FitArgs {
     #[arg(long, value_enum, default_value = "bin-variance")]
     pub amplitudes: AmplitudeArg,
     /// Wind direction (degrees from +x/east toward +z/south, the direction the wind blows toward).
-    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = super::finite)]
     pub wind_direction_deg: f64,
     /// Choppiness c ≥ 0: steepness Q = c·k·A before the cap.
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, value_parser = super::finite)]
     pub choppiness: f64,
     /// Cap on Σ Q, (0, 0.99]; steeper sets are scaled down together.
-    #[arg(long, default_value_t = 0.9)]
+    #[arg(long, default_value_t = 0.9, value_parser = super::finite)]
     pub max_total_steepness: f64,
     /// Lower band edge as a multiple of ωₚ.
-    #[arg(long, default_value_t = 0.5)]
+    #[arg(long, default_value_t = 0.5, value_parser = super::finite)]
     pub omega_min_factor: f64,
     /// Upper band edge as a multiple of ωₚ.
-    #[arg(long, default_value_t = 12.0)]
+    #[arg(long, default_value_t = 12.0, value_parser = super::finite)]
     pub omega_max_factor: f64,
     /// Amplification of the high-frequency waves (Darles et al.'s capillary waves), [1, 100].
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, value_parser = super::finite)]
     pub high_frequency_gain: f64,
     /// Start of the amplified range as a multiple of ωₚ.
-    #[arg(long, default_value_t = 6.0)]
+    #[arg(long, default_value_t = 6.0, value_parser = super::finite)]
     pub high_frequency_start_factor: f64,
     /// Print JSON instead of a table.
     #[arg(long)]

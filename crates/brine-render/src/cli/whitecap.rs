@@ -43,16 +43,16 @@ impl From<ErfArg> for ErfMethod {
 #[derive(Debug, Clone, clap::Args)]
 pub struct WhitecapArgs {
     /// Mean μ of the Jacobian over the footprint.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::finite)]
     pub mu: Option<f64>,
     /// Standard deviation σ of the Jacobian over the footprint (≥ 0).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::finite)]
     pub sigma: Option<f64>,
     /// Breaking threshold α: whitecaps where J < α.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::finite)]
     pub alpha: Option<f64>,
     /// Wind speed 10 m above the sea U10 (m/s, (0, 60]) of the fitted sea.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::finite)]
     pub u10: Option<f64>,
     /// Calibrate α so that the fitted sea's coverage equals Monahan's.
     #[arg(long, requires = "u10", conflicts_with = "alpha")]
@@ -61,16 +61,16 @@ pub struct WhitecapArgs {
     #[arg(long, default_value_t = 50)]
     pub waves: usize,
     /// Choppiness of the fit ([0, 100]; the default scene's 2.5).
-    #[arg(long, default_value_t = 2.5)]
+    #[arg(long, default_value_t = 2.5, value_parser = super::finite)]
     pub choppiness: f64,
     /// Seed of the fitted sea's directions and phases.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
     /// Water temperature (°C): with --t-air-c, the target is Monahan's 1986 stability law.
-    #[arg(long, allow_negative_numbers = true, requires = "t_air_c")]
+    #[arg(long, allow_negative_numbers = true, requires = "t_air_c", value_parser = super::finite)]
     pub t_water_c: Option<f64>,
     /// Air temperature (°C).
-    #[arg(long, allow_negative_numbers = true, requires = "t_water_c")]
+    #[arg(long, allow_negative_numbers = true, requires = "t_water_c", value_parser = super::finite)]
     pub t_air_c: Option<f64>,
     /// Surface points of the Monte Carlo check over the sea ([1000, 10⁸]).
     #[arg(long, default_value_t = 1 << 19)]

@@ -4,8 +4,11 @@ use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
 
+mod check;
+pub mod keys;
+
 /// The scene embedded in the binary, rendered by `brine` with no arguments.
-pub const DEFAULT_SCENE_TOML: &str = include_str!("../scenes/default.toml");
+pub const DEFAULT_SCENE_TOML: &str = include_str!("../../scenes/default.toml");
 
 /// Name used in messages for the embedded default scene.
 pub const DEFAULT_SCENE_NAME: &str = "<default scene>";
@@ -81,11 +84,12 @@ pub enum SunModelKind {
 }
 
 /// `[water]`: the optical water type and the sea floor.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct WaterConfig {
     /// Jerlov water type (`I`, `IA`, `IB`, `II`, `III`, `1C`, `3C`, `5C`, `7C`, `9C`) or Darles et
-    /// al.'s `clear`, `turbid`, `very-turbid`; excludes `chlorophyll_mg_m3`.
+    /// al.'s `clear`, `turbid`, `very-turbid`; excludes `chlorophyll_mg_m3`. Jerlov IB when
+    /// neither is given.
     #[serde(rename = "type")]
     pub water_type: Option<String>,
     /// Chlorophyll concentration of Case-1 water (mg m⁻³, `[0, 30]`); excludes `type`.
@@ -97,18 +101,6 @@ pub struct WaterConfig {
     pub temperature_c: Option<f64>,
     /// Air temperature 10 m above the sea (°C, `[−40, 50]`).
     pub air_temperature_c: Option<f64>,
-}
-
-impl Default for WaterConfig {
-    fn default() -> Self {
-        Self {
-            water_type: Some("IB".into()),
-            chlorophyll_mg_m3: None,
-            floor: None,
-            temperature_c: None,
-            air_temperature_c: None,
-        }
-    }
 }
 
 /// `[water.floor]`: a Lambertian sea floor shaped by its own static trochoid set (Darles et al.
@@ -204,9 +196,11 @@ pub struct CameraConfig {
     pub position: [f64; 3],
     /// A point to look at (m); excludes `yaw_deg`/`pitch_deg`.
     pub look_at: Option<[f64; 3]>,
-    /// Compass bearing of the view (°, 0 north = −z, 90 east = +x).
+    /// Compass bearing of the view (°, 0 north = −z, 90 east = +x); 100° when neither it nor
+    /// `look_at` is given ([`Scene::DEFAULT_YAW_DEG`]).
     pub yaw_deg: Option<f64>,
-    /// Elevation of the view (°, `[−90, 90]`, negative looks down).
+    /// Elevation of the view (°, `[−90, 90]`, negative looks down); −9° when neither it nor
+    /// `look_at` is given ([`Scene::DEFAULT_PITCH_DEG`]).
     pub pitch_deg: Option<f64>,
     /// Vertical field of view (°, `(0, 180)`).
     pub fov_deg: f64,
@@ -223,8 +217,8 @@ impl Default for CameraConfig {
         Self {
             position: [0.0, 10.0, 0.0],
             look_at: None,
-            yaw_deg: Some(100.0),
-            pitch_deg: Some(-9.0),
+            yaw_deg: None,
+            pitch_deg: None,
             fov_deg: 50.0,
             width: 1280,
             height: 720,
@@ -482,79 +476,92 @@ impl Scene {
     /// Reads and checks a scene file.
     ///
     /// # Errors
-    /// [`SceneError`] if the file cannot be read, is not valid TOML, has an unknown key or a value
-    /// of the wrong type, or a value out of range.
+    /// [`SceneError`] if the file cannot be read, is not UTF-8 (with the line of the first bad
+    /// byte), is not valid TOML, has an unknown key or a value of the wrong type, or a value out of
+    /// range.
     pub fn load(path: &Path) -> Result<Self, SceneError> {
         let name = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError {
+        let bytes = std::fs::read(path).map_err(|e| SceneError {
             file: name.clone(),
             line: None,
             message: format!("cannot read the scene file: {e}"),
         })?;
+        let text = match String::from_utf8(bytes) {
+            Ok(t) => t,
+            Err(e) => {
+                let at = e.utf8_error().valid_up_to();
+                let bytes = e.as_bytes();
+                let line = bytes[..at].iter().filter(|&&b| b == b'\n').count() + 1;
+                return Err(SceneError {
+                    file: name,
+                    line: Some(line),
+                    message: format!(
+                        "the scene file is not UTF-8 text: byte {at} (0x{:02x}) is not valid UTF-8 (save the file as UTF-8)",
+                        bytes[at]
+                    ),
+                });
+            }
+        };
         Self::from_toml_str(&text, &name)
     }
 
     /// Parses and checks a scene from TOML text; `file` names it in messages.
     ///
+    /// Every key is checked against the key table ([`keys::KEYS`]: type, range, array length)
+    /// on the parsed document, then the keys that constrain each other. Messages carry the line
+    /// of the key, whether it is written under a header, dotted, quoted or in an inline table.
+    ///
     /// # Errors
     /// See [`Scene::load`].
     pub fn from_toml_str(text: &str, file: &str) -> Result<Self, SceneError> {
-        let de = toml::de::Deserializer::parse(text).map_err(|e| SceneError {
+        // A UTF-8 byte-order mark (some Windows editors write one) is not part of the TOML.
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+        let error = |at: Option<usize>, message: String| SceneError {
             file: file.to_owned(),
-            line: e.span().map(|s| line_of(text, s.start)),
-            message: format!("invalid TOML: {}", e.message().trim()),
-        })?;
+            line: at.map(|a| line_of(text, a)),
+            message,
+        };
+        let doc = check::Located::parse(text).map_err(|(at, m)| error(at, m))?;
+        doc.check().map_err(|(at, m)| error(at, m))?;
+        let de = toml::de::Deserializer::parse(text)
+            .map_err(|e| error(e.span().map(|s| s.start), format!("invalid TOML: {}", e.message().trim())))?;
         let scene: Scene = serde_path_to_error::deserialize(de).map_err(|e| {
             let path = e.path().to_string();
             let inner = e.into_inner();
-            SceneError {
-                file: file.to_owned(),
-                line: inner.span().map(|s| line_of(text, s.start)),
-                message: explain(&path, inner.message()),
-            }
+            error(inner.span().map(|s| s.start), explain(&path, inner.message()))
         })?;
-        scene.validate().map_err(|(section, key, message)| SceneError {
-            file: file.to_owned(),
-            line: find_key_line(text, section, key),
-            message,
-        })?;
+        scene.validate().map_err(|(path, message)| error(doc.offset_of(path), message))?;
         Ok(scene)
     }
 
-    /// Checks every value against its documented range; the error names the section, the key
-    /// and the message.
-    fn validate(&self) -> Result<(), (&'static str, &'static str, String)> {
-        fn range(
-            section: &'static str,
-            key: &'static str,
-            value: f64,
-            ok: bool,
-            expected: &str,
-        ) -> Result<(), (&'static str, &'static str, String)> {
-            if ok && value.is_finite() {
-                Ok(())
-            } else {
-                Err((section, key, format!("{section}.{key} = {value} is out of range: expected {expected}")))
-            }
+    /// The camera's view when neither `look_at` nor the angles are given: yaw 100°, pitch −9°.
+    pub const DEFAULT_YAW_DEG: f64 = 100.0;
+    /// See [`Scene::DEFAULT_YAW_DEG`].
+    pub const DEFAULT_PITCH_DEG: f64 = -9.0;
+
+    /// Checks the output against the scene once the command line has set its path: AOVs need an
+    /// EXR file.
+    ///
+    /// # Errors
+    /// A message naming `output.aovs` and the path.
+    pub fn check_output(&self) -> Result<(), String> {
+        let format = crate::output::OutputFormat::from_path(&self.output.path)?;
+        if self.output.aovs && format != crate::output::OutputFormat::Exr {
+            return Err(format!(
+                "output.aovs = true needs an .exr output, but the output is {} (PNG has no extra channels)",
+                self.output.path.display()
+            ));
         }
+        Ok(())
+    }
+
+    /// Checks the constraints between keys (each key's own type and range are the key table's,
+    /// checked before); the error names the key (dotted path) whose line is shown.
+    fn validate(&self) -> Result<(), (&'static str, String)> {
         let c = &self.camera;
-        for (i, v) in c.position.iter().enumerate() {
-            range("camera", "position", *v, v.abs() <= 1e6, "finite coordinates within ±10⁶ m").map_err(
-                |(s, k, _)| {
-                    (
-                        s,
-                        k,
-                        format!(
-                            "camera.position[{i}] = {v} is out of range: expected a finite coordinate within ±10⁶ m"
-                        ),
-                    )
-                },
-            )?;
-        }
         if c.look_at.is_some() && (c.yaw_deg.is_some() || c.pitch_deg.is_some()) {
             return Err((
-                "camera",
-                "look_at",
+                "camera.look_at",
                 "camera.look_at cannot be combined with yaw_deg/pitch_deg: give one or the other".into(),
             ));
         }
@@ -562,219 +569,93 @@ impl Scene {
             let d = [t[0] - c.position[0], t[1] - c.position[1], t[2] - c.position[2]];
             let len2: f64 = d.iter().map(|x| x * x).sum();
             if !(len2 > 1e-12) || !len2.is_finite() {
-                return Err(("camera", "look_at", "camera.look_at must differ from camera.position".into()));
+                return Err(("camera.look_at", "camera.look_at must differ from camera.position".into()));
             }
         }
-        if let Some(y) = c.yaw_deg {
-            range("camera", "yaw_deg", y, true, "a finite angle in degrees")?;
-        }
-        if let Some(p) = c.pitch_deg {
-            range("camera", "pitch_deg", p, (-90.0..=90.0).contains(&p), "[-90, 90]°")?;
-        }
-        range("camera", "fov_deg", c.fov_deg, c.fov_deg > 0.0 && c.fov_deg < 180.0, "(0, 180)°")?;
-        range("camera", "width", f64::from(c.width), (1..=16384).contains(&c.width), "[1, 16384] pixels")?;
-        range("camera", "height", f64::from(c.height), (1..=16384).contains(&c.height), "[1, 16384] pixels")?;
-        range("camera", "spp", f64::from(c.spp), (1..=4096).contains(&c.spp), "[1, 4096] samples per pixel")?;
         let s = &self.sea;
-        range("sea", "wind_speed_m_s", s.wind_speed_m_s, (0.0..=60.0).contains(&s.wind_speed_m_s), "[0, 60] m/s")?;
-        range("sea", "wind_direction_deg", s.wind_direction_deg, true, "a finite angle in degrees")?;
-        range("sea", "waves", f64::from(s.waves), s.waves <= 10_000, "[0, 10000]")?;
-        range("sea", "choppiness", s.choppiness, (0.0..=100.0).contains(&s.choppiness), "[0, 100]")?;
-        range("sea", "time_s", s.time_s, (0.0..=1e6).contains(&s.time_s), "[0, 10⁶] s")?;
-        range(
-            "sea",
-            "trace_distance_m",
-            s.trace_distance_m,
-            (10.0..=1e6).contains(&s.trace_distance_m),
-            "[10, 10⁶] m",
-        )?;
-        if let Some(f) = s.fetch_km {
-            range("sea", "fetch_km", f, (0.1..=1e5).contains(&f), "[0.1, 10⁵] km")?;
-        }
-        if let Some(g) = s.gamma {
-            range("sea", "gamma", g, (1.0..=10.0).contains(&g), "[1, 10]")?;
-        }
-        if let Some(d) = s.depth_m {
-            range("sea", "depth_m", d, (0.5..=1e4).contains(&d), "[0.5, 10⁴] m")?;
-        }
         if s.spectrum == SpectrumKind::Tma && s.depth_m.is_none() {
-            return Err(("sea", "spectrum", "sea.spectrum = \"tma\" needs sea.depth_m (the water depth, m)".into()));
+            return Err(("sea.spectrum", "sea.spectrum = \"tma\" needs sea.depth_m (the water depth, m)".into()));
         }
         if let Some(w) = &s.swell {
-            let h = w.significant_height_m;
-            range("sea.swell", "significant_height_m", h, h > 0.0 && h <= 20.0, "(0, 20] m")?;
-            let t = w.peak_period_s;
-            range("sea.swell", "peak_period_s", t, (4.0..=30.0).contains(&t), "[4, 30] s")?;
-            range("sea.swell", "direction_deg", w.direction_deg, true, "a finite angle in degrees")?;
-            range("sea.swell", "waves", f64::from(w.waves), (1..=1000).contains(&w.waves), "[1, 1000]")?;
-            let sp = w.spreading_s;
-            range("sea.swell", "spreading_s", sp, (1.0..=200.0).contains(&sp), "[1, 200]")?;
-            range("sea.swell", "gamma", w.gamma, (1.0..=10.0).contains(&w.gamma), "[1, 10]")?;
             // A deep-water swell steeper than H_s/L = 1/7 (Michell's limit of a single wave, with
             // L = g T²/2π) cannot exist.
+            let (h, t) = (w.significant_height_m, w.peak_period_s);
             let limit = brine_waves::G * t * t / std::f64::consts::TAU / 7.0;
-            range(
-                "sea.swell",
-                "significant_height_m",
-                h,
-                h <= limit,
-                &format!("at most {limit:.2} m for a {t} s swell (H/L ≤ 1/7)"),
-            )?;
-        }
-        let f = &s.fft;
-        range(
-            "sea.fft",
-            "resolution",
-            f64::from(f.resolution),
-            f.resolution.is_power_of_two() && (64..=2048).contains(&f.resolution),
-            "a power of two in [64, 2048]",
-        )?;
-        range("sea.fft", "cascades", f64::from(f.cascades), (1..=8).contains(&f.cascades), "[1, 8]")?;
-        range("sea.fft", "choppiness", f.choppiness, (0.0..=4.0).contains(&f.choppiness), "[0, 4]")?;
-        if let Some(t) = f.loop_period_s {
-            range("sea.fft", "loop_period_s", t, t > 0.0 && t <= 1e6, "(0, 10⁶] s")?;
-        }
-        let k = &self.sky;
-        range("sky", "turbidity", k.turbidity, (1.7..=10.0).contains(&k.turbidity), "[1.7, 10]")?;
-        if let Some(e) = k.sun_elevation_deg {
-            range("sky", "sun_elevation_deg", e, (-90.0..=90.0).contains(&e), "[-90, 90]°")?;
-        }
-        if let Some(a) = k.sun_azimuth_deg {
-            range("sky", "sun_azimuth_deg", a, true, "a finite angle in degrees")?;
-        }
-        if let Some(p) = &self.place {
-            if k.sun_elevation_deg.is_some() || k.sun_azimuth_deg.is_some() {
-                let key = if k.sun_elevation_deg.is_some() { "sun_elevation_deg" } else { "sun_azimuth_deg" };
+            if h > limit {
                 return Err((
-                    "sky",
-                    key,
-                    format!("sky.{key} cannot be combined with [place], which sets the sun: give one or the other"),
+                    "sea.swell.significant_height_m",
+                    format!(
+                        "sea.swell.significant_height_m = {h} is out of range: expected at most {limit:.2} m for a {t} s swell (H/L ≤ 1/7)"
+                    ),
                 ));
             }
-            range("place", "latitude_deg", p.latitude_deg, (-90.0..=90.0).contains(&p.latitude_deg), "[-90, 90]°")?;
-            range(
-                "place",
-                "longitude_deg",
-                p.longitude_deg,
-                (-180.0..=180.0).contains(&p.longitude_deg),
-                "[-180, 180]°",
-            )?;
-            brine_ephem::parse_utc(&p.time_utc)
-                .and_then(brine_ephem::check_range)
-                .map_err(|e| ("place", "time_utc", format!("place.time_utc: {e}")))?;
         }
-        if let Some(c) = &k.clouds {
-            range("sky.clouds", "cover", c.cover, (0.0..=1.0).contains(&c.cover), "[0, 1]")?;
-            range(
-                "sky.clouds",
-                "altitude_m",
-                c.altitude_m,
-                c.altitude_m > 0.0 && c.altitude_m <= 20_000.0,
-                "(0, 20000] m",
-            )?;
-            range("sky.clouds", "scale_m", c.scale_m, (10.0..=1e6).contains(&c.scale_m), "[10, 10⁶] m")?;
-            for v in c.wind_m_s {
-                range("sky.clouds", "wind_m_s", v, (-100.0..=100.0).contains(&v), "each in [-100, 100] m/s")?;
-            }
+        let k = &self.sky;
+        if self.place.is_some() && (k.sun_elevation_deg.is_some() || k.sun_azimuth_deg.is_some()) {
+            let key = if k.sun_elevation_deg.is_some() { "sun_elevation_deg" } else { "sun_azimuth_deg" };
+            let path = if k.sun_elevation_deg.is_some() { "sky.sun_elevation_deg" } else { "sky.sun_azimuth_deg" };
+            return Err((
+                path,
+                format!("sky.{key} cannot be combined with [place], which sets the sun: give one or the other"),
+            ));
         }
-        let o = &self.output;
-        if let Some(ev) = o.exposure_ev {
-            range("output", "exposure_ev", ev, (-10.0..=30.0).contains(&ev), "[-10, 30] EV")?;
-        }
-        let c = o.exposure_compensation_ev;
-        range("output", "exposure_compensation_ev", c, (-10.0..=10.0).contains(&c), "[-10, 10] EV")?;
         let w = &self.water;
         if w.water_type.is_some() && w.chlorophyll_mg_m3.is_some() {
             return Err((
-                "water",
-                "chlorophyll_mg_m3",
+                "water.chlorophyll_mg_m3",
                 "water.type and water.chlorophyll_mg_m3 exclude each other: give one".into(),
             ));
         }
-        if let Some(t) = &w.water_type {
-            crate::world::water_body_of(Some(t), None).map_err(|m| ("water", "type", m))?;
-        }
-        if let Some(t) = w.temperature_c {
-            range("water", "temperature_c", t, (-2.0..=40.0).contains(&t), "[-2, 40] °C")?;
-        }
-        if let Some(t) = w.air_temperature_c {
-            range("water", "air_temperature_c", t, (-40.0..=50.0).contains(&t), "[-40, 50] °C")?;
-        }
         if let (Some(tw), Some(ta)) = (w.temperature_c, w.air_temperature_c) {
             // Monahan & Ó Muircheartaigh 1986's stability fit covers ΔT = T_w − T_a in [−30, 30] °C.
+            // The difference of two decimal inputs carries their rounding (12.7 − 42.7 is
+            // −30.000000000000004): it is compared with that much room.
             let dt = tw - ta;
-            range(
-                "water",
-                "air_temperature_c",
-                ta,
-                (-30.0..=30.0).contains(&dt),
-                &format!("a water–air difference within ±30 °C (Monahan 1986's fit), got {dt} °C"),
-            )?;
-        }
-        if let Some(a) = self.phenomena.whitecap_alpha {
-            range("phenomena", "whitecap_alpha", a, (-2.0..=2.0).contains(&a), "[-2, 2]")?;
-        }
-        if let Some(c) = w.chlorophyll_mg_m3 {
-            range("water", "chlorophyll_mg_m3", c, (0.0..=30.0).contains(&c), "[0, 30] mg/m³")?;
+            if dt.abs() > MAX_STABILITY_DIFFERENCE_C + DECIMAL_ROUNDING_C {
+                return Err((
+                    "water.air_temperature_c",
+                    format!(
+                        "water.air_temperature_c = {ta} is out of range: expected a water–air difference within ±30 °C (Monahan 1986's fit), got {:.3} °C",
+                        dt
+                    ),
+                ));
+            }
         }
         if let Some(f) = &w.floor {
-            range("water.floor", "depth_m", f.depth_m, (0.5..=1000.0).contains(&f.depth_m), "[0.5, 1000] m")?;
-            for v in f.albedo {
-                range("water.floor", "albedo", v, (0.0..=1.0).contains(&v), "each in [0, 1]")?;
+            if f.amplitude_m > 0.5 * f.depth_m {
+                return Err((
+                    "water.floor.amplitude_m",
+                    format!(
+                        "water.floor.amplitude_m = {} is out of range: expected [0, depth_m/2] = [0, {}] m",
+                        f.amplitude_m,
+                        0.5 * f.depth_m
+                    ),
+                ));
             }
-            range("water.floor", "waves", f64::from(f.waves), f.waves <= 64, "[0, 64]")?;
-            range(
-                "water.floor",
-                "amplitude_m",
-                f.amplitude_m,
-                (0.0..=0.5 * f.depth_m).contains(&f.amplitude_m),
-                "[0, depth_m/2] m",
-            )?;
             let [lo, hi] = f.wavelength_range_m;
-            range(
-                "water.floor",
-                "wavelength_range_m",
-                lo,
-                lo >= 0.05 && lo <= hi && hi <= 1e4,
-                "0.05 ≤ min ≤ max ≤ 10⁴ m",
-            )?;
-        }
-        let a = &self.animation;
-        range("animation", "fps", a.fps, a.fps > 0.0 && a.fps <= 1000.0, "(0, 1000] frames per second")?;
-        let format = crate::output::OutputFormat::from_path(&o.path).map_err(|m| ("output", "path", m))?;
-        if o.aovs && format != crate::output::OutputFormat::Exr {
-            return Err((
-                "output",
-                "aovs",
-                "output.aovs = true needs an .exr output (PNG has no extra channels)".into(),
-            ));
+            if lo > hi {
+                return Err((
+                    "water.floor.wavelength_range_m",
+                    format!(
+                        "water.floor.wavelength_range_m = [{lo}, {hi}]: the shortest wavelength must come first (min ≤ max)"
+                    ),
+                ));
+            }
         }
         Ok(())
     }
 }
 
+/// Widest water–air temperature difference of Monahan & Ó Muircheartaigh 1986's stability fit (°C).
+const MAX_STABILITY_DIFFERENCE_C: f64 = 30.0;
+
+/// Room for the rounding of a difference of two temperatures written with a few decimals (°C):
+/// far below any physical meaning, far above f64 rounding of values within ±50 °C (10⁻¹⁴).
+const DECIMAL_ROUNDING_C: f64 = 1e-9;
+
 /// 1-based line of byte offset `at` in `text`.
 fn line_of(text: &str, at: usize) -> usize {
     text.as_bytes()[..at.min(text.len())].iter().filter(|&&b| b == b'\n').count() + 1
-}
-
-/// Line of `key = …` inside `[section]`, found by scanning the text (plain `key = value` lines).
-fn find_key_line(text: &str, section: &str, key: &str) -> Option<usize> {
-    let mut current = "";
-    for (i, raw) in text.lines().enumerate() {
-        let line = raw.trim();
-        if let Some(rest) = line.strip_prefix('[') {
-            current = rest.trim_end_matches(']').trim();
-            continue;
-        }
-        if current == section
-            && let Some((k, _)) = line.split_once('=')
-            && k.trim() == key
-        {
-            return Some(i + 1);
-        }
-    }
-    None
 }
 
 /// Rewrites serde's messages into what the user should have written, naming the key.
@@ -824,6 +705,12 @@ mod tests {
         let mut s = Scene::default_scene();
         assert!(s.place.is_some());
         s.place = None;
+        // The file writes out the view and the water type that are also the defaults when absent.
+        assert_eq!(
+            (s.camera.yaw_deg, s.camera.pitch_deg, s.water.water_type.as_deref()),
+            (Some(Scene::DEFAULT_YAW_DEG), Some(Scene::DEFAULT_PITCH_DEG), Some("IB"))
+        );
+        (s.camera.yaw_deg, s.camera.pitch_deg, s.water.water_type) = (None, None, None);
         assert_eq!(s, Scene::default());
     }
 
@@ -869,5 +756,93 @@ mod tests {
         assert!(e.message.contains("camera.fov_deg"), "{e}");
         let e = Scene::from_toml_str("[camera]\nwidth = 0\n", "s.toml").unwrap_err();
         assert!(e.message.contains("camera.width"), "{e}");
+    }
+
+    fn parse(text: &str) -> Result<Scene, SceneError> {
+        Scene::from_toml_str(text, "s.toml")
+    }
+
+    #[test]
+    fn look_at_alone_is_accepted_and_with_an_angle_refused() {
+        let s = parse("[camera]\nlook_at = [100.0, 0.0, 0.0]\n").unwrap();
+        assert_eq!((s.camera.look_at, s.camera.yaw_deg, s.camera.pitch_deg), (Some([100.0, 0.0, 0.0]), None, None));
+        let e = parse("[camera]\nlook_at = [100.0, 0.0, 0.0]\npitch_deg = -3.0\n").unwrap_err();
+        assert!(e.message.contains("cannot be combined"), "{e}");
+        assert_eq!(e.line, Some(2));
+        // Without look_at and angles the default view is unchanged.
+        let cam = crate::camera::Camera::from_config(&Scene::default().camera);
+        let want = crate::camera::direction_from_bearing(Scene::DEFAULT_YAW_DEG, Scene::DEFAULT_PITCH_DEG);
+        assert!((cam.forward - want).length() < 1e-12);
+    }
+
+    #[test]
+    fn chlorophyll_alone_is_accepted_and_with_a_type_refused() {
+        let s = parse("[water]\nchlorophyll_mg_m3 = 1.0\n").unwrap();
+        assert_eq!((s.water.water_type.as_deref(), s.water.chlorophyll_mg_m3), (None, Some(1.0)));
+        let e = parse("[water]\ntype = \"II\"\nchlorophyll_mg_m3 = 1.0\n").unwrap_err();
+        assert!(e.message.contains("exclude each other"), "{e}");
+        assert_eq!(e.line, Some(3));
+    }
+
+    #[test]
+    fn the_documented_ends_of_ranges_are_accepted() {
+        // Fetches up to 10⁵ km, the year 2200, 30 °C between water and air written in decimals.
+        parse("[sea]\nspectrum = \"jonswap\"\nfetch_km = 100000.0\n").unwrap();
+        parse("[place]\nlatitude_deg = 0.0\nlongitude_deg = 0.0\ntime_utc = \"2200-12-31T23:59:59Z\"\n").unwrap();
+        parse("[water]\ntemperature_c = 12.7\nair_temperature_c = 42.7\n").unwrap();
+        let e = parse("[water]\ntemperature_c = 12.7\nair_temperature_c = 42.8\n").unwrap_err();
+        assert!(e.message.contains("water.air_temperature_c"), "{e}");
+        let e = parse("[place]\nlatitude_deg = 0.0\nlongitude_deg = 0.0\ntime_utc = \"2201-01-01T00:00:00Z\"\n")
+            .unwrap_err();
+        assert!(e.message.contains("1800–2200") && e.line == Some(4), "{e}");
+    }
+
+    #[test]
+    fn arrays_must_have_their_length() {
+        let e = parse("[camera]\nposition = [0.0, 10.0, 0.0, 1.0]\n").unwrap_err();
+        assert!(e.message.contains("camera.position has 4 elements"), "{e}");
+        assert_eq!(e.line, Some(2));
+        let e = parse("[sky.clouds]\nwind_m_s = [1.0, 2.0, 3.0]\n").unwrap_err();
+        assert!(e.message.contains("sky.clouds.wind_m_s has 3 elements"), "{e}");
+        let e = parse("[water.floor]\nalbedo = [0.5, 0.5]\n").unwrap_err();
+        assert!(e.message.contains("water.floor.albedo has 2 elements"), "{e}");
+    }
+
+    #[test]
+    fn range_errors_keep_their_line_in_every_form_of_key() {
+        let forms = [
+            ("sea.wind_speed_m_s = 70.0\n", 1),
+            ("sea = { wind_speed_m_s = 70.0 }\n", 1),
+            ("[sea]\n\"wind_speed_m_s\" = 70.0\n", 2),
+            ("[sea] # the sea\nwind_speed_m_s = 70.0\n", 2),
+            ("\u{feff}[sea]\nwind_speed_m_s = 70.0\n", 2),
+            ("[camera]\nwidth = 10\n[sea]\nseed = 3\n\n  wind_speed_m_s   =   70.0 # gale\n", 6),
+        ];
+        for (text, line) in forms {
+            let e = parse(text).unwrap_err();
+            assert!(e.message.contains("sea.wind_speed_m_s = 70 is out of range"), "{text:?}: {e}");
+            assert_eq!(e.line, Some(line), "{text:?}: {e}");
+        }
+        let e = parse("[[sea]]\nwind_speed_m_s = 7.0\n").unwrap_err();
+        assert!(e.message.contains("not as an array of tables [[sea]]"), "{e}");
+        assert_eq!(e.line, Some(1));
+    }
+
+    #[test]
+    fn a_file_that_is_not_utf8_gets_the_line_of_its_first_bad_byte() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("latin1.toml");
+        std::fs::write(&path, b"[sea]\n# caf\xe9\nwind_speed_m_s = 7.0\n").unwrap();
+        let e = Scene::load(&path).unwrap_err();
+        assert_eq!(e.line, Some(2), "{e}");
+        assert!(e.message.contains("not UTF-8"), "{e}");
+    }
+
+    #[test]
+    fn aovs_are_checked_against_the_final_output_path() {
+        let mut s = parse("[output]\naovs = true\n").unwrap();
+        assert!(s.check_output().unwrap_err().contains("output.aovs"));
+        s.output.path = "x.exr".into();
+        s.check_output().unwrap();
     }
 }
