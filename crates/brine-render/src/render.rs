@@ -7,7 +7,7 @@ use brine_optics::{
 };
 use brine_trace::{Aabb, LipschitzSum, Ray, TraceOptions, TraceStats, trace, trace_tile};
 use brine_trace::{Hit, Method};
-use brine_waves::{GerstnerField, SineField, TracedTrochoids, WaveSurface};
+use brine_waves::{GerstnerField, SineField, TracedTrochoids};
 
 use crate::world::Sea;
 use brine_whitecap::WHITECAP_REFLECTANCE;
@@ -740,9 +740,9 @@ pub(crate) enum SeaField<'a> {
     /// Trochoid sum by the tiered tracer with footprint fading.
     Traced(&'a TracedTrochoids),
     /// Gerstner sum by directional sphere tracing.
-    Gerstner(GerstnerField<'a>, &'a brine_waves::GerstnerSurface),
+    Gerstner(GerstnerField<'a>),
     /// Sine waves by directional sphere tracing.
-    Sine(SineField<'a>, &'a brine_waves::SineSet),
+    Sine(SineField<'a>),
     /// FFT cascades by the tiered tracer (one tier per cascade) with footprint fading.
     Fft(&'a brine_waves::FftFrame),
 }
@@ -751,8 +751,8 @@ impl<'a> SeaField<'a> {
     fn new(world: &'a World) -> Self {
         match &world.sea {
             Sea::Trochoids(t) => SeaField::Traced(t),
-            Sea::Gerstner(g) => SeaField::Gerstner(g.at_time(world.time), g),
-            Sea::Sine(s) => SeaField::Sine(s.at_time(world.time), s),
+            Sea::Gerstner(g) => SeaField::Gerstner(g.at_time(world.time)),
+            Sea::Sine(s) => SeaField::Sine(s.at_time(world.time)),
             Sea::Fft(f) => SeaField::Fft(f),
         }
     }
@@ -765,14 +765,23 @@ impl<'a> SeaField<'a> {
                 let options = TraceOptions { method: Method::Tiered, footprint_angle: angle, ..world.trace };
                 trace(*t, ray, &options, stats)
             }
-            SeaField::Gerstner(f, _) => trace(f, ray, &world.trace, stats),
-            SeaField::Sine(f, _) => trace(f, ray, &world.trace, stats),
+            // Gerstner and sine seas fade their waves with the pixel footprint as the others do
+            // (primary rays only); secondary rays keep every wave.
+            SeaField::Gerstner(f) if footprint => trace(f, ray, &Self::faded_options(world), stats),
+            SeaField::Sine(f) if footprint => trace(f, ray, &Self::faded_options(world), stats),
+            SeaField::Gerstner(f) => trace(f, ray, &world.trace, stats),
+            SeaField::Sine(f) => trace(f, ray, &world.trace, stats),
             SeaField::Fft(f) => {
                 let angle = if footprint { world.camera.pixel_angle() } else { 0.0 };
                 let options = TraceOptions { method: Method::Tiered, footprint_angle: angle, ..world.trace };
                 trace(*f, ray, &options, stats)
             }
         }
+    }
+
+    /// The options of a primary ray with footprint fading: the tiered method, the pixel's angle.
+    fn faded_options(world: &World) -> TraceOptions {
+        TraceOptions { method: Method::Tiered, footprint_angle: world.camera.pixel_angle(), ..world.trace }
     }
 
     /// Traces the primary rays of a tile (`width` per row) from the camera, with footprint fading;
@@ -807,8 +816,8 @@ impl<'a> SeaField<'a> {
         let options = TraceOptions { t_max, ..world.trace };
         match self {
             SeaField::Traced(t) => trace(*t, ray, &TraceOptions { method: Method::Tiered, ..options }, stats),
-            SeaField::Gerstner(f, _) => trace(f, ray, &options, stats),
-            SeaField::Sine(f, _) => trace(f, ray, &options, stats),
+            SeaField::Gerstner(f) => trace(f, ray, &options, stats),
+            SeaField::Sine(f) => trace(f, ray, &options, stats),
             SeaField::Fft(f) => trace(*f, ray, &TraceOptions { method: Method::Tiered, ..options }, stats),
         }
     }
@@ -821,8 +830,14 @@ impl<'a> SeaField<'a> {
                 let angle = if t > 0.0 { world.camera.pixel_angle() } else { 0.0 };
                 s.faded_gradient(p.x, p.z, d, angle, t)
             }
-            SeaField::Gerstner(_, s) => s.gradient(p.x, p.z, world.time),
-            SeaField::Sine(_, s) => return s.normal(p.x, p.z, world.time),
+            SeaField::Gerstner(f) => {
+                let angle = if t > 0.0 { world.camera.pixel_angle() } else { 0.0 };
+                f.faded_gradient(p.x, p.z, d, angle, t)
+            }
+            SeaField::Sine(f) => {
+                let angle = if t > 0.0 { world.camera.pixel_angle() } else { 0.0 };
+                f.faded_gradient(p.x, p.z, d, angle, t)
+            }
             SeaField::Fft(f) => {
                 let angle = if t > 0.0 { world.camera.pixel_angle() } else { 0.0 };
                 f.faded_gradient(p.x, p.z, d, angle, t)
@@ -849,7 +864,8 @@ impl<'a> SeaField<'a> {
         let c = match self {
             SeaField::Traced(s) => s.faded_slope_covariance(d, world.camera.pixel_angle(), t),
             SeaField::Fft(f) => f.faded_slope_covariance(d, world.camera.pixel_angle(), t),
-            _ => return world.variance_unresolved,
+            SeaField::Gerstner(f) => f.faded_slope_covariance(d, world.camera.pixel_angle(), t),
+            SeaField::Sine(f) => f.faded_slope_covariance(d, world.camera.pixel_angle(), t),
         };
         Self::variance_with(world, c)
     }
@@ -918,5 +934,44 @@ mod tests {
             }
         }
         assert!(hits > 800 && misses > 100, "{hits} hits, {misses} misses: the tiles should see sea and sky");
+    }
+
+    /// Gerstner and sine seas fade their short waves with the pixel footprint, as the trochoid and
+    /// FFT seas do: their primary rays (toward the horizon, where a pixel covers metres) cost far
+    /// fewer evaluations of the sea than the same rays traced with every wave, and the slopes the
+    /// geometry lost reach the BRDF.
+    #[test]
+    fn gerstner_and_sine_primary_rays_fade_with_the_footprint() {
+        for surface in [crate::scene::SurfaceKind::Gerstner, crate::scene::SurfaceKind::Sine] {
+            let mut scene = Scene::default_scene();
+            (scene.camera.width, scene.camera.height) = (160, 90);
+            scene.sea.surface = surface;
+            scene.sea.waves = 120;
+            let world = World::new(&scene).expect("a valid scene");
+            let field = SeaField::new(&world);
+            let (mut faded, mut whole) = (TraceStats::default(), TraceStats::default());
+            let mut lost = 0.0;
+            // The rows from just below the horizon down to mid-image.
+            for y in (46..70).step_by(3) {
+                for x in (0..160).step_by(8) {
+                    let d = world.camera.direction(f64::from(x) + 0.5, f64::from(y) + 0.5);
+                    let ray = Ray::new(world.camera.position, d).expect("unit direction");
+                    if let Some(h) = field.trace(&ray, true, &world, &mut faded) {
+                        let v = field.faded_variance(&world, d, h.t);
+                        lost += v.sigma_x2() + v.sigma_y2()
+                            - world.variance_unresolved.sigma_x2()
+                            - world.variance_unresolved.sigma_y2();
+                    }
+                    field.trace(&ray, false, &world, &mut whole);
+                }
+            }
+            assert!(
+                (faded.evaluations as f64) < 0.5 * whole.evaluations as f64,
+                "{surface:?}: {} evaluations faded, {} whole",
+                faded.evaluations,
+                whole.evaluations
+            );
+            assert!(lost > 0.0, "{surface:?}: the faded slopes reach the BRDF");
+        }
     }
 }

@@ -53,7 +53,11 @@ fn aovs_with_the_default_path_and_an_exr_on_the_command_line_render() {
     // Without -o the default ocean.png cannot hold them: refused with the file named.
     let o = brine(&["render", "scene.toml", "--quiet"], dir.path());
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).starts_with("error: scene.toml: output.aovs = true needs an .exr output"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).starts_with("error: scene.toml line 7: output.aovs = true needs an .exr output"),
+        "{}",
+        stderr(&o)
+    );
 }
 
 #[test]

@@ -41,4 +41,99 @@ impl LipschitzSum for GerstnerField<'_> {
         let a = self.surface().total_amplitude();
         Aabb::slab_y(-a, a)
     }
+
+    /// With footprint fading, the faded Gerstner sum of [`FadedGerstnerRay`] (the waves cannot be
+    /// faded one component at a time: they share the inversion); without, the two components.
+    fn trace_tiered(
+        &self,
+        ray: &brine_trace::Ray,
+        t_enter: f64,
+        t_exit: f64,
+        options: &brine_trace::TraceOptions,
+        stats: &mut brine_trace::TraceStats,
+        log: Option<&mut Vec<brine_trace::Step>>,
+    ) -> Option<brine_trace::Hit> {
+        if options.footprint_angle > 0.0 {
+            let mut tiers = FadedGerstnerRay::new(self, ray, t_exit, options.footprint_angle);
+            brine_trace::trace_tiers(&mut tiers, ray, t_enter, t_exit, options, stats, log)
+        } else {
+            let mut tiers = brine_trace::ComponentTiers::new(self, ray, t_enter, t_exit, 0.0);
+            brine_trace::trace_tiers(&mut tiers, ray, t_enter, t_exit, options, stats, log)
+        }
+    }
+}
+
+/// The faded Gerstner sum along one primary ray, as two tiers for brine-trace's tiered method:
+/// tier 0 is `y`, tier 1 is `−h_w(t)(x, z)`, the Gerstner sum whose waves carry the footprint
+/// weights `wᵢ(t) = smoothstep(1, 1.5, Tᵢ/t)` of the distance along the ray (amplitude and
+/// steepness both scaled, so the faded sum is itself a Gerstner sum and folds no more than the
+/// whole one).
+///
+/// Bounds from `t` on (the waves with `Tᵢ ≤ t` are gone for good): `|h_w| ≤ Σ' Aᵢ` and
+/// `|d h_w/dt| ≤ L' |d̂_xz| + Σ'' |∂h/∂wᵢ| |dwᵢ/dt|` with `L' = Σ' kᵢAᵢ/(1 − Σ' Qᵢ)` (the whole
+/// set's bound over the waves left), `|∂h/∂wᵢ| ≤ Aᵢ + (Σ' kA) Rᵢ/(1 − Σ' Q)` (the explicit term and
+/// the shift of the rest position, `J ∂u/∂wᵢ = −Dᵢ`, `|Dᵢ| ≤ Rᵢ = Qᵢ/kᵢ`) and
+/// `|dwᵢ/dt| ≤ FADE_SLOPE / max(t, Tᵢ/1.5)`; `Σ'` runs over the waves left, `Σ''` over those
+/// still fading before the end of the segment. No curvature bound is given (first-order steps).
+struct FadedGerstnerRay<'f, 'a> {
+    field: &'f GerstnerField<'a>,
+    ray: brine_trace::Ray,
+    t_exit: f64,
+    fade: Vec<f64>,
+    weights: Vec<f64>,
+    scratch: crate::FadedWaves,
+}
+
+impl<'f, 'a> FadedGerstnerRay<'f, 'a> {
+    fn new(field: &'f GerstnerField<'a>, ray: &brine_trace::Ray, t_exit: f64, footprint_angle: f64) -> Self {
+        let fade = field.fade_distances(ray.direction(), footprint_angle);
+        let weights = vec![1.0; fade.len()];
+        Self { field, ray: *ray, t_exit, fade, weights, scratch: crate::FadedWaves::default() }
+    }
+}
+
+impl brine_trace::RayTiers for FadedGerstnerRay<'_, '_> {
+    fn tier_count(&self) -> usize {
+        2
+    }
+
+    fn bounds(&mut self, tier: usize, t: f64) -> brine_trace::TierBounds {
+        let d = self.ray.direction();
+        if tier == 0 {
+            let (a, b) = (self.ray.at(t).y, self.ray.at(self.t_exit).y);
+            return brine_trace::TierBounds::symmetric(a.min(b), a.max(b), d.y.abs(), 0.0);
+        }
+        let (mut amplitude, mut ka, mut q) = (0.0, 0.0, 0.0);
+        for (i, &f) in self.fade.iter().enumerate() {
+            if f > t {
+                let (a, s, qi, _) = self.field.wave_terms(i);
+                amplitude += a;
+                ka += s;
+                q += qi;
+            }
+        }
+        let inverse = 1.0 / (1.0 - q);
+        let mut lipschitz = ka * inverse * (d.x * d.x + d.z * d.z).sqrt();
+        for (i, &f) in self.fade.iter().enumerate() {
+            if f > t && f < 1.5 * self.t_exit {
+                let (a, _, _, r) = self.field.wave_terms(i);
+                lipschitz += (a + ka * r * inverse) * brine_trace::FADE_SLOPE / t.max(f / 1.5);
+            }
+        }
+        brine_trace::TierBounds::symmetric(-amplitude, amplitude, lipschitz, f64::INFINITY)
+    }
+
+    fn sample(&mut self, tier: usize, t: f64) -> brine_trace::TierSample {
+        if tier == 0 {
+            return brine_trace::TierSample { value: self.ray.at(t).y, slope: self.ray.direction().y, terms: 1 };
+        }
+        let mut alive = 0;
+        for (w, &f) in self.weights.iter_mut().zip(&self.fade) {
+            *w = brine_trace::footprint_weight(f, t);
+            alive += u32::from(*w > 0.0);
+        }
+        let p = self.ray.at(t);
+        let h = self.field.faded_height_lanes(p.x, p.z, &self.weights, &mut self.scratch);
+        brine_trace::TierSample { value: -h, slope: f64::NAN, terms: alive }
+    }
 }

@@ -103,6 +103,7 @@
 mod dispersion;
 mod elfouhaily;
 mod error;
+mod fade;
 mod fast_profile;
 mod fft;
 mod fft_frame;
@@ -150,7 +151,8 @@ pub use fft_spectrum::directional_spectrum;
 pub use fit::{AmplitudeRule, FrequencyBin, SeaComponent, SteepnessLimit, fit_sea_state, frequency_bins};
 pub use fit::{FitOptions, FrequencyPartition, fit_trochoids};
 pub use gerstner::{
-    GERSTNER_MAX_ITERATIONS, GERSTNER_TOLERANCE_M, GERSTNER_TOLERANCE_REL, GerstnerField, GerstnerSurface, Inversion,
+    FadedWaves, GERSTNER_MAX_ITERATIONS, GERSTNER_TOLERANCE_M, GERSTNER_TOLERANCE_REL, GerstnerField, GerstnerSurface,
+    Inversion,
 };
 pub use jonswap::Jonswap;
 pub use phillips::Phillips;

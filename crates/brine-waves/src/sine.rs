@@ -164,6 +164,13 @@ impl SineField<'_> {
         g.amplitude[i] * (g.kx[i] * x + g.kz[i] * z + self.offset[i]).cos()
     }
 
+    /// Phase `kᵢ·x + offᵢ` (rad) of geometric wave `i` at `(x, z)`.
+    #[inline]
+    pub(crate) fn wave_phase(&self, i: usize, x: f64, z: f64) -> f64 {
+        let g = &self.set.geometry;
+        g.kx[i] * x + g.kz[i] * z + self.offset[i]
+    }
+
     /// Amplitude `Aᵢ` (m), wavenumber vector `(kxᵢ, kzᵢ)` (rad m⁻¹) of geometric wave `i`.
     pub(crate) fn wave(&self, i: usize) -> (f64, f64, f64) {
         let g = &self.set.geometry;
@@ -230,6 +237,67 @@ impl SineField<'_> {
     /// Finch 2004, Eq. 4–5.
     pub fn gradient(&self, x: f64, z: f64) -> DVec2 {
         self.set.geometry.height_gradient(&self.offset, x, z).1
+    }
+
+    /// Gradient of the geometry at a primary hit `t` metres along the unit direction `d` for a
+    /// pixel of `footprint_angle` rad, each wave weighted by the tracer's footprint weight
+    /// `wᵢ = smoothstep(1, 1.5, Tᵢ/t)`: `∇h = −Σ wᵢAᵢkᵢ sin(kᵢ·x + offᵢ)` (`footprint_angle = 0` or
+    /// `t = 0`: [`SineField::gradient`]).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite.
+    /// - `d`: unit ray direction; `footprint_angle` (rad) `≥ 0`; `t` (m) `≥ 0`.
+    ///
+    /// # Returns
+    /// `∇h` (dimensionless) of the surface that ray traced.
+    ///
+    /// # References
+    /// Finch 2004, Eq. 4–5; Bruneton, Neyret & Holzschuch 2010 §4.
+    pub fn faded_gradient(&self, x: f64, z: f64, d: DVec3, footprint_angle: f64, t: f64) -> DVec2 {
+        if footprint_angle <= 0.0 || t <= 0.0 {
+            return self.gradient(x, z);
+        }
+        let g = &self.set.geometry;
+        let mut out = DVec2::ZERO;
+        for i in 0..g.kx.len() {
+            let w =
+                brine_trace::footprint_weight(crate::fade::wave_fade_distance(g.kx[i], g.kz[i], d, footprint_angle), t);
+            if w > 0.0 {
+                let sn = (g.kx[i] * x + g.kz[i] * z + self.offset[i]).sin();
+                out -= w * g.amplitude[i] * sn * DVec2::new(g.kx[i], g.kz[i]);
+            }
+        }
+        out
+    }
+
+    /// World-axes slope covariance `(xx, xz, zz)` the faded geometric waves lost at a hit `t` along
+    /// `d`: `Σ (1 − wᵢ) ½Aᵢ² (kₓ², kₓk_z, k_z²)`, for the BRDF to carry.
+    ///
+    /// # Arguments
+    /// - `d`: unit ray direction; `footprint_angle` (rad) `≥ 0`; `t` (m) `≥ 0`.
+    ///
+    /// # Returns
+    /// `(xx, xz, zz)` (dimensionless), zero without fading.
+    ///
+    /// # References
+    /// Bruneton, Neyret & Holzschuch 2010 §4.
+    pub fn faded_slope_covariance(&self, d: DVec3, footprint_angle: f64, t: f64) -> DVec3 {
+        if footprint_angle <= 0.0 || t <= 0.0 {
+            return DVec3::ZERO;
+        }
+        let g = &self.set.geometry;
+        let mut out = DVec3::ZERO;
+        for i in 0..g.kx.len() {
+            let lost = 1.0
+                - brine_trace::footprint_weight(
+                    crate::fade::wave_fade_distance(g.kx[i], g.kz[i], d, footprint_angle),
+                    t,
+                );
+            if lost > 0.0 {
+                out += lost * crate::fade::slope_covariance(g.kx[i], g.kz[i], g.amplitude[i]);
+            }
+        }
+        out
     }
 
     /// Gradient of the detail (bump-map) waves, `∇h_d = −Σ_d A_d k_d sin(k_d·x + off_d)`.

@@ -43,6 +43,47 @@ impl LipschitzSum for SineField<'_> {
         if i == 0 { a.y.min(b.y) } else { -self.wave(i - 1).0 }
     }
 
+    fn component_max(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
+        if i == 0 { a.y.max(b.y) } else { self.wave(i - 1).0 }
+    }
+
+    /// `d nᵢ/dt = Aᵢ sin(kᵢ·p_xz + offᵢ) (kᵢ·d̂_xz)` (and `d̂_y` for `n₀ = y`).
+    fn component_directional_derivative(&self, i: usize, p: DVec3, d: DVec3) -> Option<f64> {
+        if i == 0 {
+            return Some(d.y);
+        }
+        let (a, kx, kz) = self.wave(i - 1);
+        Some(a * self.wave_phase(i - 1, p.x, p.z).sin() * (kx * d.x + kz * d.z))
+    }
+
+    /// `|d² nᵢ/dt²| ≤ Aᵢ (kᵢ·d̂_xz)²` (0 for the plane `n₀ = y`).
+    fn component_directional_curvature(&self, i: usize, d: DVec3) -> f64 {
+        if i == 0 {
+            return 0.0;
+        }
+        let (a, kx, kz) = self.wave(i - 1);
+        let s = kx * d.x + kz * d.z;
+        a * s * s
+    }
+
+    fn component_feature_size(&self, i: usize) -> f64 {
+        if i == 0 {
+            f64::INFINITY
+        } else {
+            let (_, kx, kz) = self.wave(i - 1);
+            std::f64::consts::TAU / (kx * kx + kz * kz).sqrt()
+        }
+    }
+
+    /// `Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²))`, `σᵢ = kᵢ·d̂_xz`: the rule of the trochoid tracer.
+    fn component_fade_distance(&self, i: usize, d: DVec3, footprint_angle: f64) -> f64 {
+        if i == 0 {
+            return f64::INFINITY;
+        }
+        let (_, kx, kz) = self.wave(i - 1);
+        crate::fade::wave_fade_distance(kx, kz, d, footprint_angle)
+    }
+
     #[inline]
     fn value(&self, p: DVec3) -> f64 {
         p.y - self.height_lanes(p.x, p.z)

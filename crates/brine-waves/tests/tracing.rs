@@ -83,3 +83,111 @@ proptest! {
         check(&gerstner.at_time(1.5), &ray)?;
     }
 }
+
+/// Footprint angle of the faded traces below (rad): a 0.05° pixel, so that over 400 m every wave
+/// shorter than ~0.35 m per 100 m fades, and grazing rays fade most of the set.
+const PIXEL: f64 = 8.7e-4;
+
+/// First sign change of `f(t)` along `[0, t_max]` by a dense march, refined by bisection.
+fn first_crossing_of(f: &dyn Fn(f64) -> f64, t_max: f64) -> Option<f64> {
+    let mut t = 0.0;
+    let mut v = f(t);
+    while t < t_max {
+        let t2 = t + MARCH;
+        let v2 = f(t2);
+        if v.signum() != v2.signum() {
+            let (mut a, mut b) = (t, t2);
+            for _ in 0..60 {
+                let m = 0.5 * (a + b);
+                if f(m).signum() == v.signum() { a = m } else { b = m }
+            }
+            return Some(0.5 * (a + b));
+        }
+        t = t2;
+        v = v2;
+    }
+    None
+}
+
+/// A faded trace (the tiered method with a footprint) against the march of the faded function it
+/// claims to trace, `F(t) = y − h_{w(t)}`.
+fn check_faded(traced: &dyn LipschitzSum, faded: &dyn Fn(f64) -> f64, ray: &Ray) -> Result<(), TestCaseError> {
+    let opts = TraceOptions {
+        t_max: 400.0,
+        method: brine_trace::Method::Tiered,
+        footprint_angle: PIXEL,
+        ..TraceOptions::default()
+    };
+    let hit = trace(traced, ray, &opts, &mut TraceStats::default());
+    match (hit, first_crossing_of(faded, 400.0)) {
+        (Some(h), Some(r)) => {
+            prop_assert!(faded(h.t).abs() < AT_HIT_ABS, "F(hit) = {}", faded(h.t));
+            prop_assert!((h.t - r).abs() < HIT_AGREEMENT_M, "trace {} vs march {r}", h.t);
+        }
+        (None, None) => {}
+        (a, b) => prop_assert!(false, "trace {a:?} vs march {b:?}"),
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// With footprint fading the Gerstner and sine seas are traced to the first crossing of their
+    /// faded surface (each wave weighted by smoothstep(1, 1.5, Tᵢ/t)), as the trochoids are.
+    #[test]
+    fn faded_hits_are_the_first_crossing_of_the_faded_surface(
+        seed in 0u64..1000,
+        height in 2.0f64..30.0,
+        azimuth in -PI..PI,
+        dip in 0.02f64..0.6,
+    ) {
+        let pm = PiersonMoskowitz::from_u10(8.0).unwrap();
+        let d = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
+        let o = FitOptions { max_total_steepness: 0.5, ..FitOptions::default() };
+        let set = fit_trochoids(&pm, &d, 20, seed, &o).unwrap();
+        let dir = DVec3::new(dip.cos() * azimuth.cos(), -dip.sin(), dip.cos() * azimuth.sin());
+        let ray = Ray::new(DVec3::new(0.0, height, 0.0), dir).unwrap();
+
+        let gerstner = GerstnerSurface::new(&set).unwrap();
+        let g = gerstner.at_time(1.5);
+        let fade = g.fade_distances(dir, PIXEL);
+        let faded_g = |t: f64| {
+            let w: Vec<f64> = fade.iter().map(|&f| brine_trace::footprint_weight(f, t)).collect();
+            let p = ray.at(t);
+            p.y - g.faded_height(p.x, p.z, &w)
+        };
+        check_faded(&g, &faded_g, &ray)?;
+
+        let sine = SineSet::new(&set);
+        let s = sine.at_time(1.5);
+        let faded_s = |t: f64| {
+            let w = brine_trace::component_weights(&s, dir, PIXEL, t);
+            let p = ray.at(t);
+            w.iter().enumerate().map(|(i, wi)| wi * s.component(i, p)).sum::<f64>()
+        };
+        check_faded(&s, &faded_s, &ray)?;
+    }
+}
+
+/// All weights 1 is the whole Gerstner sum; the faded gradient and lost slopes vanish without
+/// fading and the lost slopes grow with the distance.
+#[test]
+fn the_faded_gerstner_sum_tends_to_the_whole_one() {
+    let pm = PiersonMoskowitz::from_u10(10.0).unwrap();
+    let d = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
+    let set = fit_trochoids(&pm, &d, 30, 3, &FitOptions::default()).unwrap();
+    let g = GerstnerSurface::new(&set).unwrap();
+    let f = g.at_time(2.0);
+    let ones = vec![1.0; g.len()];
+    for (x, z) in [(0.0, 0.0), (3.7, -12.0), (150.0, 40.0)] {
+        // The same inversion on the same waves: only the order of a few roundings differs.
+        assert!((f.faded_height(x, z, &ones) - f.height(x, z)).abs() < 1e-12);
+        assert_eq!(f.faded_gradient(x, z, DVec3::X, 0.0, 10.0), f.gradient(x, z));
+    }
+    let dir = DVec3::new(0.99, -0.1, 0.0).normalize();
+    assert_eq!(f.faded_slope_covariance(dir, 0.0, 100.0), DVec3::ZERO);
+    let near = f.faded_slope_covariance(dir, 1e-3, 10.0);
+    let far = f.faded_slope_covariance(dir, 1e-3, 1000.0);
+    assert!(far.x > near.x && far.z > near.z && far.x > 0.0, "{near} {far}");
+}

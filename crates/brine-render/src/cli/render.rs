@@ -122,8 +122,13 @@ pub fn scene_of(args: &RenderArgs) -> Result<Scene, CliError> {
     // with the default `ocean.png` is fine with `-o x.exr`).
     scene.check_output().map_err(|m| {
         let file = scene_name(args);
+        let line = match &args.scene {
+            Some(p) => std::fs::read_to_string(p).ok().and_then(|t| Scene::line_of_key(&t, "output.aovs")),
+            None => Scene::line_of_key(crate::scene::DEFAULT_SCENE_TOML, "output.aovs"),
+        };
+        let at = line.map(|l| format!(" line {l}")).unwrap_or_default();
         let how = if args.output.is_some() { " (given by --output)" } else { "" };
-        CliError::Input(format!("{file}: {m}{how}"))
+        CliError::Input(format!("{file}{at}: {m}{how}"))
     })?;
     if let Some(w) = args.width {
         scene.camera.width = w;

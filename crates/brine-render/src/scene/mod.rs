@@ -534,6 +534,13 @@ impl Scene {
         Ok(scene)
     }
 
+    /// The 1-based line of the key `path` (dotted, `output.aovs`) in the scene text `text`, when
+    /// the text sets it: for messages about a scene once it is loaded.
+    pub fn line_of_key(text: &str, path: &str) -> Option<usize> {
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+        check::Located::parse(text).ok()?.offset_of(path).map(|at| line_of(text, at))
+    }
+
     /// The camera's view when neither `look_at` nor the angles are given: yaw 100°, pitch −9°.
     pub const DEFAULT_YAW_DEG: f64 = 100.0;
     /// See [`Scene::DEFAULT_YAW_DEG`].
