@@ -70,7 +70,7 @@ fn name_flags(subcommand: &str, message: &str) -> String {
 }
 
 /// Replaces the whole-word occurrences of `word` (not inside another identifier, not after a `.`
-/// or a `-`) by `by`.
+/// or a `-`) that name a parameter by `by`.
 fn replace_word(text: &str, word: &str, by: &str) -> String {
     let ident = |c: char| c.is_ascii_alphanumeric() || c == '_';
     let mut out = String::with_capacity(text.len());
@@ -78,7 +78,11 @@ fn replace_word(text: &str, word: &str, by: &str) -> String {
     while let Some(at) = rest.find(word) {
         let before = rest[..at].chars().next_back();
         let after = rest[at + word.len()..].chars().next();
-        let whole = before.is_none_or(|c| !ident(c) && c != '.' && c != '-') && after.is_none_or(|c| !ident(c));
+        // Only a name, not an English word that happens to be a flag ("patch size"): a word
+        // with an underscore, or one followed by ` = ` as the models write `name = value`.
+        let named = word.contains('_') || rest[at + word.len()..].starts_with(" = ");
+        let whole =
+            named && before.is_none_or(|c| !ident(c) && c != '.' && c != '-') && after.is_none_or(|c| !ident(c));
         out += &rest[..at];
         out += if whole { by } else { word };
         rest = &rest[at + word.len()..];
@@ -223,6 +227,9 @@ mod tests {
         // Not inside another name, not after a dot (scene keys), not in another subcommand.
         assert_eq!(replace_word("x_t_water_c sea.t_water_c", "t_water_c", "--t-water-c"), "x_t_water_c sea.t_water_c");
         assert_eq!(name_flags("nope", "t_water_c"), "t_water_c");
+        // Words of the message that are also flags stay words.
+        assert_eq!(name_flags("texture", "smaller than the patch size 24 px"), "smaller than the patch size 24 px");
+        assert_eq!(name_flags("foam", "u10 = 70 is out of range"), "--u10 = 70 is out of range");
     }
 
     #[test]
