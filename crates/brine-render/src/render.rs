@@ -566,10 +566,12 @@ fn shade_surface(
     let x = (world.wind - world.wind.dot(n) * n).normalize_or(n.any_orthonormal_vector());
     let y = n.cross(x);
     let to_local = |a: DVec3| DVec3::new(a.dot(x), a.dot(y), a.dot(n));
-    // The sky is looked up once, at the mirror direction of the resolved facet, and weighted by
-    // the reflectance of the rough surface the unresolved waves make around it: the exact Fresnel
-    // factor times R(θ_v, σ_v)/R(θ_v, 0) of Bruneton et al.'s integral (brine-optics
-    // `RoughReflectance`), so that the distant, rough sea is no mirror at grazing views.
+    // The sky is looked up once, at the mirror direction of the resolved facet, through the
+    // reflection lobe of the unresolved waves (brine-sky `FilteredSky`, a Gaussian of twice their
+    // slope deviation: reflection doubles the facets' tilt), and weighted by the reflectance of
+    // the rough surface they make: the exact Fresnel factor times R(θ_v, σ_v)/R(θ_v, 0) of
+    // Bruneton et al.'s integral (brine-optics `RoughReflectance`), so that the distant, rough sea
+    // is no mirror at grazing views. The filter is normalised: a uniform sky reflects as before.
     let sigma_v = variance.along(to_local(v)).sqrt();
     let f = (fresnel_dielectric(cos_v, 1.0, WATER_IOR)
         * crate::world::rough_reflectance().roughness_factor(cos_v, sigma_v))
@@ -579,7 +581,8 @@ fn shade_surface(
         // A reflection pointing into the sea would hit another wave; take the horizon sky.
         r = DVec3::new(r.x, 1e-3, r.z).normalize();
     }
-    let sky = world.sky.radiance_rgb(r);
+    let lobe = 2.0 * (0.5 * (variance.sigma_x2() + variance.sigma_y2())).sqrt();
+    let sky = world.filtered_sky.radiance(r, lobe, |r| world.sky.radiance_rgb(r));
     // Sun glint and moon glitter through the BRDF of the unresolved slopes: a point source where
     // the disc's image in slope space, q = r/(2 (v·h) h_z² σ_min), is small (the point form errs
     // by O(q²) ≤ 10⁻³), the BRDF integrated over the disc on calmer water.

@@ -74,6 +74,7 @@ mod clouds;
 mod colour;
 mod dome;
 mod error;
+mod filtered;
 mod night;
 mod preetham;
 mod sky;
@@ -91,6 +92,7 @@ pub use clouds::{CloudLayers, CloudParams};
 pub use colour::{linear_srgb_to_xyz, xyy_to_xyz, xyz_to_linear_srgb};
 pub use dome::{fisheye_direction, fisheye_pixel_direction};
 pub use error::SkyError;
+pub use filtered::{FILTERED_SKY_BASE_SIGMA, FILTERED_SKY_LEVELS, FilteredSky};
 pub use night::{
     MOON_MEAN_DISTANCE_KM, MOON_RADIUS_KM, NIGHT_ZENITH_LUMINANCE, SUN_V_MAGNITUDE, V_EXTINCTION, layer_air_mass,
     lommel_seeliger_phase, moon_to_sun_illuminance, moon_to_sun_illuminance_jensen, night_sky_luminance,

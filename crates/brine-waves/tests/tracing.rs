@@ -22,24 +22,17 @@ const HIT_AGREEMENT_M: f64 = 1e-4;
 
 /// First sign change of `F` along the ray by a dense march, refined by bisection.
 fn first_crossing(f: &dyn LipschitzSum, ray: &Ray, t_max: f64) -> Option<f64> {
-    let at = |t: f64| f.value(ray.origin() + t * ray.direction());
-    let mut t = 0.0;
-    let mut v = at(t);
-    while t < t_max {
-        let t2 = t + MARCH;
-        let v2 = at(t2);
-        if v.signum() != v2.signum() {
-            let (mut a, mut b) = (t, t2);
-            for _ in 0..60 {
-                let m = 0.5 * (a + b);
-                if at(m).signum() == v.signum() { a = m } else { b = m }
-            }
-            return Some(0.5 * (a + b));
-        }
-        t = t2;
-        v = v2;
-    }
-    None
+    first_crossing_of(&|t: f64| f.value(ray.origin() + t * ray.direction()), t_max)
+}
+
+/// A 20-wave PM sea at 8 m/s with `ΣQ ≤ 0.5`, and a ray from `height` m down at `dip` rad.
+fn gentle_sea_and_ray(seed: u64, height: f64, azimuth: f64, dip: f64) -> (brine_waves::TrochoidSet, Ray) {
+    let pm = PiersonMoskowitz::from_u10(8.0).unwrap();
+    let d = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
+    let o = FitOptions { max_total_steepness: 0.5, ..FitOptions::default() };
+    let set = fit_trochoids(&pm, &d, 20, seed, &o).unwrap();
+    let dir = DVec3::new(dip.cos() * azimuth.cos(), -dip.sin(), dip.cos() * azimuth.sin());
+    (set, Ray::new(DVec3::new(0.0, height, 0.0), dir).unwrap())
 }
 
 fn check(f: &dyn LipschitzSum, ray: &Ray) -> Result<(), TestCaseError> {
@@ -71,12 +64,7 @@ proptest! {
         azimuth in -PI..PI,
         dip in 0.02f64..1.2,
     ) {
-        let pm = PiersonMoskowitz::from_u10(8.0).unwrap();
-        let d = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
-        let o = FitOptions { max_total_steepness: 0.5, ..FitOptions::default() };
-        let set = fit_trochoids(&pm, &d, 20, seed, &o).unwrap();
-        let dir = DVec3::new(dip.cos() * azimuth.cos(), -dip.sin(), dip.cos() * azimuth.sin());
-        let ray = Ray::new(DVec3::new(0.0, height, 0.0), dir).unwrap();
+        let (set, ray) = gentle_sea_and_ray(seed, height, azimuth, dip);
         let sine = SineSet::new(&set);
         check(&sine.at_time(1.5), &ray)?;
         let gerstner = GerstnerSurface::new(&set).unwrap();
@@ -142,12 +130,8 @@ proptest! {
         azimuth in -PI..PI,
         dip in 0.02f64..0.6,
     ) {
-        let pm = PiersonMoskowitz::from_u10(8.0).unwrap();
-        let d = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
-        let o = FitOptions { max_total_steepness: 0.5, ..FitOptions::default() };
-        let set = fit_trochoids(&pm, &d, 20, seed, &o).unwrap();
-        let dir = DVec3::new(dip.cos() * azimuth.cos(), -dip.sin(), dip.cos() * azimuth.sin());
-        let ray = Ray::new(DVec3::new(0.0, height, 0.0), dir).unwrap();
+        let (set, ray) = gentle_sea_and_ray(seed, height, azimuth, dip);
+        let dir = ray.direction();
 
         let gerstner = GerstnerSurface::new(&set).unwrap();
         let g = gerstner.at_time(1.5);
