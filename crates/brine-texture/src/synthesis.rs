@@ -386,7 +386,7 @@ pub fn synthesize_tileable(
 /// [`wrap_border_test`] for a test with a stated significance).
 ///
 /// # References
-/// Issue #8's seam measure ("the mean colour difference across the wrap equals that inside the
+/// The seam measure ("the mean colour difference across the wrap equals that inside the
 /// texture"); Lai & Wu §III.A (toroidal synthesis).
 pub fn seam_differences(texture: &Texture) -> (f64, f64) {
     let (w, h) = (texture.width(), texture.height());

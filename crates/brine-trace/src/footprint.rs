@@ -98,8 +98,7 @@ pub struct FadedComponents {
 }
 
 /// The components that footprint fading dropped or faded at a hit `t`: the tracer's report of
-/// which waves it left out, so that a renderer can move them into its BRDF roughness (issue #10:
-/// "the tracer reports which"). A partition of the weights of [`component_weights`].
+/// which waves it left out, so that a renderer can move them into its BRDF roughness. A partition of the weights of [`component_weights`].
 ///
 /// # Arguments
 /// - `surface`: the traced function.

@@ -710,7 +710,7 @@ impl RayTiers for SeaTiers<'_> {
 /// How far a downward cone of primary rays with footprint fading certifies, as a multiple of where
 /// it starts (or enters the slab `|y| ≤ ΣA`, or 1 m): waves that fade for some ray of the cone
 /// before `1.5×` that end are held at `−A`, so the shorter the cone's reach the fewer are held.
-/// Measured on the frame of issue #7 (640×480, N = 100, every phenomenon, 16 × 16 tiles):
+/// Measured on the bench frame (640×480, N = 100, every phenomenon, 16 × 16 tiles):
 /// evaluations per frame 1.446 M without a limit, 1.581 M at 1.1, 1.307 M at 1.25, 1.141 M at
 /// 1.4, **1.136 M at 1.5**, 1.137 M at 1.75, 1.139 M at 2, 1.157 M at 4, 1.193 M at 8.
 pub(crate) const CONE_REACH: f64 = 1.5;

@@ -3,6 +3,8 @@
 //! method returns the first sign change found by a dense march (or an earlier, real one the march
 //! skipped).
 
+mod common;
+
 use std::f64::consts::PI;
 use std::sync::OnceLock;
 
@@ -156,27 +158,6 @@ fn f_along(frame: &FftFrame, ray: &Ray, footprint: f64, t: f64) -> f64 {
     v
 }
 
-/// First sign change of `F` along the ray by a dense march, refined by bisection.
-fn first_crossing(f: &dyn Fn(f64) -> f64, t_max: f64) -> Option<f64> {
-    let mut t = 0.0;
-    let mut v = f(t);
-    while t < t_max {
-        let t2 = (t + MARCH).min(t_max);
-        let v2 = f(t2);
-        if v.signum() != v2.signum() {
-            let (mut a, mut b) = (t, t2);
-            for _ in 0..60 {
-                let m = 0.5 * (a + b);
-                if f(m).signum() == v.signum() { a = m } else { b = m }
-            }
-            return Some(0.5 * (a + b));
-        }
-        t = t2;
-        v = v2;
-    }
-    None
-}
-
 /// Agreement of a traced hit and the march's (m): both are refined below 10⁻⁶ m.
 const HIT_TOLERANCE: f64 = 1e-4;
 
@@ -186,7 +167,7 @@ fn check(frame: &FftFrame, ray: &Ray, method: Method, footprint: f64) -> Result<
     let mut stats = TraceStats::default();
     let hit = trace(frame, ray, &opts, &mut stats);
     let f = |t: f64| f_along(frame, ray, footprint, t);
-    let reference = first_crossing(&f, t_max);
+    let reference = common::first_crossing(&f, t_max, MARCH);
     // A crossing the tracer reports must be real: F changes sign across it.
     let real = |t: f64| {
         let h = 2.0 * HIT_TOLERANCE;

@@ -1,6 +1,8 @@
 //! The sine and Gerstner surfaces traced by `brine-trace`: the hit is on the surface and no
 //! earlier crossing exists (checked by a dense march).
 
+mod common;
+
 use std::f64::consts::PI;
 
 use brine_trace::{LipschitzSum, Ray, TraceOptions, TraceStats, trace};
@@ -20,11 +22,6 @@ const AT_HIT_ABS: f64 = 1e-5;
 /// minimum step (10⁻⁴ m), the largest gap two crossings may hide in.
 const HIT_AGREEMENT_M: f64 = 1e-4;
 
-/// First sign change of `F` along the ray by a dense march, refined by bisection.
-fn first_crossing(f: &dyn LipschitzSum, ray: &Ray, t_max: f64) -> Option<f64> {
-    first_crossing_of(&|t: f64| f.value(ray.origin() + t * ray.direction()), t_max)
-}
-
 /// A 20-wave PM sea at 8 m/s with `ΣQ ≤ 0.5`, and a ray from `height` m down at `dip` rad.
 fn gentle_sea_and_ray(seed: u64, height: f64, azimuth: f64, dip: f64) -> (brine_waves::TrochoidSet, Ray) {
     let pm = PiersonMoskowitz::from_u10(8.0).unwrap();
@@ -37,12 +34,21 @@ fn gentle_sea_and_ray(seed: u64, height: f64, azimuth: f64, dip: f64) -> (brine_
 
 fn check(f: &dyn LipschitzSum, ray: &Ray) -> Result<(), TestCaseError> {
     let opts = TraceOptions { t_max: 400.0, ..TraceOptions::default() };
-    let mut stats = TraceStats::default();
-    let hit = trace(f, ray, &opts, &mut stats);
-    let reference = first_crossing(f, ray, 400.0);
-    match (hit, reference) {
+    check_with(f, &|t: f64| f.value(ray.at(t)), ray, &opts)
+}
+
+/// The trace of `traced` with `opts` against the march of `f(t)`, the function it claims to
+/// trace along `ray`.
+fn check_with(
+    traced: &dyn LipschitzSum,
+    f: &dyn Fn(f64) -> f64,
+    ray: &Ray,
+    opts: &TraceOptions,
+) -> Result<(), TestCaseError> {
+    let hit = trace(traced, ray, opts, &mut TraceStats::default());
+    match (hit, common::first_crossing(f, opts.t_max, MARCH)) {
         (Some(h), Some(r)) => {
-            prop_assert!(f.value(h.point).abs() < AT_HIT_ABS, "F(hit) = {}", f.value(h.point));
+            prop_assert!(f(h.t).abs() < AT_HIT_ABS, "F(hit) = {}", f(h.t));
             // The tracer may only miss crossing pairs closer than its minimum step (1e-4 m); the
             // reference march may miss pairs closer than MARCH. Either way the hits agree unless
             // such a skim exists, which these gentle seas (ΣQ ≤ 0.5) do not produce at 1 cm.
@@ -76,27 +82,6 @@ proptest! {
 /// shorter than ~0.35 m per 100 m fades, and grazing rays fade most of the set.
 const PIXEL: f64 = 8.7e-4;
 
-/// First sign change of `f(t)` along `[0, t_max]` by a dense march, refined by bisection.
-fn first_crossing_of(f: &dyn Fn(f64) -> f64, t_max: f64) -> Option<f64> {
-    let mut t = 0.0;
-    let mut v = f(t);
-    while t < t_max {
-        let t2 = t + MARCH;
-        let v2 = f(t2);
-        if v.signum() != v2.signum() {
-            let (mut a, mut b) = (t, t2);
-            for _ in 0..60 {
-                let m = 0.5 * (a + b);
-                if f(m).signum() == v.signum() { a = m } else { b = m }
-            }
-            return Some(0.5 * (a + b));
-        }
-        t = t2;
-        v = v2;
-    }
-    None
-}
-
 /// A faded trace (the tiered method with a footprint) against the march of the faded function it
 /// claims to trace, `F(t) = y − h_{w(t)}`.
 fn check_faded(traced: &dyn LipschitzSum, faded: &dyn Fn(f64) -> f64, ray: &Ray) -> Result<(), TestCaseError> {
@@ -106,16 +91,7 @@ fn check_faded(traced: &dyn LipschitzSum, faded: &dyn Fn(f64) -> f64, ray: &Ray)
         footprint_angle: PIXEL,
         ..TraceOptions::default()
     };
-    let hit = trace(traced, ray, &opts, &mut TraceStats::default());
-    match (hit, first_crossing_of(faded, 400.0)) {
-        (Some(h), Some(r)) => {
-            prop_assert!(faded(h.t).abs() < AT_HIT_ABS, "F(hit) = {}", faded(h.t));
-            prop_assert!((h.t - r).abs() < HIT_AGREEMENT_M, "trace {} vs march {r}", h.t);
-        }
-        (None, None) => {}
-        (a, b) => prop_assert!(false, "trace {a:?} vs march {b:?}"),
-    }
-    Ok(())
+    check_with(traced, faded, ray, &opts)
 }
 
 proptest! {
