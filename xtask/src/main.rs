@@ -1,4 +1,4 @@
-//! Project automation for Brine: `cargo xtask ci | bench | plots | gallery | golden`.
+//! Project automation for Brine: `cargo xtask ci | bench | plots | gallery | golden | beaufort`.
 //!
 //! Everything here shells out to `cargo` (so the usual profiles apply) except `plots`, which calls
 //! the model crates directly and writes SVG files under `docs/models/plots/`.
@@ -8,6 +8,7 @@ use std::process::{Command, ExitCode};
 
 use clap::{Parser, Subcommand};
 
+mod beaufort;
 mod bench;
 mod plots;
 
@@ -36,7 +37,8 @@ enum Task {
         /// Crates to plot, e.g. `brine-waves`.
         crates: Vec<String>,
     },
-    /// Render the scenes of docs/gallery/*.toml to docs/gallery/*.png with the release build.
+    /// Render the scenes of docs/gallery/*.toml to docs/gallery/*.png with the release build, then
+    /// the Beaufort sheet (docs/beaufort.md) when no scene is named.
     Gallery {
         /// Scene names (file stems) to render; all when empty.
         names: Vec<String>,
@@ -47,6 +49,8 @@ enum Task {
         #[arg(long)]
         bless: bool,
     },
+    /// Render and measure the Beaufort sheet only (docs/beaufort.md, docs/beaufort/*.png).
+    Beaufort,
 }
 
 /// The workspace root (the parent of this crate's folder).
@@ -76,7 +80,11 @@ fn run(cli: Cli) -> Result<(), String> {
         }
         Task::Bench { names, list } => bench::run(&names, list),
         Task::Plots { crates } => plots::run(&root(), &crates),
-        Task::Gallery { names } => gallery(&names),
+        Task::Gallery { names } => {
+            gallery(&names)?;
+            if names.is_empty() { beaufort::run(&root()) } else { Ok(()) }
+        }
+        Task::Beaufort => beaufort::run(&root()),
         Task::Golden { bless } => {
             let envs: &[(&str, &str)] = if bless { &[("BRINE_BLESS", "1")] } else { &[] };
             cargo(&["test", "-p", "brine-tests", "--test", "golden"], envs)

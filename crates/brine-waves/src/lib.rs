@@ -100,6 +100,7 @@
 //! - Cox C., Munk W. 1954, JOSA 44(11) (slope statistics); Dupuy J., Bruneton E. 2012 (Jacobian);
 //!   Bruneton E. et al. 2010, CGF 29(2) (Gerstner sums).
 
+mod detail;
 mod dispersion;
 mod elfouhaily;
 mod error;
@@ -134,6 +135,7 @@ mod tma;
 mod traced;
 mod trochoid;
 
+pub use detail::{DETAIL_MIN_WAVELENGTH_M, DetailOptions, DetailSlopes, DetailWaves};
 pub use dispersion::{Dispersion, ELFOUHAILY_K_M, SEA_WATER_DENSITY, SEA_WATER_SURFACE_TENSION};
 pub use dispersion::{G, omega_deep_water, wavenumber_deep_water};
 pub use elfouhaily::{Elfouhaily, ElfouhailySpreading};

@@ -314,6 +314,40 @@ impl SineField<'_> {
         self.set.detail.height_gradient(&self.detail_offset, x, z).1
     }
 
+    /// The detail (bump-map) waves faded with the pixel footprint as the geometric ones are
+    /// ([`Self::faded_gradient`]): the gradient of what a pixel at `t` along `d` still resolves,
+    /// `−Σ_d w_d A_d k_d sin(k_d·x + off_d)`, and the world-axes slope covariance `(xx, xz, zz)`
+    /// of what it no longer does, `Σ_d (1 − w_d) ½A_d² (kₓ², kₓk_z, k_z²)`, for the BRDF.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite; `d`: unit ray direction;
+    ///   `footprint_angle` (rad) `≥ 0` and `t` (m) `≥ 0` (either 0: no fading).
+    ///
+    /// # Returns
+    /// `(∇h_d, covariance)`, both dimensionless.
+    ///
+    /// # References
+    /// Chen et al. 2007, §3.3 (bump-mapped detail); Bruneton, Neyret & Holzschuch 2010 §4 (fading).
+    pub fn faded_detail(&self, x: f64, z: f64, d: DVec3, footprint_angle: f64, t: f64) -> (DVec2, DVec3) {
+        let w = &self.set.detail;
+        let (mut g, mut c) = (DVec2::ZERO, DVec3::ZERO);
+        for i in 0..w.kx.len() {
+            let weight = if footprint_angle > 0.0 && t > 0.0 {
+                brine_trace::footprint_weight(crate::fade::wave_fade_distance(w.kx[i], w.kz[i], d, footprint_angle), t)
+            } else {
+                1.0
+            };
+            if weight > 0.0 {
+                let sn = (w.kx[i] * x + w.kz[i] * z + self.detail_offset[i]).sin();
+                g -= weight * w.amplitude[i] * sn * DVec2::new(w.kx[i], w.kz[i]);
+            }
+            if weight < 1.0 {
+                c += (1.0 - weight) * crate::fade::slope_covariance(w.kx[i], w.kz[i], w.amplitude[i]);
+            }
+        }
+        (g, c)
+    }
+
     /// Shading normal: the detail normal `(−∇h_d, 1)` expressed in the tangent frame of the geometry,
     /// `B ∝ (1, ∂h/∂x, 0)`, `T ∝ (0, ∂h/∂z, 1)`, `N ∝ (−∂h/∂x, 1, −∂h/∂z)`.
     ///

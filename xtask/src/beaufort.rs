@@ -1,0 +1,212 @@
+//! The Beaufort sheet: the same view of the sea at six winds on the trochoid and FFT surfaces,
+//! rendered and measured, written to `docs/beaufort.md` with its images in `docs/beaufort/`.
+//!
+//! Each image is measured from its own output variables:
+//! - **detail**: the variance of the shading normals' slopes `(−nₓ/n_y, −n_z/n_y)` over the sea
+//!   between 10 and 30 m from the eye, as a share of Cox & Munk's clean-surface total at the
+//!   scene's wind (12.5 m above the sea, the neutral log profile);
+//! - **peaks**: on a top-down view of the same sea (50 m up, 256² normals), the share of the slope
+//!   power held by the 20 strongest wave vectors of its 2-D spectrum; a handful of crossing waves
+//!   (a lattice of glints) puts most of the power there, a sea of many waves very little.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use brine_render::{Frame, RenderOptions, Scene};
+use rustfft::FftPlanner;
+use rustfft::num_complex::Complex64;
+
+/// Winds of the sheet (m s⁻¹, 10 m above the sea): Beaufort 2, 3, 5, 6, 7 and 9.
+const WINDS: [f64; 6] = [2.0, 5.0, 8.0, 12.0, 16.0, 22.0];
+
+/// Surfaces of the sheet, as `[sea] surface` names.
+const SURFACES: [&str; 2] = ["trochoids", "fft"];
+
+/// Near field of the detail figure (m from the eye).
+const NEAR_FIELD_M: (f32, f32) = (10.0, 30.0);
+
+/// Side of the top-down normal map (pixels) and how many of its strongest wave vectors count as peaks.
+const TOP_DOWN_SIZE: u32 = 256;
+const PEAKS: usize = 20;
+
+/// The scene of one image: a camera 10 m up looking 8° down, the sun 30° high and 90° to the side.
+fn scene_text(surface: &str, wind: f64, top_down: bool, spp: u32) -> String {
+    let camera = if top_down {
+        format!(
+            "position = [0.0, 50.0, 0.0]\npitch_deg = -90.0\nyaw_deg = 0.0\nwidth = {TOP_DOWN_SIZE}\nheight = {TOP_DOWN_SIZE}\nfov_deg = 60.0\n"
+        )
+    } else {
+        format!(
+            "position = [0.0, 10.0, 0.0]\npitch_deg = -8.0\nyaw_deg = 0.0\nwidth = 640\nheight = 360\nspp = {spp}\n"
+        )
+    };
+    format!(
+        "[camera]\n{camera}\n[sea]\nsurface = \"{surface}\"\nwind_speed_m_s = {wind}\nwind_direction_deg = 20.0\nseed = 3\n\n\
+         [sky]\nsun_elevation_deg = 30.0\nsun_azimuth_deg = 90.0\n\n[sky.clouds]\ncover = 0.35\n"
+    )
+}
+
+/// Cox & Munk's clean-surface mean-square slope `σ_u² + σ_c² = 0.003 + 5.12×10⁻³ U₁₂.₅`, with
+/// `U₁₂.₅ = U₁₀ ln(12.5/z₀)/ln(10/z₀)`, `z₀ = 2×10⁻⁴ m` (as the renderer's BRDF).
+fn cox_munk_total(u10: f64) -> f64 {
+    let z0: f64 = 2e-4;
+    let u = u10 * (12.5 / z0).ln() / (10.0 / z0).ln();
+    0.003 + 5.12e-3 * u
+}
+
+fn render(text: &str, name: &str) -> Result<Frame, String> {
+    let scene = Scene::from_toml_str(text, name).map_err(|e| e.to_string())?;
+    brine_render::render(&scene, &RenderOptions::default(), &|| {}).map_err(|e| e.to_string())
+}
+
+/// The slopes `(−nₓ/n_y, −n_z/n_y)` of the sea pixels whose depth is in `range`.
+fn slopes(frame: &Frame, range: (f32, f32)) -> Vec<(f64, f64)> {
+    frame
+        .aovs
+        .iter()
+        .filter(|a| a.depth >= range.0 && a.depth <= range.1 && a.normal[1] > 0.05)
+        .map(|a| (-f64::from(a.normal[0] / a.normal[1]), -f64::from(a.normal[2] / a.normal[1])))
+        .collect()
+}
+
+/// Variance of the slopes about their mean, `var(sₓ) + var(s_z)`.
+fn slope_variance(s: &[(f64, f64)]) -> f64 {
+    let n = s.len().max(1) as f64;
+    let (mx, mz) = s.iter().fold((0.0, 0.0), |a, p| (a.0 + p.0 / n, a.1 + p.1 / n));
+    s.iter().map(|p| (p.0 - mx).powi(2) + (p.1 - mz).powi(2)).sum::<f64>() / n
+}
+
+/// Share of the slope power (mean removed) in the [`PEAKS`] strongest bins of the 2-D spectra of
+/// both slope components of a top-down frame.
+fn peak_share(frame: &Frame) -> f64 {
+    let n = frame.width as usize;
+    let mut planner = FftPlanner::new();
+    let fft = planner.plan_fft_forward(n);
+    let mut power = vec![0.0; n * n];
+    for component in [0usize, 2] {
+        let mut grid: Vec<Complex64> = frame
+            .aovs
+            .iter()
+            .map(|a| {
+                let ny = a.normal[1].max(0.05);
+                Complex64::new(-f64::from(a.normal[component] / ny), 0.0)
+            })
+            .collect();
+        let mean = grid.iter().map(|c| c.re).sum::<f64>() / (n * n) as f64;
+        grid.iter_mut().for_each(|c| c.re -= mean);
+        for row in grid.chunks_mut(n) {
+            fft.process(row);
+        }
+        let mut column = vec![Complex64::ZERO; n];
+        for x in 0..n {
+            for y in 0..n {
+                column[y] = grid[y * n + x];
+            }
+            fft.process(&mut column);
+            for y in 0..n {
+                power[y * n + x] += column[y].norm_sqr();
+            }
+        }
+    }
+    let total: f64 = power.iter().sum();
+    power.sort_by(|a, b| b.total_cmp(a));
+    // A real field's spectrum is symmetric: each wave is two bins.
+    power.iter().take(2 * PEAKS).sum::<f64>() / total.max(f64::MIN_POSITIVE)
+}
+
+/// Winds up to which the sparkle figure is measured (m s⁻¹), and its reference sample count.
+const SPARKLE_MAX_WIND: f64 = 5.0;
+const SPARKLE_SPP: u32 = 16;
+
+/// Far field of the sparkle figure (m from the eye).
+const FAR_FIELD_M: (f32, f32) = (150.0, 2500.0);
+
+/// RMS high-pass noise of the displayed image over the far field, in 8-bit grey levels: the
+/// luminance `0.2126 R + 0.7152 G + 0.0722 B` of the PNG (tone-mapped, sRGB) minus the mean of its
+/// eight neighbours, at pixels whose 3 × 3 neighbourhood is all far-field sea. The frame is
+/// written to `png` and read back, so the figure is of the image as a user sees it.
+fn far_noise(frame: &Frame, png: &Path) -> Result<f64, String> {
+    brine_render::write_frame(png, frame, frame.exposure_ev, false).map_err(|e| e.to_string())?;
+    let img = image::open(png).map_err(|e| format!("cannot read {}: {e}", png.display()))?.to_rgb8();
+    let (w, h) = (frame.width as usize, frame.height as usize);
+    let y: Vec<f64> =
+        img.pixels().map(|p| 0.2126 * f64::from(p[0]) + 0.7152 * f64::from(p[1]) + 0.0722 * f64::from(p[2])).collect();
+    let far = |i: usize| (FAR_FIELD_M.0..=FAR_FIELD_M.1).contains(&frame.aovs[i].depth);
+    let (mut sum, mut n) = (0.0, 0.0);
+    for r in 1..h - 1 {
+        for c in 1..w - 1 {
+            let around = [
+                (r - 1, c - 1),
+                (r - 1, c),
+                (r - 1, c + 1),
+                (r, c - 1),
+                (r, c + 1),
+                (r + 1, c - 1),
+                (r + 1, c),
+                (r + 1, c + 1),
+            ];
+            if !far(r * w + c) || !around.iter().all(|&(a, b)| far(a * w + b)) {
+                continue;
+            }
+            let mean = around.iter().map(|&(a, b)| y[a * w + b]).sum::<f64>() / 8.0;
+            sum += (y[r * w + c] - mean).powi(2);
+            n += 1.0;
+        }
+    }
+    if n < 100.0 {
+        return Err(format!("too few far-field sea pixels ({n}) for the sparkle figure"));
+    }
+    Ok((sum / n).sqrt())
+}
+
+/// Renders and measures the sheet, writing `docs/beaufort.md` and `docs/beaufort/*.png`.
+pub fn run(root: &Path) -> Result<(), String> {
+    let dir = root.join("docs/beaufort");
+    std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let mut rows = String::new();
+    for wind in WINDS {
+        let mut cells = Vec::new();
+        for surface in SURFACES {
+            let name = format!("{surface}-{wind:02}");
+            eprintln!("beaufort: {name}");
+            let frame = render(&scene_text(surface, wind, false, 1), &format!("{name}.toml"))?;
+            let png = dir.join(format!("{name}.png"));
+            brine_render::write_frame(&png, &frame, frame.exposure_ev, false).map_err(|e| e.to_string())?;
+            let detail = slope_variance(&slopes(&frame, NEAR_FIELD_M)) / cox_munk_total(wind);
+            let top = render(&scene_text(surface, wind, true, 1), &format!("{name}-top.toml"))?;
+            let peaks = peak_share(&top);
+            let sparkle = if wind <= SPARKLE_MAX_WIND {
+                let fine = render(&scene_text(surface, wind, false, SPARKLE_SPP), &format!("{name}-spp.toml"))?;
+                format!(" · sparkle {:.2}", far_noise(&frame, &png)? / far_noise(&fine, &dir.join("spp.png"))?)
+            } else {
+                String::new()
+            };
+            cells.push(format!(
+                "![{surface} at {wind} m/s](beaufort/{name}.png)<br>detail {detail:.2} · peaks {peaks:.2}{sparkle}"
+            ));
+        }
+        let _ = writeln!(rows, "| {wind} | {} |", cells.join(" | "));
+    }
+    let page = format!(
+        "# The sea at six winds\n\n\
+         The same view — a camera 10 m above the sea looking 8° down, the sun 30° high and 90° to the\n\
+         right, a third of the sky clouded, a vertical field of view of 50° — at 2, 5, 8, 12, 16 and 22 m/s (Beaufort 2 to 9), on the\n\
+         trochoid sea (the default) and the FFT sea. Every other key is the default scene's.\n\
+         Regenerate with `cargo xtask gallery` (which also renders `docs/gallery/`).\n\n\
+         Under each image, measured from the render's own output variables:\n\n\
+         - **detail**: the slope variance of the shading normals 10–30 m from the eye, as a share of\n\
+           Cox & Munk's clean-surface total at that wind. The rest of the slopes are in the BRDF:\n\
+           the pixel, 2–15 cm wide there, cannot show them.\n\
+         - **peaks**: on a top-down view of the same sea (50 m up, 256 × 256 normals), the share of the\n\
+           slope power in its {PEAKS} strongest wave vectors. A handful of crossing waves — a lattice of\n\
+           glints — puts most of the power there; a sea of many waves little.\n\
+         - **sparkle** (2 and 5 m/s): the high-pass noise of the far field (150 m to 2.5 km) at 1\n\
+           sample per pixel over that at {SPARKLE_SPP}: near 1 when each pixel is filtered over its\n\
+           footprint, large when sub-pixel glints alias.\n\n\
+         | U₁₀ (m/s) | trochoids | FFT |\n|---|---|---|\n{rows}"
+    );
+    let path = root.join("docs/beaufort.md");
+    std::fs::write(&path, page).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    eprintln!("wrote {}", path.display());
+    Ok(())
+}
