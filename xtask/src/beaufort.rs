@@ -177,7 +177,8 @@ pub fn run(root: &Path) -> Result<(), String> {
             let peaks = peak_share(&top);
             let sparkle = if wind <= SPARKLE_MAX_WIND {
                 let fine = render(&scene_text(surface, wind, false, SPARKLE_SPP), &format!("{name}-spp.toml"))?;
-                format!(" · sparkle {:.2}", far_noise(&frame, &png)? / far_noise(&fine, &dir.join("spp.png"))?)
+                let reference = root.join("target").join(format!("beaufort-{name}-spp{SPARKLE_SPP}.png"));
+                format!(" · sparkle {:.2}", far_noise(&frame, &png)? / far_noise(&fine, &reference)?)
             } else {
                 String::new()
             };
