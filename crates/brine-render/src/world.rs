@@ -12,10 +12,10 @@ use brine_optics::{
 use brine_sky::{CloudParams, FilteredSky, MoonParams, Sky, SkyParams};
 use brine_trace::{Method, TraceOptions};
 use brine_waves::{
-    CosineSquared, CosineTwoS, DetailOptions, DetailSlopes, DetailWaves, Directions, Dispersion, DonelanBanner,
-    Elfouhaily, FftFrame, FftOcean, FftOptions, FftSlopeFilter, FitOptions, GerstnerSurface, Jonswap, Phillips,
-    PiersonMoskowitz, SeaComponent, SineSet, Spectrum, Spreading, SteepnessLimit, Tma, TracedTrochoids, Trochoid,
-    TrochoidSet, TrochoidSum, WaveSurface, fit_sea_state,
+    BandLimited, CosineSquared, CosineTwoS, DetailOptions, DetailSlopes, DetailWaves, Directions, Dispersion,
+    DonelanBanner, Elfouhaily, FftFrame, FftOcean, FftOptions, FftSlopeFilter, FitOptions, GerstnerSurface, Jonswap,
+    Phillips, PiersonMoskowitz, SeaComponent, SineSet, Spectrum, Spreading, SteepnessLimit, Tma, TracedTrochoids,
+    Trochoid, TrochoidSet, TrochoidSum, WaveSurface, fit_sea_state,
 };
 use brine_whitecap::{
     Calibration, CalibrationOptions, ErfMethod, FftCalibration, FftJacobianStatistics, FootprintFilter,
@@ -383,13 +383,37 @@ struct SeaSpectra {
     spreadings: Vec<Box<dyn Spreading>>,
     counts: Vec<usize>,
     options: Vec<FitOptions>,
+    /// The wavenumber (rad m⁻¹) up to which the wind sea's spectrum holds Cox & Munk's total
+    /// slope variance ([`slope_cutoff`]); infinite without a wind sea.
+    k_cox_munk: f64,
+}
+
+/// Shortest wave any surface draws when the spectrum holds less slope than Cox & Munk's total
+/// above it (m): 1 mm, the end of the capillary range.
+const SHORTEST_WAVE_M: f64 = 1e-3;
+
+/// The wavenumber up to which a wind sea's spectrum, from half its peak frequency (where the fit
+/// starts), holds Cox & Munk's clean-surface total slope variance for `u10`; `2π/1 mm` if it holds
+/// less. Beyond it no surface draws waves: at light wind the gravity-range spectra's `k⁻³` tail
+/// would give the sea more slope than Cox & Munk measured (1.4× at 2 m/s for the trochoid band
+/// `[0.5, 12] ω_p` of Pierson–Moskowitz), where real seas carry few capillaries.
+fn slope_cutoff(spectrum: &dyn Spectrum, u10: f64) -> Result<f64, WorldError> {
+    let total =
+        SlopeVariance::cox_munk_clean(u12_5_from_u10(u10).min(60.0)).map_err(|e| WorldError::Model(e.to_string()))?;
+    let k_lo = spectrum.dispersion().wavenumber(0.5 * spectrum.peak_omega());
+    let k_cap = std::f64::consts::TAU / SHORTEST_WAVE_M;
+    if !(k_lo < k_cap) {
+        return Ok(k_cap);
+    }
+    Ok(brine_waves::wavenumber_of_slope(spectrum, k_lo, total.sigma_x2() + total.sigma_y2(), k_cap))
 }
 
 /// `any_count`: include the wind sea whatever its wave count (the FFT ocean has no count).
 fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, WorldError> {
     let err = |e: brine_waves::WaveError| WorldError::Model(e.to_string());
     let wind_angle = s.wind_direction_deg.to_radians();
-    let sea_options = FitOptions { wind_direction: wind_angle, choppiness: s.choppiness, ..FitOptions::default() };
+    let mut sea_options = FitOptions { wind_direction: wind_angle, choppiness: s.choppiness, ..FitOptions::default() };
+    let mut k_cox_munk = f64::INFINITY;
     let mut spectra: Vec<Box<dyn Spectrum>> = Vec::new();
     let mut spreadings: Vec<Box<dyn Spreading>> = Vec::new();
     let mut counts = Vec::new();
@@ -397,6 +421,10 @@ fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, WorldError>
     if s.wind_speed_m_s > 0.0 && (any_count || s.waves > 0) {
         let spectrum = sea_spectrum(s).map_err(err)?;
         let wp = spectrum.peak_omega();
+        k_cox_munk = slope_cutoff(spectrum.as_ref(), s.wind_speed_m_s)?;
+        // The fitted band ends at 12 ω_p, or sooner where the spectrum reaches Cox & Munk's total.
+        let top = (spectrum.dispersion().omega(k_cox_munk) / wp).min(sea_options.omega_max_factor);
+        sea_options.omega_max_factor = top.max(2.0 * sea_options.omega_min_factor);
         let spreading: Box<dyn Spreading> = match (s.spreading, s.spectrum) {
             (SpreadingKind::Auto, SpectrumKind::Elfouhaily) | (SpreadingKind::Elfouhaily, _) => {
                 let e = match s.fetch_km {
@@ -421,16 +449,20 @@ fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, WorldError>
         spectra.push(Box::new(spectrum));
         spreadings.push(Box::new(spreading));
         counts.push(w.waves as usize);
-        options.push(FitOptions { wind_direction: w.direction_deg.to_radians(), ..sea_options });
+        options.push(FitOptions {
+            wind_direction: w.direction_deg.to_radians(),
+            omega_max_factor: FitOptions::default().omega_max_factor,
+            ..sea_options
+        });
     }
-    Ok(SeaSpectra { spectra, spreadings, counts, options })
+    Ok(SeaSpectra { spectra, spreadings, counts, options, k_cox_munk })
 }
 
 /// The wind sea (and swell) of `[sea]` as one trochoid set, fitted under one steepness cap
 /// (Thon & Ghazanfarpour 2002 as in Darles et al. 2007 §3; brine-waves `fit_sea_state`).
 fn fit_sea(s: &SeaConfig) -> Result<TrochoidSet, WorldError> {
     let err = |e: brine_waves::WaveError| WorldError::Model(e.to_string());
-    let SeaSpectra { spectra, spreadings, counts, options } = sea_spectra(s, false)?;
+    let SeaSpectra { spectra, spreadings, counts, options, .. } = sea_spectra(s, false)?;
     if spectra.is_empty() {
         return Ok(TrochoidSet::default());
     }
@@ -492,7 +524,7 @@ impl Spreading for SummedSpectrum<'_> {
 /// a flat calm (brine-waves `FftOcean`).
 fn fft_sea(s: &SeaConfig) -> Result<Option<FftFrame>, WorldError> {
     let err = |e: brine_waves::WaveError| WorldError::Model(e.to_string());
-    let SeaSpectra { spectra, spreadings, options, .. } = sea_spectra(s, true)?;
+    let SeaSpectra { spectra, spreadings, options, k_cox_munk, .. } = sea_spectra(s, true)?;
     if spectra.is_empty() {
         return Ok(None);
     }
@@ -511,7 +543,9 @@ fn fft_sea(s: &SeaConfig) -> Result<Option<FftFrame>, WorldError> {
         wind_direction: wind,
         ..FftOptions::for_spectrum(&summed, f.cascades as usize)
     };
-    let ocean = FftOcean::new(&summed, &summed, &fft_options).map_err(err)?;
+    // No cascade draws waves beyond the one where the wind sea reaches Cox & Munk's total.
+    let drawn = BandLimited::between_wavenumbers(&summed, 0.0, k_cox_munk);
+    let ocean = FftOcean::new(&drawn, &summed, &fft_options).map_err(err)?;
     Ok(Some(ocean.at_time(s.time_s)))
 }
 
@@ -694,7 +728,7 @@ impl World {
         // water–air temperature difference), shared between foam and active whitecaps.
         let ph = &scene.phenomena;
         let law = match (scene.water.temperature_c, scene.water.air_temperature_c) {
-            (Some(tw), Some(ta)) => WhitecapLaw::Monahan1986Stability { delta_t_c: tw - ta },
+            (Some(tw), Some(ta)) => WhitecapLaw::monahan_1986_from_temperatures(tw, ta).map_err(|e| model(&e))?,
             _ => WhitecapLaw::Monahan1980,
         };
         let monahan = brine_foam::whitecap_coverage(
@@ -859,5 +893,48 @@ mod tests {
         scene.sea.wind_speed_m_s = 0.0;
         let world = World::new(&scene).expect("a valid scene");
         assert!(world.detail.is_none() && world.fft_slopes.is_none());
+    }
+
+    /// At light wind the drawn sea holds no more slope than Cox & Munk measured: the fitted band
+    /// and the FFT cascades stop where the spectrum reaches their total (at 2 m/s the trochoid
+    /// band `[0.5, 12] ω_p` held 1.4× of it). The fitted set's waves are the band's discrete
+    /// amplitudes and directions, not its integral.
+    #[test]
+    fn light_wind_seas_draw_no_more_slope_than_cox_and_munk() {
+        const DISCRETE_REL: f64 = 0.05;
+        for surface in [SurfaceKind::Trochoids, SurfaceKind::Fft] {
+            for wind in [2.0, 3.0] {
+                let mut scene = Scene::default_scene();
+                scene.sea.wind_speed_m_s = wind;
+                scene.sea.surface = surface;
+                let world = World::new(&scene).expect("a valid scene");
+                let drawn = match &world.sea {
+                    Sea::Fft(frame) => {
+                        let c: DVec3 = frame.cascades().iter().map(|c| c.expected_slope_covariance()).sum();
+                        c.x + c.z
+                    }
+                    _ => {
+                        let (a, b) = world.set.slope_variances(0.0);
+                        a + b
+                    }
+                };
+                let total = world.variance_total.sigma_x2() + world.variance_total.sigma_y2();
+                assert!(
+                    drawn <= total * (1.0 + DISCRETE_REL),
+                    "{surface:?} at {wind} m/s: drawn {drawn}, total {total}"
+                );
+                assert!(drawn > 0.5 * total, "{surface:?} at {wind} m/s: drawn {drawn}, total {total}");
+            }
+        }
+    }
+
+    /// Two temperatures at the ±30 °C envelope written in decimals differ by their rounding
+    /// (12.7 − 42.7 = −30.000000000000004): the scene accepts them and so does the world.
+    #[test]
+    fn a_temperature_difference_at_the_envelope_builds_a_world() {
+        let scene = Scene::from_toml_str("[water]\ntemperature_c = 12.7\nair_temperature_c = 42.7\n", "envelope.toml")
+            .expect("a scene at the envelope");
+        let world = World::new(&scene);
+        assert!(world.is_ok(), "{:?}", world.err());
     }
 }

@@ -71,18 +71,7 @@ impl DetailOptions {
         if !(k_lo > 0.0 && k_lo < k_cap && target_mss > 0.0) {
             return None;
         }
-        let mss = |k: f64| spectrum.mean_square_slope_between(k_lo, k);
-        let k_hi = if mss(k_cap) <= target_mss {
-            k_cap
-        } else {
-            // Bisection in ln k: the cumulative slope is increasing in k.
-            let (mut a, mut b) = (k_lo.ln(), k_cap.ln());
-            for _ in 0..60 {
-                let m = 0.5 * (a + b);
-                if mss(m.exp()) < target_mss { a = m } else { b = m }
-            }
-            b.exp()
-        };
+        let k_hi = wavenumber_of_slope(spectrum, k_lo, target_mss, k_cap);
         (k_hi > k_lo * (1.0 + 1e-9)).then_some(Self {
             k_lo,
             k_hi,
@@ -94,14 +83,33 @@ impl DetailOptions {
     }
 }
 
-/// The spectrum restricted to the detail band: `S(ω)` for `k(ω) ∈ [k_lo, k_hi]`, else 0.
-struct Band<'a> {
+/// A spectrum restricted to a band of frequencies: `S(ω)` for `ω ∈ [ω_lo, ω_hi]`, 0 outside; its
+/// peak clamped into the band, its dispersion relation the spectrum's.
+#[derive(Clone, Copy)]
+pub struct BandLimited<'a> {
     spectrum: &'a dyn Spectrum,
     omega_lo: f64,
     omega_hi: f64,
 }
 
-impl Spectrum for Band<'_> {
+impl std::fmt::Debug for BandLimited<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("BandLimited").field("omega_lo", &self.omega_lo).field("omega_hi", &self.omega_hi).finish()
+    }
+}
+
+impl<'a> BandLimited<'a> {
+    /// `spectrum` between the frequencies of the wavenumbers `k_lo` and `k_hi` (rad m⁻¹),
+    /// `0 ≤ k_lo < k_hi` (`k_hi` may be infinite), by the spectrum's dispersion relation.
+    pub fn between_wavenumbers(spectrum: &'a dyn Spectrum, k_lo: f64, k_hi: f64) -> Self {
+        debug_assert!(k_lo >= 0.0 && k_hi > k_lo);
+        let d = spectrum.dispersion();
+        let omega_hi = if k_hi.is_finite() { d.omega(k_hi) } else { f64::INFINITY };
+        Self { spectrum, omega_lo: if k_lo > 0.0 { d.omega(k_lo) } else { 0.0 }, omega_hi }
+    }
+}
+
+impl Spectrum for BandLimited<'_> {
     fn s_omega(&self, omega: f64) -> f64 {
         if (self.omega_lo..=self.omega_hi).contains(&omega) { self.spectrum.s_omega(omega) } else { 0.0 }
     }
@@ -113,6 +121,32 @@ impl Spectrum for Band<'_> {
     fn dispersion(&self) -> Dispersion {
         self.spectrum.dispersion()
     }
+}
+
+/// The wavenumber `k ≥ k_lo` up to which the spectrum's mean-square slope from `k_lo` reaches
+/// `target`: `∫_{k_lo}^{k} k² S(k) dk = target` (bisection in `ln k`), or `k_cap` if it holds less.
+///
+/// # Arguments
+/// - `spectrum`: the spectrum; `k_lo` (rad m⁻¹) `> 0`; `target` (dimensionless) `≥ 0`;
+///   `k_cap` (rad m⁻¹) `> k_lo`.
+///
+/// # Returns
+/// `k` (rad m⁻¹) in `[k_lo, k_cap]`.
+///
+/// # References
+/// Cox C., Munk W. 1954, JOSA 44(11) (the mean-square slope as the spectrum's second moment).
+pub fn wavenumber_of_slope(spectrum: &dyn Spectrum, k_lo: f64, target: f64, k_cap: f64) -> f64 {
+    debug_assert!(k_lo > 0.0 && k_cap > k_lo && target >= 0.0);
+    let mss = |k: f64| spectrum.mean_square_slope_between(k_lo, k);
+    if mss(k_cap) <= target {
+        return k_cap;
+    }
+    let (mut a, mut b) = (k_lo.ln(), k_cap.ln());
+    for _ in 0..60 {
+        let m = 0.5 * (a + b);
+        if mss(m.exp()) < target { a = m } else { b = m }
+    }
+    b.exp()
 }
 
 /// The detail waves of a sea: the band `[k_lo, k_hi]` of its directional spectrum as linear waves
@@ -155,9 +189,7 @@ impl DetailWaves {
             n.is_power_of_two() && (16..=1024).contains(&n),
             "a power of two in [16, 1024]",
         )?;
-        let dispersion = spectrum.dispersion();
-        let band =
-            Band { spectrum, omega_lo: dispersion.omega(options.k_lo), omega_hi: dispersion.omega(options.k_hi) };
+        let band = BandLimited::between_wavenumbers(spectrum, options.k_lo, options.k_hi);
         let l0 = DETAIL_WAVELENGTHS_PER_TILE * TAU / options.k_lo;
         let mut tiles = vec![l0];
         // Add tiles until the last one's Nyquist wavenumber reaches k_hi.

@@ -135,7 +135,7 @@ mod tma;
 mod traced;
 mod trochoid;
 
-pub use detail::{DETAIL_MIN_WAVELENGTH_M, DetailOptions, DetailSlopes, DetailWaves};
+pub use detail::{BandLimited, DETAIL_MIN_WAVELENGTH_M, DetailOptions, DetailSlopes, DetailWaves, wavenumber_of_slope};
 pub use dispersion::{Dispersion, ELFOUHAILY_K_M, SEA_WATER_DENSITY, SEA_WATER_SURFACE_TENSION};
 pub use dispersion::{G, omega_deep_water, wavenumber_deep_water};
 pub use elfouhaily::{Elfouhaily, ElfouhailySpreading};
