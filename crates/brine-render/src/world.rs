@@ -9,7 +9,7 @@ use brine_optics::{
     DarlesWater, DipoleMaterial, JerlovType, RgbBands, RoughReflectance, SlopeVariance, SunDisc, WATER_IOR, WaterBody,
     WaterRgb, fresnel_dielectric, hemispherical_fresnel_reflectance,
 };
-use brine_sky::{CloudParams, FilteredSky, MoonParams, Sky, SkyParams};
+use brine_sky::{CloudParams, DaylightModel, FilteredSky, MoonParams, Sky, SkyParams};
 use brine_trace::{Method, TraceOptions};
 use brine_waves::{
     BandLimited, CosineSquared, CosineTwoS, DetailOptions, DetailSlopes, DetailWaves, Directions, Dispersion,
@@ -27,7 +27,8 @@ use rand_chacha::ChaCha8Rng;
 
 use crate::camera::{Camera, direction_from_bearing};
 use crate::scene::{
-    FloorConfig, Scene, SeaConfig, SkyConfig, SpectrumKind, SpreadingKind, SunModelKind, SurfaceKind, SwellConfig,
+    FloorConfig, Scene, SeaConfig, SkyConfig, SkyModelKind, SpectrumKind, SpreadingKind, SunModelKind, SurfaceKind,
+    SwellConfig,
 };
 
 /// Why a scene could not be turned into models.
@@ -684,6 +685,10 @@ impl World {
             moon,
             clouds,
             time_s: s.time_s,
+            model: match k.model {
+                SkyModelKind::Preetham => DaylightModel::Preetham,
+                SkyModelKind::HosekWilkie => DaylightModel::HosekWilkie,
+            },
         })
         .map_err(|e| model(&e))?;
 

@@ -9,8 +9,10 @@
 //! (§3.2). Beyond the papers, for the time-and-place-driven scenes of Li Ying et al. 2018
 //! (§2.1, §3.1): twilight (a single-scattering ratio on Preetham's sunset sky), the night-sky
 //! glow and moonlight (Krisciunas & Schaefer 1991; Jensen et al. 2001), and procedural cloud
-//! layers after Chen et al.'s texture perturbation (§3.1). [`Sky`] puts them together for every
-//! sun elevation from −90° to 90°.
+//! layers after Chen et al.'s texture perturbation (§3.1). As an alternative clear day sky, the
+//! Hosek & Wilkie (2012) model of pbrt-v4, Mitsuba 3 and Blender Cycles ([`HosekWilkieSky`],
+//! chosen by [`DaylightModel`]). [`Sky`] puts them together for every sun elevation from −90°
+//! to 90°.
 //!
 //! ## Notation
 //!
@@ -21,6 +23,7 @@
 //! | `θ`, `γ` | `cos_theta`, `gamma` | 1, rad | view zenith angle, view–sun angle |
 //! | `Y_z`, `x_z`, `y_z` | [`zenith_luminance`], [`zenith_chromaticity_xy`] | kcd m⁻², 1 | zenith values |
 //! | `F(θ, γ)` | [`perez`] | 1 | Perez distribution |
+//! | `A…I`, `L_M` | [`HosekWilkieSky::coefficients`] | 1, W m⁻² sr⁻¹ | Hosek–Wilkie coefficients, channel scale |
 //! | `m` | [`relative_air_mass`] | 1 | relative optical air mass |
 //! | `L(λ)` | [`sun_spectral_radiance`] | W m⁻² sr⁻¹ nm⁻¹ | sun's spectral radiance |
 //! | `β_R`, `β_M` | [`rayleigh_beta`], [`mie_beta`] | m⁻¹ | scattering coefficients at sea level |
@@ -33,6 +36,7 @@
 //!
 //! ## Validity
 //!
+//! Hosek–Wilkie: clear skies, turbidity 1–10, sun elevation 0–90°, ground albedo 0–1.
 //! Preetham's sky: clear skies, turbidity 1.7–10 (best 2–6), sun elevation 0–90°, view
 //! directions above the horizon (clamped at `cos θ = 0.01`). [`Sky`] accepts any sun elevation:
 //! below the horizon the twilight ratio (single scattering) and the night glow are
@@ -58,6 +62,8 @@
 //!
 //! - Preetham A.J., Shirley P., Smits B. 1999, "A practical analytic model for daylight",
 //!   SIGGRAPH 91–100.
+//! - Hosek L., Wilkie A. 2012, "An analytic model for full spectral sky-dome radiance", ACM
+//!   Trans. Graph. 31(4):95.
 //! - Perez R., Seals R., Michalsky J. 1993, Solar Energy 50(3):235–245.
 //! - Hoffman N., Preetham A.J. 2002, "Rendering outdoor light scattering in real time", GDC.
 //! - Iqbal M. 1983, *An Introduction to Solar Radiation*, Academic Press.
@@ -75,6 +81,7 @@ mod colour;
 mod dome;
 mod error;
 mod filtered;
+mod hosek_wilkie;
 mod night;
 mod preetham;
 mod sky;
@@ -93,12 +100,13 @@ pub use colour::{linear_srgb_to_xyz, xyy_to_xyz, xyz_to_linear_srgb};
 pub use dome::{fisheye_direction, fisheye_pixel_direction};
 pub use error::SkyError;
 pub use filtered::{FILTERED_SKY_BASE_SIGMA, FILTERED_SKY_LEVELS, FilteredSky};
+pub use hosek_wilkie::{HosekWilkieSky, SEA_GROUND_ALBEDO, hosek_wilkie_distribution};
 pub use night::{
     MOON_MEAN_DISTANCE_KM, MOON_RADIUS_KM, NIGHT_ZENITH_LUMINANCE, SUN_V_MAGNITUDE, V_EXTINCTION, layer_air_mass,
     lommel_seeliger_phase, moon_to_sun_illuminance, moon_to_sun_illuminance_jensen, night_sky_luminance,
 };
 pub use preetham::{MIN_COS_VIEW, PerezCoefficients, PreethamSky, perez, zenith_chromaticity_xy, zenith_luminance};
-pub use sky::{Disc, MOONLIGHT_FADE, MoonParams, Sky, SkyParams, visible_fraction};
+pub use sky::{DaylightModel, Disc, MOONLIGHT_FADE, MoonParams, Sky, SkyParams, visible_fraction};
 pub use solar_tables::{
     K_MIXED_GAS, K_OZONE, K_WATER_VAPOUR, SOLAR_RADIANCE_380_750, SOLAR_RADIANCE_SCALE, solar_radiance,
 };

@@ -294,6 +294,13 @@ impl PreethamSky {
     /// # References
     /// Preetham et al. 1999 (the radiance integrated over the upper hemisphere).
     pub fn horizontal_irradiance_rgb(&self) -> DVec3 {
+        horizontal_irradiance(|v| self.radiance_rgb(v))
+    }
+}
+
+/// `∫ L(ω) cos θ dω` over the upper hemisphere by the midpoint rule on 48 × 96 cells.
+pub(crate) fn horizontal_irradiance(radiance_rgb: impl Fn(DVec3) -> DVec3) -> DVec3 {
+    {
         let (nt, np) = (48, 96);
         let dtheta = std::f64::consts::FRAC_PI_2 / nt as f64;
         let dphi = std::f64::consts::TAU / np as f64;
@@ -304,7 +311,7 @@ impl PreethamSky {
             for j in 0..np {
                 let phi = (j as f64 + 0.5) * dphi;
                 let v = DVec3::new(st * phi.cos(), ct, st * phi.sin());
-                e += self.radiance_rgb(v) * ct * st * dtheta * dphi;
+                e += radiance_rgb(v) * ct * st * dtheta * dphi;
             }
         }
         e

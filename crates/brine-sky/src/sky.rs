@@ -8,6 +8,7 @@ use glam::DVec3;
 use crate::aerial::{AerialPerspective, Scattering, henyey_greenstein};
 use crate::clouds::{CloudLayers, CloudParams};
 use crate::error::{SkyError, check};
+use crate::hosek_wilkie::{HosekWilkieSky, SEA_GROUND_ALBEDO};
 use crate::night::{MOON_RADIUS_KM, lommel_seeliger_phase, moon_to_sun_illuminance, night_sky_luminance};
 use crate::preetham::PreethamSky;
 use crate::sun::{SUN_SOLID_ANGLE, relative_air_mass, sun_angular_radius, sun_radiance_xyz};
@@ -47,12 +48,49 @@ pub struct SkyParams {
     pub clouds: Option<CloudParams>,
     /// Time (s) at which the clouds are drawn (they scroll with the wind).
     pub time_s: f64,
+    /// The clear daylight sky's model.
+    pub model: DaylightModel,
+}
+
+/// The analytic model of the clear daylight sky.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum DaylightModel {
+    /// Preetham, Shirley & Smits 1999 (the papers' sky; turbidity `[1.7, 10]`).
+    #[default]
+    Preetham,
+    /// Hosek & Wilkie 2012, over a sea of albedo [`SEA_GROUND_ALBEDO`](crate::SEA_GROUND_ALBEDO)
+    /// (the sky of pbrt-v4, Mitsuba 3 and Blender Cycles).
+    HosekWilkie,
+}
+
+/// The clear day sky of a [`DaylightModel`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum DaySky {
+    Preetham(PreethamSky),
+    HosekWilkie(HosekWilkieSky),
+}
+
+impl DaySky {
+    fn radiance_rgb(&self, v: DVec3) -> DVec3 {
+        match self {
+            Self::Preetham(p) => p.radiance_rgb(v),
+            Self::HosekWilkie(h) => h.radiance_rgb(v),
+        }
+    }
 }
 
 impl SkyParams {
     /// A clear, moonless sky at 1 AU.
     pub fn new(turbidity: f64, sun_direction: DVec3) -> Self {
-        Self { turbidity, sun_direction, sun_distance_au: 1.0, moon: None, clouds: None, time_s: 0.0 }
+        Self {
+            turbidity,
+            sun_direction,
+            sun_distance_au: 1.0,
+            moon: None,
+            clouds: None,
+            time_s: 0.0,
+            model: DaylightModel::Preetham,
+        }
     }
 }
 
@@ -142,7 +180,7 @@ pub struct Sky {
     sun: Disc,
     sun_radiance_unclipped: DVec3,
     moon: Option<(Disc, MoonShading)>,
-    day: PreethamSky,
+    day: DaySky,
     twilight: Option<TwilightRatio>,
     moon_sky: Option<(PreethamSky, f64)>,
     clouds: Option<CloudLayers>,
@@ -198,7 +236,12 @@ impl Sky {
         };
 
         // Day and twilight.
-        let day = PreethamSky::new(t, clamp_to_horizon(s))?;
+        let day = match params.model {
+            DaylightModel::Preetham => DaySky::Preetham(PreethamSky::new(t, clamp_to_horizon(s))?),
+            DaylightModel::HosekWilkie => {
+                DaySky::HosekWilkie(HosekWilkieSky::new(t, clamp_to_horizon(s), SEA_GROUND_ALBEDO)?)
+            }
+        };
         let twilight = (sun_elevation < 0.0).then(|| TwilightRatio::new(sun_elevation, t)).transpose()?;
 
         // The Moon.
@@ -563,6 +606,30 @@ mod tests {
         for v in [dir(90.0, 0.0), dir(10.0, 90.0), dir(45.0, 200.0)] {
             let d = sky.clear_radiance_rgb(v) - p.radiance_rgb(v);
             // Only the night glow (2.5×10⁻⁷ kcd m⁻² at the zenith, ≤ 6.7×10⁻⁷) is added.
+            assert!(d.abs().max_element() < NIGHT_GLOW_MAX, "{d:?}");
+        }
+    }
+
+    /// The horizon's colour is the model's own: the sky the renderer reads near the horizon has
+    /// the chromaticity of Preetham's fit (no clipping or conversion shifts it), and with
+    /// `DaylightModel::HosekWilkie` it is the Hosek–Wilkie sky plus the night glow.
+    #[test]
+    fn the_horizon_colour_is_the_models_own() {
+        /// Chromaticity after the sRGB round trip: the matrices are inverse to 10⁻⁶.
+        const ROUND_TRIP_XY: f64 = 1e-5;
+        let s = dir(30.0, 0.0);
+        let sky = Sky::new(&SkyParams::new(3.0, s)).unwrap();
+        let p = PreethamSky::new(3.0, s).unwrap();
+        for v in [dir(2.0, 90.0), dir(2.0, 180.0), dir(5.0, 270.0)] {
+            let xyz = sky.radiance_xyz(v);
+            let (_, x, y) = p.yxy(v);
+            assert!((xyz.x / xyz.element_sum() - x).abs() < ROUND_TRIP_XY, "{v}");
+            assert!((xyz.y / xyz.element_sum() - y).abs() < ROUND_TRIP_XY, "{v}");
+        }
+        let hw = Sky::new(&SkyParams { model: DaylightModel::HosekWilkie, ..SkyParams::new(3.0, s) }).unwrap();
+        let h = HosekWilkieSky::new(3.0, s, SEA_GROUND_ALBEDO).unwrap();
+        for v in [dir(2.0, 90.0), dir(45.0, 200.0)] {
+            let d = hw.clear_radiance_rgb(v) - h.radiance_rgb(v);
             assert!(d.abs().max_element() < NIGHT_GLOW_MAX, "{d:?}");
         }
     }

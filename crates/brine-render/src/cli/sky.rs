@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use brine_sky::{CloudParams, MoonParams, Sky, SkyParams, fisheye_pixel_direction};
+use brine_sky::{CloudParams, DaylightModel, MoonParams, Sky, SkyParams, fisheye_pixel_direction};
 use glam::{DVec2, DVec3};
 
 use super::CliError;
@@ -14,6 +14,9 @@ pub struct SkyArgs {
     /// Turbidity T, [1.7, 10].
     #[arg(long, default_value_t = 3.0, value_parser = super::within(1.7, 10.0))]
     pub turbidity: f64,
+    /// Clear daylight sky: Preetham et al. 1999 or Hosek & Wilkie 2012.
+    #[arg(long, value_enum, default_value_t = ModelArg::Preetham)]
+    pub model: ModelArg,
     /// Sun elevation (degrees), [-90, 90].
     #[arg(long, allow_hyphen_values = true, value_parser = super::within(-90.0, 90.0))]
     pub sun_elevation_deg: f64,
@@ -62,6 +65,28 @@ pub struct SkyArgs {
     pub exposure_ev: Option<f64>,
 }
 
+/// CIE 1931 chromaticity `(x, y)` of a tristimulus value (`null`s for black).
+fn chromaticity(xyz: DVec3) -> [Option<f64>; 2] {
+    let sum = xyz.element_sum();
+    if sum > 0.0 { [Some(xyz.x / sum), Some(xyz.y / sum)] } else { [None, None] }
+}
+
+/// `y_D(x) − y` for the chromaticity of `xyz`: how far below the CIE daylight locus
+/// `y_D = −3.000 x² + 2.870 x − 0.275` (CIE 15:2004 Eq. 3.4) it lies (positive: toward magenta).
+fn daylight_locus_offset(xyz: DVec3) -> Option<f64> {
+    let [Some(x), Some(y)] = chromaticity(xyz) else { return None };
+    Some(-3.0 * x * x + 2.870 * x - 0.275 - y)
+}
+
+/// `--model` of `brine sky`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ModelArg {
+    /// Preetham, Shirley & Smits 1999.
+    Preetham,
+    /// Hosek & Wilkie 2012.
+    HosekWilkie,
+}
+
 /// Unit vector of a compass bearing and an elevation, in degrees (y up, x east, z south).
 fn direction(elevation_deg: f64, azimuth_deg: f64) -> DVec3 {
     let (e, a) = (elevation_deg.to_radians(), azimuth_deg.to_radians());
@@ -100,6 +125,10 @@ pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
         moon,
         clouds,
         time_s: args.time_s,
+        model: match args.model {
+            ModelArg::Preetham => DaylightModel::Preetham,
+            ModelArg::HosekWilkie => DaylightModel::HosekWilkie,
+        },
         ..SkyParams::new(args.turbidity, direction(args.sun_elevation_deg, args.sun_azimuth_deg))
     };
     let sky = Sky::new(&params).map_err(|e| input(e.to_string()))?;
@@ -113,6 +142,8 @@ pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
             "view_elevation_deg": args.view_elevation_deg,
             "view_azimuth_deg": args.view_azimuth_deg,
             "xyz_kcd_m2": xyz.to_array(),
+            "chromaticity_xy": chromaticity(xyz),
+            "below_daylight_locus": daylight_locus_offset(xyz),
             "rgb_kcd_m2": rgb.to_array(),
             "sun_radiance_rgb_kcd_m2": sun.radiance_rgb.to_array(),
             "sun_irradiance_rgb_klx": sun.irradiance_rgb.to_array(),

@@ -440,7 +440,15 @@ pub const KEYS: &[KeySpec] = &[
     ),
     k("water.floor", "seed", SEED, "1", "7", "directions and phases"),
     // [sky]
-    k("sky", "turbidity", closed(1.7, 10.0), "1", "3", "Preetham turbidity"),
+    k("sky", "turbidity", closed(1.7, 10.0), "1", "3", "atmospheric turbidity"),
+    k(
+        "sky",
+        "model",
+        Kind::Enum { values: &["preetham", "hosek-wilkie"], ignore_case: false },
+        "—",
+        "`\"preetham\"`",
+        "clear daylight sky: Preetham et al. 1999 or Hosek & Wilkie 2012",
+    ),
     with_note(k("sky", "sun_elevation_deg", closed(-90.0, 90.0), "°", "24", "sun elevation"), "only without `[place]`"),
     with_note(k("sky", "sun_azimuth_deg", FINITE, "°", "115", "compass bearing of the sun"), "only without `[place]`"),
     // [sky.clouds]

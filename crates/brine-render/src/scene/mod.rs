@@ -406,12 +406,31 @@ pub struct SkyConfig {
     pub sun_azimuth_deg: Option<f64>,
     /// Cloud layers; a clear sky when absent.
     pub clouds: Option<CloudConfig>,
+    /// The clear daylight sky's model.
+    pub model: SkyModelKind,
 }
 
 impl Default for SkyConfig {
     fn default() -> Self {
-        Self { turbidity: 3.0, sun_elevation_deg: None, sun_azimuth_deg: None, clouds: None }
+        Self {
+            turbidity: 3.0,
+            sun_elevation_deg: None,
+            sun_azimuth_deg: None,
+            clouds: None,
+            model: SkyModelKind::Preetham,
+        }
     }
+}
+
+/// The analytic clear-sky model of `[sky] model`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum SkyModelKind {
+    /// Preetham, Shirley & Smits 1999 (the papers' sky).
+    #[default]
+    Preetham,
+    /// Hosek & Wilkie 2012.
+    HosekWilkie,
 }
 
 impl SkyConfig {
