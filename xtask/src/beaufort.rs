@@ -29,20 +29,27 @@ const NEAR_FIELD_M: (f32, f32) = (10.0, 30.0);
 const TOP_DOWN_SIZE: u32 = 256;
 const PEAKS: usize = 20;
 
-/// The scene of one image: a camera 10 m up looking 8° down, the sun 30° high and 90° to the side.
+/// The scene of one image: a camera 10 m up looking 8° down, the sun 30° high and 90° to the side
+/// (or straight ahead, `toward_sun`).
 fn scene_text(surface: &str, wind: f64, top_down: bool, spp: u32) -> String {
+    scene_text_facing(surface, wind, top_down, spp, false)
+}
+
+fn scene_text_facing(surface: &str, wind: f64, top_down: bool, spp: u32, toward_sun: bool) -> String {
+    // Toward the sun the sky is clear, so that no cloud hides the sun and its glitter.
+    let (yaw, clouds) = if toward_sun { (90.0, "") } else { (0.0, "\n[sky.clouds]\ncover = 0.35\n") };
     let camera = if top_down {
         format!(
             "position = [0.0, 50.0, 0.0]\npitch_deg = -90.0\nyaw_deg = 0.0\nwidth = {TOP_DOWN_SIZE}\nheight = {TOP_DOWN_SIZE}\nfov_deg = 60.0\n"
         )
     } else {
         format!(
-            "position = [0.0, 10.0, 0.0]\npitch_deg = -8.0\nyaw_deg = 0.0\nwidth = 640\nheight = 360\nspp = {spp}\n"
+            "position = [0.0, 10.0, 0.0]\npitch_deg = -8.0\nyaw_deg = {yaw}\nwidth = 640\nheight = 360\nspp = {spp}\n"
         )
     };
     format!(
         "[camera]\n{camera}\n[sea]\nsurface = \"{surface}\"\nwind_speed_m_s = {wind}\nwind_direction_deg = 20.0\nseed = 3\n\n\
-         [sky]\nsun_elevation_deg = 30.0\nsun_azimuth_deg = 90.0\n\n[sky.clouds]\ncover = 0.35\n"
+         [sky]\nsun_elevation_deg = 30.0\nsun_azimuth_deg = 90.0\n{clouds}"
     )
 }
 
@@ -185,13 +192,19 @@ pub fn run(root: &Path) -> Result<(), String> {
             cells.push(format!(
                 "![{surface} at {wind} m/s](beaufort/{name}.png)<br>detail {detail:.2} · peaks {peaks:.2}{sparkle}"
             ));
+            let sun_name = format!("{name}-sun");
+            let facing = render(&scene_text_facing(surface, wind, false, 1, true), &format!("{sun_name}.toml"))?;
+            let sun_png = dir.join(format!("{sun_name}.png"));
+            brine_render::write_frame(&sun_png, &facing, facing.exposure_ev, false).map_err(|e| e.to_string())?;
+            cells.push(format!("![{surface} at {wind} m/s, toward the sun](beaufort/{sun_name}.png)"));
         }
         let _ = writeln!(rows, "| {wind} | {} |", cells.join(" | "));
     }
     let page = format!(
         "# The sea at six winds\n\n\
          The same view — a camera 10 m above the sea looking 8° down, the sun 30° high and 90° to the\n\
-         right, a third of the sky clouded, a vertical field of view of 50° — at 2, 5, 8, 12, 16 and 22 m/s (Beaufort 2 to 9), on the\n\
+         right, a third of the sky clouded (and, in the second column of each surface, the sun straight ahead\n\
+         in a clear sky), a vertical field of view of 50° — at 2, 5, 8, 12, 16 and 22 m/s (Beaufort 2 to 9), on the\n\
          trochoid sea (the default) and the FFT sea. Every other key is the default scene's.\n\
          Regenerate with `cargo xtask gallery` (which also renders `docs/gallery/`).\n\n\
          Under each image, measured from the render's own output variables:\n\n\
@@ -204,7 +217,7 @@ pub fn run(root: &Path) -> Result<(), String> {
          - **sparkle** (2 and 5 m/s): the high-pass noise of the far field (150 m to 2.5 km) at 1\n\
            sample per pixel over that at {SPARKLE_SPP}: near 1 when each pixel is filtered over its\n\
            footprint, large when sub-pixel glints alias.\n\n\
-         | U₁₀ (m/s) | trochoids | FFT |\n|---|---|---|\n{rows}"
+         | U₁₀ (m/s) | trochoids | trochoids, toward the sun | FFT | FFT, toward the sun |\n|---|---|---|---|---|\n{rows}"
     );
     let path = root.join("docs/beaufort.md");
     std::fs::write(&path, page).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
