@@ -4,7 +4,9 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-use brine_sky::{CloudParams, MoonParams, PreethamSky, Sky, SkyParams, Sun};
+use brine_sky::{
+    CloudParams, DaylightModel, HosekWilkieSky, MoonParams, PreethamSky, SEA_GROUND_ALBEDO, Sky, SkyParams, Sun,
+};
 use glam::DVec3;
 
 fn dir(elevation_deg: f64, azimuth_deg: f64) -> DVec3 {
@@ -39,12 +41,17 @@ fn main() {
     let cloudy =
         Sky::new(&SkyParams { clouds: Some(CloudParams::default()), ..SkyParams::new(3.0, dir(30.0, 180.0)) }).unwrap();
     let preetham = PreethamSky::new(3.0, dir(30.0, 180.0)).unwrap();
+    let hosek = HosekWilkieSky::new(3.0, dir(30.0, 180.0), SEA_GROUND_ALBEDO).unwrap();
+    let day_hw =
+        Sky::new(&SkyParams { model: DaylightModel::HosekWilkie, ..SkyParams::new(3.0, dir(30.0, 180.0)) }).unwrap();
 
     let n = 200_000;
     let base = median_ns(n, 9, |i| preetham.radiance_rgb(v(i)));
     let rows = [
         ("PreethamSky::radiance_rgb (day)", base),
+        ("HosekWilkieSky::radiance_rgb (day)", median_ns(n, 9, |i| hosek.radiance_rgb(v(i)))),
         ("Sky::radiance_rgb, day", median_ns(n, 9, |i| day.radiance_rgb(v(i)))),
+        ("Sky::radiance_rgb, day, Hosek–Wilkie", median_ns(n, 9, |i| day_hw.radiance_rgb(v(i)))),
         ("Sky::radiance_rgb, twilight (sun −5°)", median_ns(n, 9, |i| dusk.radiance_rgb(v(i)))),
         ("Sky::radiance_rgb, night with Moon", median_ns(n, 9, |i| night.radiance_rgb(v(i)))),
         ("Sky::radiance_rgb, day with clouds", median_ns(n, 9, |i| cloudy.radiance_rgb(v(i)))),
@@ -70,6 +77,13 @@ fn main() {
         (
             "Sky::new, day",
             ctor(&|| Sky::new(&SkyParams::new(3.0, dir(30.0, 0.0))).unwrap().horizontal_irradiance_rgb()),
+        ),
+        (
+            "Sky::new, day, Hosek–Wilkie",
+            ctor(&|| {
+                let p = SkyParams { model: DaylightModel::HosekWilkie, ..SkyParams::new(3.0, dir(30.0, 0.0)) };
+                Sky::new(&p).unwrap().horizontal_irradiance_rgb()
+            }),
         ),
         (
             "Sky::new, twilight (twilight table)",

@@ -55,6 +55,28 @@ pub fn xyy_to_xyz(x: f64, y: f64, luminance: f64) -> DVec3 {
     DVec3::new(x * luminance / y, luminance, (1.0 - x - y) * luminance / y)
 }
 
+/// The CIE daylight locus: the chromaticity `y_D` of daylight of chromaticity `x_D`,
+/// `y_D = −3.000 x_D² + 2.870 x_D − 0.275`.
+///
+/// # Arguments
+/// - `x`: CIE 1931 chromaticity `x_D` (1), `[0.250, 0.380]` (daylight of correlated colour
+///   temperatures from 25 000 K down to 4 000 K).
+///
+/// # Returns
+/// `y_D` (1).
+///
+/// # References
+/// CIE 15:2004 *Colorimetry*, §3.1 (the CIE daylight illuminants).
+pub fn daylight_locus_y(x: f64) -> f64 {
+    -3.0 * x * x + 2.870 * x - 0.275
+}
+
+/// CIE 1931 chromaticity `(x, y)` of a tristimulus value, `None` for black.
+pub fn chromaticity(xyz: DVec3) -> Option<(f64, f64)> {
+    let sum = xyz.element_sum();
+    (sum > 0.0).then(|| (xyz.x / sum, xyz.y / sum))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -70,6 +92,21 @@ mod tests {
         let back = linear_srgb_to_xyz(xyz_to_linear_srgb(v));
         // palette derives both matrices from the primaries; they invert each other to ~10⁻⁷.
         assert!((back - v).abs().max_element() < MATRIX_INVERSE, "{back:?}");
+    }
+
+    /// The CIE daylight illuminants lie on the locus: D65 (0.31271, 0.32902) and D50 (0.34567,
+    /// 0.35850), CIE 15:2004; the locus is computed from the illuminants' `x_D` of 5
+    /// digits, so the tabulated `y` agrees to the last digit plus the formula's rounding.
+    #[test]
+    fn the_daylight_illuminants_lie_on_the_daylight_locus() {
+        /// Published chromaticities have 5 digits; the locus' coefficients 3–4.
+        const LOCUS_DIGITS: f64 = 2e-4;
+        for (x, y) in [(0.31271, 0.32902), (0.34567, 0.35850)] {
+            assert!((daylight_locus_y(x) - y).abs() < LOCUS_DIGITS, "x = {x}: {} vs {y}", daylight_locus_y(x));
+        }
+        assert_eq!(chromaticity(DVec3::ZERO), None);
+        let (x, y) = chromaticity(DVec3::new(1.0, 2.0, 1.0)).unwrap();
+        assert!((x - 0.25).abs() < 1e-15 && (y - 0.5).abs() < 1e-15);
     }
 
     #[test]

@@ -2,7 +2,9 @@
 
 use std::path::PathBuf;
 
-use brine_sky::{CloudParams, DaylightModel, MoonParams, Sky, SkyParams, fisheye_pixel_direction};
+use brine_sky::{
+    CloudParams, DaylightModel, MoonParams, Sky, SkyParams, chromaticity, daylight_locus_y, fisheye_pixel_direction,
+};
 use glam::{DVec2, DVec3};
 
 use super::CliError;
@@ -65,17 +67,10 @@ pub struct SkyArgs {
     pub exposure_ev: Option<f64>,
 }
 
-/// CIE 1931 chromaticity `(x, y)` of a tristimulus value (`null`s for black).
-fn chromaticity(xyz: DVec3) -> [Option<f64>; 2] {
-    let sum = xyz.element_sum();
-    if sum > 0.0 { [Some(xyz.x / sum), Some(xyz.y / sum)] } else { [None, None] }
-}
-
-/// `y_D(x) − y` for the chromaticity of `xyz`: how far below the CIE daylight locus
-/// `y_D = −3.000 x² + 2.870 x − 0.275` (CIE 15:2004 Eq. 3.4) it lies (positive: toward magenta).
+/// `y_D(x) − y` for the chromaticity of `xyz`: how far below the CIE daylight locus it lies
+/// (positive toward magenta), `None` for black.
 fn daylight_locus_offset(xyz: DVec3) -> Option<f64> {
-    let [Some(x), Some(y)] = chromaticity(xyz) else { return None };
-    Some(-3.0 * x * x + 2.870 * x - 0.275 - y)
+    chromaticity(xyz).map(|(x, y)| daylight_locus_y(x) - y)
 }
 
 /// `--model` of `brine sky`.
@@ -142,7 +137,7 @@ pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
             "view_elevation_deg": args.view_elevation_deg,
             "view_azimuth_deg": args.view_azimuth_deg,
             "xyz_kcd_m2": xyz.to_array(),
-            "chromaticity_xy": chromaticity(xyz),
+            "chromaticity_xy": chromaticity(xyz).map(|(x, y)| [x, y]),
             "below_daylight_locus": daylight_locus_offset(xyz),
             "rgb_kcd_m2": rgb.to_array(),
             "sun_radiance_rgb_kcd_m2": sun.radiance_rgb.to_array(),
