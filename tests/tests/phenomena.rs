@@ -100,18 +100,22 @@ fn exr_aovs_hold_the_frames_output_variables() {
         }
     };
     let n = f.pixels.len();
-    let (r, depth, ny, foam, wc, ev) = (
+    let (r, depth, ny, foam, wc, ev, glint) = (
         channel("R"),
         channel("depth.Z"),
         channel("normal.Y"),
         channel("foam.Y"),
         channel("whitecap.Y"),
         channel("evaluations.Y"),
+        channel("glint.Y"),
     );
     for i in 0..n {
         assert_eq!(r[i], f.pixels[i].x as f32);
         let a = &f.aovs[i];
-        assert_eq!((depth[i], ny[i], foam[i], wc[i], ev[i]), (a.depth, a.normal[1], a.foam, a.whitecap, a.evaluations));
+        assert_eq!(
+            (depth[i], ny[i], foam[i], wc[i], ev[i], glint[i]),
+            (a.depth, a.normal[1], a.foam, a.whitecap, a.evaluations, a.glint)
+        );
     }
     // Sanity of the variables themselves: sea pixels have a finite depth, an upward normal and a
     // cost; sky pixels an infinite depth.

@@ -7,7 +7,10 @@
 //!   scene's wind (12.5 m above the sea, the neutral log profile);
 //! - **peaks**: on a top-down view of the same sea (50 m up, 256² normals), the share of the slope
 //!   power held by the 20 strongest wave vectors of its 2-D spectrum; a handful of crossing waves
-//!   (a lattice of glints) puts most of the power there, a sea of many waves very little.
+//!   (a lattice of glints) puts most of the power there, a sea of many waves very little;
+//! - **glitter** (2, 5 and 12 m/s): the total slope variance that the sun's glitter implies,
+//!   inverted as Cox & Munk (1954) did from their photographs, over that of a Gaussian sea of
+//!   Cox & Munk's total seen through the same image.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -166,6 +169,84 @@ fn far_noise(frame: &Frame, png: &Path) -> Result<f64, String> {
     Ok((sum / n).sqrt())
 }
 
+/// Winds at which the glitter is inverted for the slope variance (m s⁻¹).
+const GLITTER_WINDS: [f64; 3] = [2.0, 5.0, 12.0];
+/// Width of the slope bins of the glitter inversion (1).
+const GLITTER_BIN: f64 = 0.02;
+/// Fewest pixels a slope bin needs to enter the moments.
+const GLITTER_MIN_PIXELS: usize = 8;
+
+/// The scene the glitter is measured on: the sun 30° high straight ahead in a clear sky, a camera
+/// 10 m up pitched 30° down with a 90° vertical field, so that the glitter's centre (the flat
+/// sea's mirror point, 30° below the horizon) is in the middle of the image.
+/// `surface = "brdf"` draws no waves (`waves = 0`): the whole slope variance is in the BRDF, where
+/// the inversion must return Cox & Munk's total — the check of the method.
+fn glitter_scene(surface: &str, wind: f64) -> String {
+    let (surface, waves) = if surface == "brdf" { ("trochoids", "waves = 0\n") } else { (surface, "") };
+    format!(
+        "[camera]\nposition = [0.0, 10.0, 0.0]\npitch_deg = -30.0\nyaw_deg = 90.0\nfov_deg = 90.0\nwidth = 640\nheight = 360\n\n\
+         [sea]\nsurface = \"{surface}\"\nwind_speed_m_s = {wind}\nwind_direction_deg = 20.0\nseed = 3\n{waves}\n\
+         [sky]\nsun_elevation_deg = 30.0\nsun_azimuth_deg = 90.0\n"
+    )
+}
+
+/// The slope variance the sun's glitter implies: Cox & Munk's inversion of their photographs.
+///
+/// For each sea pixel, the glint per unit of the sun's irradiance (the `glint` output variable)
+/// gives the density of the slope that mirrors the sun toward the eye (brine-optics
+/// `glitter_slope_density`, Cox & Munk's glitter equation inverted). Averaged over the pixels of each `ζ`
+/// bin, `p` gives the slope distribution over the slopes the image sees; its central second
+/// moment (the trace of the covariance) is returned. The image sees slopes out to about ±0.4
+/// along the sun's direction: wider distributions are truncated, which the caller corrects by
+/// the same measurement on a Gaussian sea of Cox & Munk's variance.
+fn glitter_variance(surface: &str, wind: f64) -> Result<f64, String> {
+    let text = glitter_scene(surface, wind);
+    let scene = Scene::from_toml_str(&text, "glitter.toml").map_err(|e| e.to_string())?;
+    let world = brine_render::World::new(&scene).map_err(|e| e.to_string())?;
+    let frame = brine_render::render(&scene, &RenderOptions::default(), &|| {}).map_err(|e| e.to_string())?;
+    let l = world.sky.sun().direction;
+    let n = (2.0 / GLITTER_BIN) as usize;
+    let mut bins = vec![(0.0f64, 0usize); n * n];
+    for j in 0..frame.height {
+        for i in 0..frame.width {
+            let a = &frame.aovs[(j * frame.width + i) as usize];
+            if !a.depth.is_finite() {
+                continue;
+            }
+            let v = -world.camera.direction(f64::from(i) + 0.5, f64::from(j) + 0.5);
+            if v.y <= 0.0 {
+                continue;
+            }
+            // The world is y up; the glitter equation takes z up.
+            let z_up = |d: glam::DVec3| glam::DVec3::new(d.x, d.z, d.y);
+            let (zx, zz, p) =
+                brine_optics::glitter_slope_density(z_up(v), z_up(l), f64::from(a.glint), brine_optics::WATER_IOR);
+            let (bx, bz) = (((zx + 1.0) / GLITTER_BIN).floor(), ((zz + 1.0) / GLITTER_BIN).floor());
+            if !(0.0..n as f64).contains(&bx) || !(0.0..n as f64).contains(&bz) {
+                continue;
+            }
+            let b = &mut bins[bz as usize * n + bx as usize];
+            b.0 += p;
+            b.1 += 1;
+        }
+    }
+    let centre = |k: usize| -1.0 + (k as f64 + 0.5) * GLITTER_BIN;
+    let (mut m0, mut mx, mut mz, mut mxx, mut mzz) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for (k, &(sum, count)) in bins.iter().enumerate() {
+        if count < GLITTER_MIN_PIXELS {
+            continue;
+        }
+        let p = sum / count as f64;
+        let (x, z) = (centre(k % n), centre(k / n));
+        (m0, mx, mz, mxx, mzz) = (m0 + p, mx + p * x, mz + p * z, mxx + p * x * x, mzz + p * z * z);
+    }
+    if !(m0 > 0.0) {
+        return Err(format!("glitter of {surface} at {wind} m/s: no glint in view"));
+    }
+    let (cx, cz) = (mx / m0, mz / m0);
+    Ok(mxx / m0 - cx * cx + mzz / m0 - cz * cz)
+}
+
 /// Renders and measures the sheet, writing `docs/beaufort.md` and `docs/beaufort/*.png`.
 pub fn run(root: &Path) -> Result<(), String> {
     let dir = root.join("docs/beaufort");
@@ -196,10 +277,22 @@ pub fn run(root: &Path) -> Result<(), String> {
             let facing = render(&scene_text_facing(surface, wind, false, 1, true), &format!("{sun_name}.toml"))?;
             let sun_png = dir.join(format!("{sun_name}.png"));
             brine_render::write_frame(&sun_png, &facing, facing.exposure_ev, false).map_err(|e| e.to_string())?;
-            cells.push(format!("![{surface} at {wind} m/s, toward the sun](beaufort/{sun_name}.png)"));
+            let glitter = if GLITTER_WINDS.contains(&wind) {
+                let reference = glitter_variance("brdf", wind)?;
+                format!("<br>glitter {:.2}", glitter_variance(surface, wind)? / reference)
+            } else {
+                String::new()
+            };
+            cells.push(format!("![{surface} at {wind} m/s, toward the sun](beaufort/{sun_name}.png){glitter}"));
         }
         let _ = writeln!(rows, "| {wind} | {} |", cells.join(" | "));
     }
+    let mut check = Vec::new();
+    for wind in GLITTER_WINDS {
+        eprintln!("beaufort: glitter check at {wind} m/s");
+        check.push(format!("{:.2} at {wind} m/s", glitter_variance("brdf", wind)? / cox_munk_total(wind)));
+    }
+    let check = check.join(", ");
     let page = format!(
         "# The sea at six winds\n\n\
          The same view — a camera 10 m above the sea looking 8° down, the sun 30° high and 90° to the\n\
@@ -216,7 +309,17 @@ pub fn run(root: &Path) -> Result<(), String> {
            glints — puts most of the power there; a sea of many waves little.\n\
          - **sparkle** (2 and 5 m/s): the high-pass noise of the far field (150 m to 2.5 km) at 1\n\
            sample per pixel over that at {SPARKLE_SPP}: near 1 when each pixel is filtered over its\n\
-           footprint, large when sub-pixel glints alias.\n\n\
+           footprint, large when sub-pixel glints alias.\n\
+         - **glitter** (2, 5 and 12 m/s, under the sun-facing image): the total slope variance the sun's\n\
+           glitter implies, over that of a Gaussian sea of Cox & Munk's variance seen the same way.\n\
+           Measured on its own render (the sun 30° high straight ahead, the camera pitched 30° down\n\
+           with a 90° field, so the glitter is centred): each sea pixel's glint per unit of sun\n\
+           irradiance (the `glint` output variable) gives the slope density of the facet that mirrors\n\
+           the sun, `p = 4 (L/E) cos θ_v cos⁴β / ρ(ω)` (Cox & Munk 1954); the central second moment of\n\
+           its average over slope bins is the variance. The image sees slopes to about ±0.4 along the\n\
+           sun, so wide distributions are truncated; the reference — the same measurement on a sea\n\
+           with no waves drawn, every slope in the BRDF with Cox & Munk's variance — is truncated the\n\
+           same way and returns {check} of Cox & Munk's total.\n\n\
          | U₁₀ (m/s) | trochoids | trochoids, toward the sun | FFT | FFT, toward the sun |\n|---|---|---|---|---|\n{rows}"
     );
     let path = root.join("docs/beaufort.md");

@@ -211,6 +211,35 @@ pub fn reflected_sun_radiance(v: DVec3, l: DVec3, variance: &SlopeVariance, sun_
     ocean_brdf(v, l, variance, WATER_IOR) * sun_irradiance * l.z.max(0.0)
 }
 
+/// Cox & Munk's inversion of a glitter measurement: the density of the facet slopes that mirror
+/// the sun toward the viewer, from the glitter's radiance per unit of the sun's irradiance,
+/// `p(ζ) = 4 (L/E) cos θ_v cos⁴β / ρ(ω)`, `ζ = (h_x, h_y)/h_z`, `h = (v + l)/|v + l|`.
+///
+/// The glitter of a sea of slope density `p` is `L/E = ρ(ω) p(ζ) / (4 cos θ_v cos⁴β)` (no
+/// shadowing), with `cos θ_v = v_z`, the facet tilt `cos β = h_z` and `ρ(ω)` Fresnel at
+/// `cos ω = v·h`; this inverts it. On [`reflected_sun_radiance`] it returns
+/// `slope_pdf / (1 + Λ(v) + Λ(l))`: the masking of the BRDF shows as a deficit at grazing views.
+///
+/// # Arguments
+/// - `v`, `l`: unit directions toward the viewer and the sun, z up (the mean surface's normal),
+///   `v_z > 0`, `l_z > 0`.
+/// - `glint_per_irradiance`: `L/E` (sr⁻¹), `≥ 0`: the reflected radiance of the sun over its
+///   irradiance on a plane facing it, in the same photometric or radiometric unit.
+/// - `n_water`: index of refraction of water (1.333).
+///
+/// # Returns
+/// `(ζ_x, ζ_y, p)`: the mirroring slope (1) and the slope density there (1).
+///
+/// # References
+/// Cox C., Munk W. 1954, "Measurement of the roughness of the sea surface from photographs of
+/// the sun's glitter", JOSA 44(11):838–850, Eq. 5 (the glitter equation they inverted).
+pub fn glitter_slope_density(v: DVec3, l: DVec3, glint_per_irradiance: f64, n_water: f64) -> (f64, f64, f64) {
+    debug_assert!(v.z > 0.0 && l.z > 0.0 && glint_per_irradiance >= 0.0);
+    let h = (v + l).normalize();
+    let rho = fresnel_dielectric(v.dot(h), 1.0, n_water);
+    (h.x / h.z, h.y / h.z, 4.0 * glint_per_irradiance * v.z * h.z.powi(4) / rho)
+}
+
 /// The Sun (or the Moon) as a disc of uniform radiance and angular radius `r`, with product
 /// quadrature rules over its solid angle for [`reflected_disc_radiance`].
 ///
@@ -474,6 +503,36 @@ mod tests {
 
     /// Oracle values of the equation sheet are given to 5 significant digits.
     const ORACLE: f64 = 1e-4;
+
+    /// The glitter equation inverts the BRDF's sun reflection: the density it returns is the
+    /// Gaussian slope density at the mirroring slope, less the BRDF's masking `1 + Λ_v + Λ_l`
+    /// (computed here from the closed forms, not from `ocean_brdf`).
+    #[test]
+    fn the_glitter_equation_inverts_the_sun_reflection() {
+        /// Same formula rearranged: rounding only.
+        const ROUNDING: f64 = 1e-12;
+        let variance = SlopeVariance::new(0.02, 0.012).unwrap();
+        let dir = |theta_deg: f64, phi_deg: f64| {
+            let (t, p) = (theta_deg.to_radians(), phi_deg.to_radians());
+            DVec3::new(t.sin() * p.cos(), t.sin() * p.sin(), t.cos())
+        };
+        for (v, l) in
+            [(dir(40.0, 180.0), dir(55.0, 0.0)), (dir(70.0, 170.0), dir(60.0, 20.0)), (dir(5.0, 0.0), dir(8.0, 90.0))]
+        {
+            let glint = reflected_sun_radiance(v, l, &variance, 1.0);
+            let (zx, zy, p) = glitter_slope_density(v, l, glint, WATER_IOR);
+            let h = (v + l).normalize();
+            assert_relative_eq!(zx, h.x / h.z, max_relative = ROUNDING);
+            assert_relative_eq!(zy, h.y / h.z, max_relative = ROUNDING);
+            let sigma2 = |d: DVec3| {
+                let c = (d.x * d.x + d.y * d.y).max(1e-300);
+                (d.x * d.x * 0.02 + d.y * d.y * 0.012) / c
+            };
+            let masking = 1.0 + smith_lambda(v.z, sigma2(v)) + smith_lambda(l.z, sigma2(l));
+            let gaussian = (-0.5 * (zx * zx / 0.02 + zy * zy / 0.012)).exp() / (2.0 * PI * (0.02f64 * 0.012).sqrt());
+            assert_relative_eq!(p * masking, gaussian, max_relative = 1e-9);
+        }
+    }
 
     #[test]
     fn smith_lambda_oracles() {

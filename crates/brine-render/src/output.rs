@@ -76,7 +76,7 @@ pub fn write_image(
 
 /// Writes a rendered frame; with `aovs` and an `.exr` path, the output variables become extra
 /// channels of the same part, named as layers the way compositing tools read them: `depth.Z`,
-/// `normal.X/Y/Z`, `foam.Y`, `whitecap.Y`, `evaluations.Y` (beside `R`, `G`, `B`). PNG files hold
+/// `normal.X/Y/Z`, `foam.Y`, `whitecap.Y`, `glint.Y`, `evaluations.Y` (beside `R`, `G`, `B`). PNG files hold
 /// the tone-mapped image only.
 ///
 /// # Errors
@@ -141,6 +141,7 @@ fn write_with_aovs(
                 channels.push(AnyChannel::new("normal.Z", f32s(&|i| a[i].normal[2])));
                 channels.push(AnyChannel::new("foam.Y", f32s(&|i| a[i].foam)));
                 channels.push(AnyChannel::new("whitecap.Y", f32s(&|i| a[i].whitecap)));
+                channels.push(AnyChannel::new("glint.Y", f32s(&|i| a[i].glint)));
                 channels.push(AnyChannel::new("evaluations.Y", f32s(&|i| a[i].evaluations)));
             }
             let layer = Layer::new(

@@ -115,6 +115,10 @@ pub struct Aov {
     pub foam: f32,
     /// Whitecap coverage at the hit, `[0, 1]`.
     pub whitecap: f32,
+    /// The sun's glint at the hit per unit of its irradiance: the luminance the sea reflects from
+    /// the sun over the sun's illuminance on a plane facing it (sr⁻¹), before cloud shadow, white
+    /// water and the atmosphere. Cox & Munk's photographs measured this quantity.
+    pub glint: f32,
     /// Evaluations of the implicit function `F` spent on the primary ray (those of the image
     /// coherence's cones shared equally among the rays below each cone).
     pub evaluations: f32,
@@ -367,6 +371,7 @@ fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, hit: Option<Hit>, cx:
         normal: n.as_vec3().to_array(),
         foam: shade.foam as f32,
         whitecap: shade.whitecap as f32,
+        glint: shade.glint as f32,
         ..Aov::default()
     };
     let started = cx.clock();
@@ -455,6 +460,8 @@ struct SurfaceShade {
     radiance: DVec3,
     foam: f64,
     whitecap: f64,
+    /// The sun's glint per unit of its irradiance (sr⁻¹, luminance), for the `glint` AOV.
+    glint: f64,
 }
 
 /// Aerial perspective of the segment from the eye along `d` over `t` metres:
@@ -609,7 +616,11 @@ fn shade_surface(
         }
     };
     let light = DirectLight::at(world, p);
-    let sun = glint(world.sky.sun(), &world.discs.0) * light.sun
+    let sun_glint = glint(world.sky.sun(), &world.discs.0);
+    let luminance = |c: DVec3| c.dot(DVec3::new(0.2126, 0.7152, 0.0722));
+    let sun_irradiance = luminance(world.sky.sun().irradiance_rgb);
+    let glint_aov = if sun_irradiance > 0.0 { luminance(sun_glint) / sun_irradiance } else { 0.0 };
+    let sun = sun_glint * light.sun
         + world.sky.moon().zip(world.discs.1.as_ref()).map_or(DVec3::ZERO, |(m, d)| glint(m, d)) * light.moon;
     cx.lap(Stage::Surface, started);
     let started = cx.clock();
@@ -625,13 +636,13 @@ fn shade_surface(
     let started = cx.clock();
     let shade = white_water(world, p, d, t, normal, sea, light);
     cx.lap(Stage::WhiteWater, started);
-    shade
+    SurfaceShade { glint: glint_aov, ..shade }
 }
 
 /// Foam (Darles et al. 2007 §4.1, Koepke 1984) and active whitecaps (Dupuy & Bruneton 2012) over
 /// the sea radiance at `p`, seen along `d` from `t` metres.
 fn white_water(world: &World, p: DVec3, d: DVec3, t: f64, n: DVec3, sea: DVec3, light: DirectLight) -> SurfaceShade {
-    let mut shade = SurfaceShade { radiance: sea, foam: 0.0, whitecap: 0.0 };
+    let mut shade = SurfaceShade { radiance: sea, foam: 0.0, whitecap: 0.0, glint: 0.0 };
     if world.foam.is_none() && world.whitecaps.is_none() {
         return shade;
     }

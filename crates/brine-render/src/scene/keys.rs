@@ -506,7 +506,14 @@ pub const KEYS: &[KeySpec] = &[
         "brighter (+) or darker (−) than the automatic exposure",
     ),
     with_note(
-        k("output", "aovs", BOOL, "—", "`false`", "depth, normal, foam, whitecap, evaluations as extra EXR channels"),
+        k(
+            "output",
+            "aovs",
+            BOOL,
+            "—",
+            "`false`",
+            "depth, normal, foam, whitecap, sun glint (per unit irradiance, sr⁻¹), evaluations as extra EXR channels",
+        ),
         "needs an `.exr` output (after `-o`)",
     ),
     // [animation]
