@@ -247,6 +247,54 @@ fn glitter_variance(surface: &str, wind: f64) -> Result<f64, String> {
     Ok(mxx / m0 - cx * cx + mzz / m0 - cz * cz)
 }
 
+/// Winds at which the reflected sky is compared with the mirror and the lobe-blurred sky (m s⁻¹).
+const SKY_WINDS: [f64; 1] = [16.0];
+
+/// How well the near field's radiance follows the sky reflected at the mirror direction of each
+/// pixel's shading normal, and the same sky blurred by the reflection lobe of the waves not
+/// drawn (a Gaussian of twice their slope deviation, as the renderer's `FilteredSky` lookup):
+/// the squared correlation `R²` of the pixels' luminance with each, over the sea 10–30 m away,
+/// pixels less than a tenth covered by foam or whitecap (Darles' foam is a thin veil everywhere).
+fn sky_r2(scene_text: &str, frame: &Frame) -> Result<(f64, f64), String> {
+    let scene = Scene::from_toml_str(scene_text, "sky.toml").map_err(|e| e.to_string())?;
+    let world = brine_render::World::new(&scene).map_err(|e| e.to_string())?;
+    let y = |c: glam::DVec3| c.dot(glam::DVec3::new(0.2126, 0.7152, 0.0722));
+    let v = &world.variance_unresolved;
+    let lobe = 2.0 * (0.5 * (v.sigma_x2() + v.sigma_y2())).sqrt();
+    let (mut lum, mut mirror, mut blurred) = (Vec::new(), Vec::new(), Vec::new());
+    for j in 0..frame.height {
+        for i in 0..frame.width {
+            let k = (j * frame.width + i) as usize;
+            let a = &frame.aovs[k];
+            if !(NEAR_FIELD_M.0..=NEAR_FIELD_M.1).contains(&a.depth) || a.foam > 0.1 || a.whitecap > 0.1 {
+                continue;
+            }
+            let d = world.camera.direction(f64::from(i) + 0.5, f64::from(j) + 0.5);
+            let n = glam::DVec3::from_array(a.normal.map(f64::from));
+            let mut r = brine_optics::reflect(d, n);
+            if r.y < 1e-3 {
+                r = glam::DVec3::new(r.x, 1e-3, r.z).normalize();
+            }
+            lum.push(y(frame.pixels[k]));
+            mirror.push(y(world.sky.radiance_rgb(r)));
+            blurred.push(y(world.filtered_sky.radiance(r, lobe, |r| world.sky.radiance_rgb(r))));
+        }
+    }
+    let r2 = |x: &[f64], z: &[f64]| {
+        let m = x.len() as f64;
+        let (mx, mz) = (x.iter().sum::<f64>() / m, z.iter().sum::<f64>() / m);
+        let (mut sxz, mut sxx, mut szz) = (0.0, 0.0, 0.0);
+        for (a, b) in x.iter().zip(z) {
+            (sxz, sxx, szz) = (sxz + (a - mx) * (b - mz), sxx + (a - mx).powi(2), szz + (b - mz).powi(2));
+        }
+        sxz * sxz / (sxx * szz)
+    };
+    if lum.len() < 100 {
+        return Err(format!("sky R²: only {} near-field pixels", lum.len()));
+    }
+    Ok((r2(&lum, &blurred), r2(&lum, &mirror)))
+}
+
 /// Renders and measures the sheet, writing `docs/beaufort.md` and `docs/beaufort/*.png`.
 pub fn run(root: &Path) -> Result<(), String> {
     let dir = root.join("docs/beaufort");
@@ -257,7 +305,8 @@ pub fn run(root: &Path) -> Result<(), String> {
         for surface in SURFACES {
             let name = format!("{surface}-{wind:02}");
             eprintln!("beaufort: {name}");
-            let frame = render(&scene_text(surface, wind, false, 1), &format!("{name}.toml"))?;
+            let text = scene_text(surface, wind, false, 1);
+            let frame = render(&text, &format!("{name}.toml"))?;
             let png = dir.join(format!("{name}.png"));
             brine_render::write_frame(&png, &frame, frame.exposure_ev, false).map_err(|e| e.to_string())?;
             let detail = slope_variance(&slopes(&frame, NEAR_FIELD_M)) / cox_munk_total(wind);
@@ -270,8 +319,14 @@ pub fn run(root: &Path) -> Result<(), String> {
             } else {
                 String::new()
             };
+            let sky = if SKY_WINDS.contains(&wind) {
+                let (lobe, mirror) = sky_r2(&text, &frame)?;
+                format!(" · sky R² {lobe:.2} (mirror {mirror:.2})")
+            } else {
+                String::new()
+            };
             cells.push(format!(
-                "![{surface} at {wind} m/s](beaufort/{name}.png)<br>detail {detail:.2} · peaks {peaks:.2}{sparkle}"
+                "![{surface} at {wind} m/s](beaufort/{name}.png)<br>detail {detail:.2} · peaks {peaks:.2}{sparkle}{sky}"
             ));
             let sun_name = format!("{name}-sun");
             let facing = render(&scene_text_facing(surface, wind, false, 1, true), &format!("{sun_name}.toml"))?;
@@ -310,6 +365,9 @@ pub fn run(root: &Path) -> Result<(), String> {
          - **sparkle** (2 and 5 m/s): the high-pass noise of the far field (150 m to 2.5 km) at 1\n\
            sample per pixel over that at {SPARKLE_SPP}: near 1 when each pixel is filtered over its\n\
            footprint, large when sub-pixel glints alias.\n\
+         - **sky R²** (16 m/s): over the sea 10–30 m away (under a tenth foam), the squared correlation of the\n\
+           pixels' luminance with the sky reflected at each pixel's mirror direction blurred by the\n\
+           reflection lobe of the waves not drawn, and (in brackets) with the unblurred mirror sky.\n\
          - **glitter** (2, 5 and 12 m/s, under the sun-facing image): the total slope variance the sun's\n\
            glitter implies, over that of a Gaussian sea of Cox & Munk's variance seen the same way.\n\
            Measured on its own render (the sun 30° high straight ahead, the camera pitched 30° down\n\
