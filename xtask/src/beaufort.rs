@@ -295,6 +295,38 @@ fn sky_r2(scene_text: &str, frame: &Frame) -> Result<(f64, f64), String> {
     Ok((r2(&lum, &blurred), r2(&lum, &mirror)))
 }
 
+/// Winds of the energy comparison (m s⁻¹).
+const ENERGY_WINDS: [f64; 3] = [3.0, 10.0, 18.0];
+/// Image of the energy comparison (pixels) and the reference's samples per pixel.
+const ENERGY_SIZE: (u32, u32, u32) = (256, 144, 16);
+
+/// The mean luminance of each tenth of the rows of the frame at one sample per pixel, over that of
+/// the reference rendering (nothing faded or filtered with the footprint, [`ENERGY_SIZE`] samples
+/// per pixel), for the sea tenths (the fourth to the tenth; the first three are sky). The
+/// default scene's view with the sun behind the camera (so that no glitter, sampled once per
+/// pixel, adds noise), white water, spray and glare off.
+fn energy_bands(surface: &str, wind: f64) -> Result<Vec<f64>, String> {
+    let (w, h, spp) = ENERGY_SIZE;
+    let text = format!(
+        "[camera]\nposition = [0.0, 10.0, 0.0]\nyaw_deg = 100.0\npitch_deg = -9.0\nwidth = {w}\nheight = {h}\n\n\
+         [sea]\nsurface = \"{surface}\"\nwind_speed_m_s = {wind}\nwind_direction_deg = 20.0\n\n\
+         [sky]\nsun_elevation_deg = 30.0\nsun_azimuth_deg = 280.0\n\n\
+         [phenomena]\nfoam = false\nwhitecaps = false\nspray = false\nglare = false\n"
+    );
+    let mut scene = Scene::from_toml_str(&text, "energy.toml").map_err(|e| e.to_string())?;
+    let fast = brine_render::render(&scene, &RenderOptions::default(), &|| {}).map_err(|e| e.to_string())?;
+    scene.camera.spp = spp;
+    let options = RenderOptions { reference: true, ..RenderOptions::default() };
+    let reference = brine_render::render(&scene, &options, &|| {}).map_err(|e| e.to_string())?;
+    let y = |c: &glam::DVec3| c.dot(glam::DVec3::new(0.2126, 0.7152, 0.0722));
+    let band = |f: &Frame, b: u32| {
+        let rows = (b * h / 10) as usize..((b + 1) * h / 10) as usize;
+        let n = rows.len() as f64 * f64::from(w);
+        f.pixels[rows.start * w as usize..rows.end * w as usize].iter().map(y).sum::<f64>() / n
+    };
+    Ok((3..10).map(|b| band(&fast, b) / band(&reference, b)).collect())
+}
+
 /// Renders and measures the sheet, writing `docs/beaufort.md` and `docs/beaufort/*.png`.
 pub fn run(root: &Path) -> Result<(), String> {
     let dir = root.join("docs/beaufort");
@@ -348,6 +380,15 @@ pub fn run(root: &Path) -> Result<(), String> {
         check.push(format!("{:.2} at {wind} m/s", glitter_variance("brdf", wind)? / cox_munk_total(wind)));
     }
     let check = check.join(", ");
+    let mut energy = String::new();
+    for surface in SURFACES {
+        for wind in ENERGY_WINDS {
+            eprintln!("beaufort: energy, {surface} at {wind} m/s");
+            let bands = energy_bands(surface, wind)?;
+            let cells: Vec<String> = bands.iter().map(|r| format!("{:+.1} %", 100.0 * (r - 1.0))).collect();
+            let _ = writeln!(energy, "| {surface} | {wind} | {} |", cells.join(" | "));
+        }
+    }
     let page = format!(
         "# The sea at six winds\n\n\
          The same view — a camera 10 m above the sea looking 8° down, the sun 30° high and 90° to the\n\
@@ -378,7 +419,19 @@ pub fn run(root: &Path) -> Result<(), String> {
            sun, so wide distributions are truncated; the reference — the same measurement on a sea\n\
            with no waves drawn, every slope in the BRDF with Cox & Munk's variance — is truncated the\n\
            same way and returns {check} of Cox & Munk's total.\n\n\
-         | U₁₀ (m/s) | trochoids | trochoids, toward the sun | FFT | FFT, toward the sun |\n|---|---|---|---|---|\n{rows}"
+         | U₁₀ (m/s) | trochoids | trochoids, toward the sun | FFT | FFT, toward the sun |\n|---|---|---|---|---|\n{rows}\n\
+         ## Energy: the filtered frame against the reference\n\n\
+         The mean luminance of each tenth of the rows (from the fourth, the first sea rows near the\n\
+         horizon, to the tenth, the foreground) of a {ew}×{eh} frame at one sample per pixel, against\n\
+         `brine render --reference` of the same scene at {espp} samples per pixel: nothing faded or\n\
+         filtered with the pixel footprint. The default view with the sun behind the camera (no\n\
+         glitter to sample), white water, spray and glare off. The reference traces the fitted waves\n\
+         (or the FFT cascades) as geometry; the detail normals it reads unfiltered are normals, not\n\
+         geometry, so it does not weight them by their projected area as the BRDF does.\n\n\
+         | surface | U₁₀ (m/s) | 4th | 5th | 6th | 7th | 8th | 9th | 10th |\n|---|---|---|---|---|---|---|---|---|\n{energy}",
+        ew = ENERGY_SIZE.0,
+        eh = ENERGY_SIZE.1,
+        espp = ENERGY_SIZE.2
     );
     let path = root.join("docs/beaufort.md");
     std::fs::write(&path, page).map_err(|e| format!("cannot write {}: {e}", path.display()))?;

@@ -26,6 +26,9 @@ pub struct RenderOptions {
     pub threads: Option<usize>,
     /// Measure the time spent in each stage ([`Frame::stages`]); costs a few percent.
     pub profile: bool,
+    /// The reference rendering ([`World::reference`]): nothing faded or filtered with the pixel
+    /// footprint; meant for many samples per pixel.
+    pub reference: bool,
 }
 
 /// Stages of the per-pixel work, as in Darles et al.'s Table 3.
@@ -176,7 +179,8 @@ fn pixel_seed(seed: u64, index: u64) -> u64 {
 /// # Errors
 /// [`RenderError`] if a model rejects the scene or the thread pool cannot start.
 pub fn render(scene: &Scene, options: &RenderOptions, on_row: &(dyn Fn() + Sync)) -> Result<Frame, RenderError> {
-    let world = World::new(scene)?;
+    let mut world = World::new(scene)?;
+    world.reference = options.reference;
     render_world(scene, &world, options, on_row)
 }
 
@@ -778,7 +782,7 @@ impl<'a> SeaField<'a> {
     fn trace(&self, ray: &Ray, footprint: bool, world: &World, stats: &mut TraceStats) -> Option<Hit> {
         match self {
             SeaField::Traced(t) => {
-                let angle = if footprint { world.camera.pixel_angle() } else { 0.0 };
+                let angle = if footprint { world.filtering_angle() } else { 0.0 };
                 let options = TraceOptions { method: Method::Tiered, footprint_angle: angle, ..world.trace };
                 trace(*t, ray, &options, stats)
             }
@@ -789,7 +793,7 @@ impl<'a> SeaField<'a> {
             SeaField::Gerstner(f) => trace(f, ray, &world.trace, stats),
             SeaField::Sine(f) => trace(f, ray, &world.trace, stats),
             SeaField::Fft(f) => {
-                let angle = if footprint { world.camera.pixel_angle() } else { 0.0 };
+                let angle = if footprint { world.filtering_angle() } else { 0.0 };
                 let options = TraceOptions { method: Method::Tiered, footprint_angle: angle, ..world.trace };
                 trace(*f, ray, &options, stats)
             }
@@ -798,7 +802,7 @@ impl<'a> SeaField<'a> {
 
     /// The options of a primary ray with footprint fading: the tiered method, the pixel's angle.
     fn faded_options(world: &World) -> TraceOptions {
-        TraceOptions { method: Method::Tiered, footprint_angle: world.camera.pixel_angle(), ..world.trace }
+        TraceOptions { method: Method::Tiered, footprint_angle: world.filtering_angle(), ..world.trace }
     }
 
     /// Traces the primary rays of a tile (`width` per row) from the camera, with footprint fading;
@@ -811,8 +815,7 @@ impl<'a> SeaField<'a> {
         tile.costs.clear();
         tile.costs.resize(n, 0.0);
         let origin = world.camera.position;
-        let options =
-            TraceOptions { method: Method::Tiered, footprint_angle: world.camera.pixel_angle(), ..world.trace };
+        let options = TraceOptions { method: Method::Tiered, footprint_angle: world.filtering_angle(), ..world.trace };
         let (dirs, hits, costs) = (&tile.directions, &mut tile.hits[..], Some(&mut tile.costs[..]));
         match self {
             SeaField::Traced(t) => trace_tile(*t, origin, dirs, width, &options, stats, hits, costs),
@@ -844,19 +847,19 @@ impl<'a> SeaField<'a> {
     fn normal(&self, p: DVec3, d: DVec3, t: f64, world: &World) -> DVec3 {
         let g = match self {
             SeaField::Traced(s) => {
-                let angle = if t > 0.0 { world.camera.pixel_angle() } else { 0.0 };
+                let angle = if t > 0.0 { world.filtering_angle() } else { 0.0 };
                 s.faded_gradient(p.x, p.z, d, angle, t)
             }
             SeaField::Gerstner(f) => {
-                let angle = if t > 0.0 { world.camera.pixel_angle() } else { 0.0 };
+                let angle = if t > 0.0 { world.filtering_angle() } else { 0.0 };
                 f.faded_gradient(p.x, p.z, d, angle, t)
             }
             SeaField::Sine(f) => {
-                let angle = if t > 0.0 { world.camera.pixel_angle() } else { 0.0 };
+                let angle = if t > 0.0 { world.filtering_angle() } else { 0.0 };
                 f.faded_gradient(p.x, p.z, d, angle, t)
             }
             SeaField::Fft(f) => {
-                let angle = if t > 0.0 { world.camera.pixel_angle() } else { 0.0 };
+                let angle = if t > 0.0 { world.filtering_angle() } else { 0.0 };
                 f.faded_gradient(p.x, p.z, d, angle, t)
             }
         };
@@ -870,7 +873,7 @@ impl<'a> SeaField<'a> {
     /// The detail normals (the waves between the traced band and the pixel) add their gradient,
     /// read through the pixel's footprint, and the slopes the footprint hides join the BRDF's.
     fn hit_geometry(&self, p: DVec3, d: DVec3, t: f64, world: &World) -> (DVec3, SlopeVariance) {
-        let angle = world.camera.pixel_angle();
+        let angle = world.filtering_angle();
         // The pixel's side on the sea, the geometric mean of its two axes (as the fading's).
         let footprint = angle * t / d.y.abs().max(MIN_FOOTPRINT_GRAZING).sqrt();
         let (mut g, mut c) = match self {

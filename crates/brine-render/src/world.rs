@@ -106,6 +106,18 @@ pub struct World {
     pub exposure_compensation_ev: f64,
     /// Horizontal illuminance of sun, moon and sky at sea level (lx).
     pub illuminance_lx: f64,
+    /// The reference rendering: no wave faded with the pixel footprint, no normal read through
+    /// it (the slopes a footprint would hide stay in the normals, for many samples per pixel to
+    /// average), so that a supersampled frame shows what the filtering is meant to preserve.
+    pub reference: bool,
+}
+
+impl World {
+    /// The pixel angle (rad) the waves fade with and the normals are filtered by: the camera's,
+    /// or 0 in the reference rendering.
+    pub fn filtering_angle(&self) -> f64 {
+        if self.reference { 0.0 } else { self.camera.pixel_angle() }
+    }
 }
 
 /// Illuminance below which the automatic exposure stops following the light fully (lx), about
@@ -847,6 +859,7 @@ impl World {
             exposure_ev,
             exposure_compensation_ev: scene.output.exposure_compensation_ev,
             illuminance_lx: e_horizontal * 1000.0,
+            reference: false,
         };
         let mut world = world;
         let c = camera.position;

@@ -195,7 +195,7 @@ fn draws() -> impl Strategy<Value = Vec<(Option<u8>, f64, u64)>> {
 fn render_tiny(mut scene: Scene, what: &str) {
     (scene.camera.width, scene.camera.height, scene.camera.spp) = (TINY.0, TINY.1, 1);
     let start = Instant::now();
-    let frame = render(&scene, &RenderOptions { threads: Some(1), profile: false }, &|| {})
+    let frame = render(&scene, &RenderOptions { threads: Some(1), ..RenderOptions::default() }, &|| {})
         .unwrap_or_else(|e| panic!("{what}: a valid scene failed to render: {e}"));
     let took = start.elapsed();
     assert!(took < HANG_BUDGET, "{what}: {took:?} for {}×{} pixels", TINY.0, TINY.1);
@@ -247,7 +247,7 @@ fn a_camera_far_above_the_air_sees_a_finite_sea() {
     let mut s =
         Scene::from_toml_str("[camera]\nposition = [0.0, 900000.0, 0.0]\npitch_deg = -23.7\n", "high.toml").unwrap();
     (s.camera.width, s.camera.height) = (48, 27);
-    let frame = render(&s, &RenderOptions { threads: Some(2), profile: false }, &|| {}).unwrap();
+    let frame = render(&s, &RenderOptions { threads: Some(2), ..RenderOptions::default() }, &|| {}).unwrap();
     assert!(frame.pixels.iter().all(|p| p.is_finite()));
     let mean = frame.pixels.iter().map(|p| p.y).sum::<f64>() / frame.pixels.len() as f64;
     assert!(mean > 0.0, "the sea seen from orbit is lit");

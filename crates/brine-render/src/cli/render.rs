@@ -47,7 +47,15 @@ pub struct RenderArgs {
     /// completely is made again; temporaries left by a killed run are removed).
     #[arg(long, requires = "frames")]
     pub resume: bool,
+    /// The reference rendering: no wave faded and no normal filtered with the pixel footprint,
+    /// with 64 samples per pixel unless `--spp` says otherwise; what the filtering of
+    /// the normal rendering is meant to preserve.
+    #[arg(long)]
+    pub reference: bool,
 }
+
+/// Samples per pixel of `brine render --reference` when `--spp` is not given.
+pub const REFERENCE_SPP: u32 = 64;
 
 /// Parses `A..B` with `A < B`, or a count `N ≥ 1` as `0..N`.
 fn parse_frames(s: &str) -> Result<(u32, u32), String> {
@@ -136,6 +144,9 @@ pub fn scene_of(args: &RenderArgs) -> Result<Scene, CliError> {
     if let Some(h) = args.height {
         scene.camera.height = h;
     }
+    if args.reference && args.spp.is_none() {
+        scene.camera.spp = REFERENCE_SPP;
+    }
     if let Some(s) = args.spp {
         scene.camera.spp = s;
     }
@@ -221,7 +232,7 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
             bar.set_message(format!("{:.2} Mrays/s", bar.position() as f64 * rays_per_row / secs / 1e6));
         }
     };
-    let options = RenderOptions { threads: args.threads.map(usize::from), profile: false };
+    let options = RenderOptions { threads: args.threads.map(usize::from), profile: false, reference: args.reference };
     if args.time_lapse.is_some() && scene.place.is_none() {
         return Err(CliError::Input(
             "--time-lapse needs a [place] in the scene (the sun and moon follow its time)".into(),
