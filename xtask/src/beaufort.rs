@@ -427,7 +427,7 @@ pub fn run(root: &Path) -> Result<(), String> {
          filtered with the pixel footprint. The default view with the sun behind the camera (no\n\
          glitter to sample), white water, spray and glare off. The reference traces the fitted waves\n\
          (or the FFT cascades) as geometry; the detail normals it reads unfiltered are normals, not\n\
-         geometry, so it does not weight them by their projected area as the BRDF does.\n\n\
+         geometry, each sample weighted by its facet's projected area. See `docs/renderer.md`.\n\n\
          | surface | U₁₀ (m/s) | 4th | 5th | 6th | 7th | 8th | 9th | 10th |\n|---|---|---|---|---|---|---|---|---|\n{energy}",
         ew = ENERGY_SIZE.0,
         eh = ENERGY_SIZE.1,

@@ -224,6 +224,7 @@ pub fn render_world(
                     })
                     .collect();
                 rows.iter_mut().for_each(|p| *p = DVec3::ZERO);
+                let mut weights = vec![0.0f64; rows.len()];
                 let mut tile = TileRays::default();
                 for s in 0..spp as usize {
                     for x0 in (0..width).step_by(TILE) {
@@ -245,12 +246,16 @@ pub fn render_world(
                                 if s == 0 {
                                     aov_rows[y * width + x] = Aov { evaluations: tile.costs[k] as f32, ..sample.aov };
                                 }
-                                rows[y * width + x] += sample.radiance;
+                                rows[y * width + x] += sample.radiance * sample.weight;
+                                weights[y * width + x] += sample.weight;
                             }
                         }
                     }
                 }
-                rows.iter_mut().for_each(|p| *p /= f64::from(spp));
+                // A sum of unit weights is exact: the mean of the usual rendering is unchanged.
+                for (p, w) in rows.iter_mut().zip(&weights) {
+                    *p = if *w > 0.0 { *p / *w } else { DVec3::ZERO };
+                }
                 for _ in 0..band_h {
                     on_row();
                 }
@@ -327,6 +332,16 @@ fn glare_filter(width: usize, height: usize, pixel_angle: f64) -> std::sync::Arc
 struct Sample {
     radiance: DVec3,
     aov: Aov,
+    /// Weight of the sample in its pixel's mean: 1, but in the reference rendering of a sea with
+    /// detail normals their facet's projected area over that of the surface traced ([`World::reference`]).
+    weight: f64,
+}
+
+/// The projected area toward `v` of a facet of normal `n` laid on a surface of normal `g`, per
+/// unit of that surface's projected area: `max(v·n, 0) / ((n·g)(v·g))`. Its mean over facets
+/// whose slopes relative to the surface average zero is 1 (the surface's area is conserved).
+fn projected_area_weight(v: DVec3, n: DVec3, g: DVec3) -> f64 {
+    v.dot(n).max(0.0) / (n.dot(g).max(1e-3) * v.dot(g).max(1e-3))
 }
 
 /// Rows per band of the frame loop and columns per tile: the primary rays of a tile are traced
@@ -350,10 +365,16 @@ fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, hit: Option<Hit>, cx:
         return underwater_radiance(world, field, d, hit.map(|h| (h.t, h.point)), cx);
     }
     let faded;
+    let mut weight = 1.0;
     let (t, p, n, variance) = match hit {
         Some(hit) => {
             let (n, v) = field.hit_geometry(hit.point, d, hit.t, world);
             faded = v;
+            if world.reference && world.detail.is_some() {
+                // The detail normals are not displaced geometry: a sample of the traced surface
+                // stands for a facet of area dA/(n·n_g) seen at v·n, against dA seen at v·n_g.
+                weight = projected_area_weight(-d, n, field.normal(hit.point, d, 0.0, world));
+            }
             (hit.t, hit.point, n, &faded)
         }
         // Beyond the trace distance: the mean plane, with every wave's slopes in the BRDF.
@@ -366,7 +387,7 @@ fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, hit: Option<Hit>, cx:
             let started = cx.clock();
             let l = sky_radiance(world, d);
             cx.lap(Stage::Sky, started);
-            return Sample { radiance: l, aov: Aov { depth: f32::INFINITY, ..Aov::default() } };
+            return Sample { radiance: l, aov: Aov { depth: f32::INFINITY, ..Aov::default() }, weight: 1.0 };
         }
     };
     let shade = shade_surface(world, field, p, d, t, n, variance, cx);
@@ -381,7 +402,7 @@ fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, hit: Option<Hit>, cx:
     let started = cx.clock();
     let l = spray(world, d, t, aerial(world, d, t, shade.radiance));
     cx.lap(Stage::Atmosphere, started);
-    Sample { radiance: l, aov }
+    Sample { radiance: l, aov, weight }
 }
 
 /// Mean radius of the Earth (m).
@@ -747,10 +768,10 @@ fn underwater_radiance(
             Aov { depth: t as f32, normal: [0.0, 1.0, 0.0], ..Aov::default() },
         )
     } else {
-        return Sample { radiance: background, aov: Aov { depth: f32::INFINITY, ..Aov::default() } };
+        return Sample { radiance: background, aov: Aov { depth: f32::INFINITY, ..Aov::default() }, weight: 1.0 };
     };
     let transmittance = (-world.water.c * s).exp();
-    Sample { radiance: source * transmittance + background * (DVec3::ONE - transmittance), aov }
+    Sample { radiance: source * transmittance + background * (DVec3::ONE - transmittance), aov, weight: 1.0 }
 }
 
 /// Smallest `|d_y|` of the pixel footprint's stretch `1/√|d_y|` on the sea (the FFT fading's).
@@ -922,6 +943,28 @@ mod tests {
     /// f32 depth AOVs and the f64 hit differ by rounding only; the hit itself is within the trace
     /// tolerance of the first crossing for either start, so two hits are within twice it.
     const HITS_AGREE_TOLERANCES: f64 = 2.0;
+
+    /// Facets of zero-mean slopes on a tilted surface keep its projected area on average: the
+    /// weights of the reference's detail normals average to 1 (here over a symmetric grid of
+    /// slopes small enough that no facet turns away from the viewer, where the mean is exact).
+    #[test]
+    fn detail_facets_keep_the_projected_area() {
+        const ROUNDING: f64 = 1e-12;
+        let g = DVec3::new(0.2, 1.0, -0.1).normalize();
+        let (t1, t2) = (g.any_orthonormal_vector(), g.cross(g.any_orthonormal_vector()));
+        for v in [DVec3::new(0.0, 0.3, 1.0).normalize(), DVec3::new(0.5, 0.8, -0.3).normalize()] {
+            let (mut sum, mut n) = (0.0, 0);
+            for i in -10..=10 {
+                for j in -10..=10 {
+                    let (a, b) = (0.01 * f64::from(i), 0.01 * f64::from(j));
+                    let facet = (g - a * t1 - b * t2).normalize();
+                    sum += projected_area_weight(v, facet, g);
+                    n += 1;
+                }
+            }
+            assert!((sum / f64::from(n) - 1.0).abs() < ROUNDING, "{v}: mean weight {}", sum / f64::from(n));
+        }
+    }
 
     /// Image coherence changes only where each primary ray starts tracing: a tile's hits are the
     /// hits of its rays traced one by one (the same first crossing, each refined to the trace
