@@ -11,6 +11,7 @@ use clap::{Parser, Subcommand};
 mod beaufort;
 mod bench;
 mod plots;
+mod whitewater;
 
 /// Brine's project automation.
 #[derive(Debug, Parser)]
@@ -51,6 +52,8 @@ enum Task {
     },
     /// Render and measure the Beaufort sheet only (docs/beaufort.md, docs/beaufort/*.png).
     Beaufort,
+    /// Measure white water from above (docs/whitewater.md, docs/whitewater/*.png).
+    Whitewater,
 }
 
 /// The workspace root (the parent of this crate's folder).
@@ -85,6 +88,7 @@ fn run(cli: Cli) -> Result<(), String> {
             if names.is_empty() { beaufort::run(&root()) } else { Ok(()) }
         }
         Task::Beaufort => beaufort::run(&root()),
+        Task::Whitewater => whitewater::run(&root()),
         Task::Golden { bless } => {
             let envs: &[(&str, &str)] = if bless { &[("BRINE_BLESS", "1")] } else { &[] };
             cargo(&["test", "-p", "brine-tests", "--test", "golden"], envs)

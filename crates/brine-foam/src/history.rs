@@ -29,6 +29,25 @@ impl Default for FoamHistoryParams {
     }
 }
 
+/// Checks the time lattice shared by [`FoamHistory`] and [`crate::FoamMemory`]: the decay time
+/// `τ` in `(0, 60]` s, the step in `(0, τ]`, the length in decay times within `length.1` (named
+/// by `length.2`), each drift component within ±5 m s⁻¹. Returns `(τ, Δt, T/τ)`.
+pub(crate) fn check_lattice(
+    decay_time_s: f64,
+    step_s: f64,
+    length: (f64, (f64, f64), &'static str),
+    drift_m_s: [f64; 2],
+) -> Result<(f64, f64, f64), FoamError> {
+    let tau = check("decay_time_s", decay_time_s, decay_time_s > 0.0 && decay_time_s <= 60.0, "(0, 60] s")?;
+    let step = check("step_s", step_s, step_s > 0.0 && step_s <= tau, "(0, decay_time_s] s")?;
+    let (ratio, (lo, hi), range) = length;
+    let ratio = check("length_in_decay_times", ratio, (lo..=hi).contains(&ratio), range)?;
+    for (name, v) in [("drift_x_m_s", drift_m_s[0]), ("drift_z_m_s", drift_m_s[1])] {
+        check(name, v, v.abs() <= 5.0, "[-5, 5] m/s")?;
+    }
+    Ok((tau, step, ratio))
+}
+
 /// One past instant read by [`FoamHistory::accumulate`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FoamSample {
@@ -118,22 +137,12 @@ impl FoamHistory {
     /// Callaghan, Deane & Stokes 2012 (`τ` from 0.5 to 8 s); Koepke 1984 (`f_ef`); Darles et al.
     /// 2007 §4.1.2; equation sheet §5 (explicit age model instead of `0.4 − 0.2 t·10⁻²`).
     pub fn new(params: &FoamHistoryParams, koepke: &KoepkeFoam) -> Result<Self, FoamError> {
-        let tau = check(
-            "decay_time_s",
+        let (tau, step, ratio) = check_lattice(
             params.decay_time_s,
-            params.decay_time_s > 0.0 && params.decay_time_s <= 60.0,
-            "(0, 60] s",
+            params.step_s,
+            (params.length_in_decay_times, (1.0, 10.0), "[1, 10]"),
+            params.drift_m_s,
         )?;
-        let step = check("step_s", params.step_s, params.step_s > 0.0 && params.step_s <= tau, "(0, decay_time_s] s")?;
-        let ratio = check(
-            "length_in_decay_times",
-            params.length_in_decay_times,
-            (1.0..=10.0).contains(&params.length_in_decay_times),
-            "[1, 10]",
-        )?;
-        for (name, v) in [("drift_x_m_s", params.drift_m_s[0]), ("drift_z_m_s", params.drift_m_s[1])] {
-            check(name, v, v.abs() <= 5.0, "[-5, 5] m/s")?;
-        }
         let count = (ratio * tau / step).ceil() as usize + 1;
         if count > MAX_HISTORY_SAMPLES {
             return Err(FoamError::OutOfRange {

@@ -1,6 +1,7 @@
 //! # brine-foam — Monahan foam and sea spray
 //!
-//! Whitecap coverage after Monahan & Ó Muircheartaigh (1980, 1986), the foam extension of
+//! Whitecap coverage after Monahan & Ó Muircheartaigh (1980, 1986), the foam that breaking crests
+//! leave and that decays with Monahan's (1971) time constant ([`FoamMemory`]), the foam extension of
 //! Darles, Crespin & Ghazanfarpour (2007, §4.1, Eq. 3–4, corrected in the equation sheet §5),
 //! foam radiance after Koepke (1984), foam that moves with the water and ages between frames,
 //! and the sea-spray source function of Monahan, Spiel & Davidson (1986) with its vertical
@@ -19,7 +20,10 @@
 //! | `ν` | [`FoamNoise::value`] | 1 | footprint-filtered noise, mean 1 |
 //! | `ℓ` | `footprint_m` | m | pixel footprint on the sea |
 //! | `R_f`, `f_ef`, `R_ef` | [`KoepkeFoam`] | 1 | fresh-foam reflectance, efficiency, effective reflectance |
-//! | `τ`, `τ_R` | [`FoamHistory`] | s | foam-area and brightness decay times |
+//! | `τ`, `τ_R` | [`FoamHistory`], [`FoamMemory`] | s | foam-area and brightness decay times |
+//! | `m(u)`, `θ(a)` | [`FoamMemory::survivals`] | 1 | uniform patch variable, survival threshold of foam of age `a` |
+//! | `A₀` | [`FOAM_DENSITY`] | 1 | share of the swept water that the foam left behind covers |
+//! | `v` | [`FoamMemoryParams::drift_m_s`] | m s⁻¹ | foam drift relative to the water |
 //! | `r₈₀` | `r80_um` | µm | spray drop radius at 80 % humidity |
 //! | `dF/dr₈₀` | [`msd86_flux`] | m⁻² s⁻¹ µm⁻¹ | spray source function |
 //! | `v_s`, `v_d` | [`stokes_settling_velocity`], [`SprayMedium::deposition_velocity`] | m s⁻¹ | settling, deposition velocity |
@@ -64,12 +68,16 @@
 //!   realistic ocean scenes", WSCG, §4.1–4.2.
 //! - Shettle E., Fenn R. 1979, AFGL-TR-79-0214 (aerosol profiles).
 //! - Callaghan A., Deane G., Stokes M. 2012, JGR 117, C09015 (foam decay times).
+//! - Monahan E. C. 1971, "Oceanic whitecaps", JPO 1:139–144 (decay time 3.85 s); Monahan E. C.,
+//!   Lu M. 1990, IEEE J. Oceanic Eng. 15(4):340–349 (stages A and B).
+//! - Wu J. 1983, "Sea-surface drift currents induced by wind and waves", JPO 13:1441–1451.
 
 mod coverage;
 mod error;
 mod extension;
 mod history;
 mod medium;
+mod memory;
 mod noise;
 mod radiance;
 mod scattering;
@@ -82,6 +90,10 @@ pub use error::FoamError;
 pub use extension::{FoamExtension, FoamExtensionParams, SurfaceStatistics};
 pub use history::{FoamHistory, FoamHistoryParams, FoamSample, FoamState, MAX_HISTORY_SAMPLES};
 pub use medium::{ExtinctionEfficiency, SprayMedium, SprayParams};
+pub use memory::{
+    FOAM_DENSITY, FoamMemory, FoamMemoryParams, MAX_MEMORY_INSTANTS, MONAHAN_1971_DECAY_TIME_S, MemorySample,
+    STREAK_STRETCH, STREAK_WINDS_M_S, WIND_DRIFT_FRACTION, WhiteWater, calibrate_threshold,
+};
 pub use noise::FoamNoise;
 pub use radiance::{FRESH_FOAM_REFLECTANCE, KOEPKE_EFFICIENCY, KoepkeFoam, foam_radiance, surface_radiance};
 pub use scattering::{SprayLighting, SprayRay, SprayScattering, henyey_greenstein};

@@ -104,6 +104,31 @@ impl FoamNoise {
         (1.0 + self.amplitude * sum / self.weight_sum).clamp(1.0 - self.amplitude, 1.0 + self.amplitude)
     }
 
+    /// Share of the noise's variance that a footprint `ℓ` keeps: `Σₒ (fₒ(ℓ) wₒ)² / Σₒ wₒ²`,
+    /// treating the octaves as uncorrelated with equal variance per unit weight (each octave is
+    /// the same gradient noise at another scale). 1 at `ℓ = 0`, 0 beyond every octave.
+    ///
+    /// # Arguments
+    /// - `footprint_m`: pixel footprint `ℓ` on the sea (m), `[0, ∞)`.
+    ///
+    /// # Returns
+    /// The kept share, `[0, 1]`.
+    ///
+    /// # References
+    /// Perlin 2002 (octaves of one noise); Darles et al. 2007 §3.2 (footprint fade).
+    pub fn resolved_variance_share(&self, footprint_m: f64) -> f64 {
+        debug_assert!(footprint_m >= 0.0);
+        let (mut kept, mut total) = (0.0, 0.0);
+        for o in 0..self.octaves {
+            let lambda = libm::ldexp(self.wavelength, -(o as i32));
+            let fade = smoothstep(1.0, 1.5, lambda / footprint_m.max(f64::MIN_POSITIVE));
+            let w2 = libm::ldexp(1.0, -2 * (o as i32));
+            kept += fade * fade * w2;
+            total += w2;
+        }
+        kept / total
+    }
+
     /// Perlin gradient noise in `[−1, 1]` at lattice coordinates `(x, z)`.
     fn gradient_noise(&self, x: f64, z: f64) -> f64 {
         let (xf, zf) = (lattice_floor(x), lattice_floor(z));

@@ -86,4 +86,20 @@ fn main() {
     scene.sea.surface = SurfaceKind::Fft;
     let fft = measure("FFT ocean, 4 cascades × 256² (same scene, surface = \"fft\")", &scene);
     println!("\nFFT / trochoids frame time: {:.2}×", fft / trochoids);
+
+    // White water at 16 m/s: the foam left by breaking crests and remembered, against the foam and
+    // whitecaps drawn separately (`foam_memory = false`), interleaved in this process.
+    scene.sea.wind_speed_m_s = 16.0;
+    let mut ratios = Vec::new();
+    for surface in [SurfaceKind::Trochoids, SurfaceKind::Fft] {
+        scene.sea.surface = surface;
+        scene.phenomena.foam_memory = false;
+        let separate = measure(&format!("{surface:?}, 16 m/s, foam and whitecaps separate"), &scene);
+        scene.phenomena.foam_memory = true;
+        let memory = measure(&format!("{surface:?}, 16 m/s, white water with memory"), &scene);
+        ratios.push((surface, memory / separate));
+    }
+    for (surface, r) in ratios {
+        println!("16 m/s {surface:?}: white water with memory / separate foam and whitecaps: {r:.2}×");
+    }
 }

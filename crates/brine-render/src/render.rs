@@ -1,6 +1,6 @@
 //! Per-pixel composition and the parallel frame loop.
 
-use brine_foam::{SprayLighting, SprayRay, SprayScattering};
+use brine_foam::{FRESH_FOAM_REFLECTANCE, SprayLighting, SprayRay, SprayScattering};
 use brine_optics::{
     SlopeVariance, SunDisc, WATER_IOR, fresnel_dielectric, reflect, reflected_disc_radiance, reflected_sun_radiance,
     refract,
@@ -668,7 +668,7 @@ fn shade_surface(
 /// the sea radiance at `p`, seen along `d` from `t` metres.
 fn white_water(world: &World, p: DVec3, d: DVec3, t: f64, n: DVec3, sea: DVec3, light: DirectLight) -> SurfaceShade {
     let mut shade = SurfaceShade { radiance: sea, foam: 0.0, whitecap: 0.0, glint: 0.0 };
-    if world.foam.is_none() && world.whitecaps.is_none() {
+    if world.foam.is_none() && world.whitecaps.is_none() && world.white_water.is_none() {
         return shade;
     }
     // Pixel footprint on the sea: the pixel's angle at distance t, stretched by the grazing view
@@ -683,6 +683,17 @@ fn white_water(world: &World, p: DVec3, d: DVec3, t: f64, n: DVec3, sea: DVec3, 
         let f = |c: usize| brine_foam::foam_radiance(r, e_sun[c], cos_sun, e_sky[c] + e_moon[c]);
         DVec3::new(f(0), f(1), f(2))
     };
+    if let Some(ww) = &world.white_water {
+        // Fresh foam (Koepke's R_f) where the crest breaks, dimming with the foam's age.
+        let w = ww.at(DVec2::new(p.x, p.z), world.time, footprint / 12f64.sqrt());
+        // Ageing foam thins (Koepke's falling reflectance): the water shows through it.
+        let c = w.white * w.brightness;
+        if c > 0.0 {
+            shade.radiance = shade.radiance * (1.0 - c) + lambert(FRESH_FOAM_REFLECTANCE) * c;
+        }
+        shade.foam = w.residual;
+        shade.whitecap = w.active;
+    }
     if let Some(foam) = &world.foam {
         let (gx, gz) = (-n.x / n.y.max(1e-3), -n.z / n.y.max(1e-3));
         let s = foam.extension.foam_amount(foam.coverage, p.y, gx, gz, p.x, p.z, footprint);

@@ -434,6 +434,49 @@ impl FftOcean {
         self.cascades.par_iter().map(|c| synthesise(c, tau)).collect()
     }
 
+    /// The horizontal-displacement derivatives at time `t` on the cascades' rest grids, filtered
+    /// by a Gaussian footprint of standard deviation `footprint_m` (each mode times
+    /// `e^{−k²s²/2}`; modes below `10⁻⁶` of their amplitude and cascades made only of them left
+    /// out): the Jacobian of the long waves, at a fraction of a frame's cost.
+    ///
+    /// # Arguments
+    /// - `t`: time (s), finite.
+    /// - `footprint_m`: `s` (m), `≥ 0`.
+    ///
+    /// # Returns
+    /// One [`FftRestJacobian`] per cascade kept (in cascade order).
+    ///
+    /// # References
+    /// Tessendorf 2001, Eq. 44 (choppy displacement); Dupuy & Bruneton 2012 (its derivatives).
+    pub fn rest_jacobian_fields(&self, t: f64, footprint_m: f64) -> Vec<FftRestJacobian> {
+        debug_assert!(t.is_finite() && footprint_m >= 0.0);
+        let tau = self.phase_time(t);
+        let k_max = GAUSSIAN_KEEP / footprint_m.max(f64::MIN_POSITIVE);
+        self.cascades
+            .par_iter()
+            .enumerate()
+            .filter(|(i, _)| self.band(*i).0 < k_max)
+            .map(|(_, c)| synthesise_jacobian(c, tau, footprint_m, k_max))
+            .collect()
+    }
+
+    /// Expected variance of the linear part of the Jacobian, `λ(∂Dₓ/∂x + ∂D_z/∂z)`, that a
+    /// Gaussian footprint `s` removes: `λ² Σ k² (|h̃₀(k)|² + |h̃₀(−k)|²)(1 − e^{−k²s²})` over every
+    /// mode (dimensionless).
+    ///
+    /// # Arguments
+    /// - `footprint_m`: `s` (m), `≥ 0`; `choppiness`: `λ ≥ 0`.
+    pub fn jacobian_variance_removed(&self, footprint_m: f64, choppiness: f64) -> f64 {
+        let s2 = footprint_m * footprint_m;
+        self.cascades
+            .iter()
+            .flat_map(|c| c.modes.iter())
+            .map(|m| m.k * m.k * (m.h0.norm_sqr() + m.h0_minus_conj.norm_sqr()) * (1.0 - (-m.k * m.k * s2).exp()))
+            .sum::<f64>()
+            * choppiness
+            * choppiness
+    }
+
     /// The sea at time `t`, ready to trace and shade: each cascade's displaced surface resampled
     /// on its grid (see [`FftFrame`]).
     ///
@@ -492,6 +535,55 @@ fn synthesise(c: &CascadeSpectrum, tau: f64) -> FftRestFields {
     }
 }
 
+/// A Gaussian gain `e^{−x²/2}` falls below `10⁻⁶` beyond `x = 5.26`.
+const GAUSSIAN_KEEP: f64 = 5.256_521_769_756_932;
+
+/// The three displacement derivatives of one cascade's modes below `k_max` at phase time `tau`,
+/// each mode filtered by the Gaussian footprint `s`.
+fn synthesise_jacobian(c: &CascadeSpectrum, tau: f64, s: f64, k_max: f64) -> FftRestJacobian {
+    let n = c.n;
+    let mut packs: Vec<Vec<Complex64>> = (0..2).map(|_| vec![Complex64::ZERO; n * n]).collect();
+    for m in c.modes.iter().filter(|m| m.k <= k_max) {
+        let h = evolve(m, tau) * (-0.5 * m.k * m.k * s * s).exp();
+        let inv_k = 1.0 / m.k;
+        let (ux, uz) = (m.kx * inv_k, m.kz * inv_k);
+        packs[0][m.index] = pack(-h * (m.kx * ux), -h * (m.kz * uz));
+        packs[1][m.index] = pack(-h * (m.kx * uz), Complex64::ZERO);
+    }
+    packs.par_iter_mut().for_each(|p| inverse_fft_2d(p, n, c.fft.as_ref()));
+    FftRestJacobian {
+        resolution: n,
+        tile_size: c.tile,
+        dxx: packs[0].iter().map(|v| v.re).collect(),
+        dzz: packs[0].iter().map(|v| v.im).collect(),
+        dxz: packs[1].iter().map(|v| v.re).collect(),
+    }
+}
+
+/// The horizontal-displacement derivatives of one cascade on its rest grid, per unit choppiness
+/// ([`FftOcean::rest_jacobian_fields`]); same conventions as [`FftRestFields`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct FftRestJacobian {
+    /// Grid resolution `N`.
+    pub resolution: usize,
+    /// Tile size `L` (m).
+    pub tile_size: f64,
+    /// `∂Dₓ/∂x` (dimensionless).
+    pub dxx: Vec<f64>,
+    /// `∂D_z/∂z`.
+    pub dzz: Vec<f64>,
+    /// `∂Dₓ/∂z`.
+    pub dxz: Vec<f64>,
+}
+
+impl FftRestJacobian {
+    /// `J = (1 + λ∂Dₓ/∂x)(1 + λ∂D_z/∂z) − λ²(∂Dₓ/∂z)²` at grid index `idx` for choppiness `λ`.
+    pub fn jacobian(&self, idx: usize, choppiness: f64) -> f64 {
+        let l = choppiness;
+        (1.0 + l * self.dxx[idx]) * (1.0 + l * self.dzz[idx]) - l * l * self.dxz[idx] * self.dxz[idx]
+    }
+}
+
 /// Transposition block (elements).
 const TRANSPOSE_BLOCK: usize = 16;
 
@@ -521,6 +613,31 @@ fn inverse_fft_2d(data: &mut [Complex64], n: usize, fft: &dyn Fft<f64>) {
 
 #[cfg(test)]
 mod tests {
+
+    /// Two syntheses of the same trig polynomials (different packing): FFT rounding.
+    const SAME_FIELDS: f64 = 1e-12;
+
+    #[test]
+    fn the_jacobian_fields_are_those_of_the_full_synthesis() {
+        let pm = crate::PiersonMoskowitz::from_u10(12.0).unwrap();
+        let spreading = crate::CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
+        let options = FftOptions { resolution: 64, ..FftOptions::for_spectrum(&pm, 2) };
+        let ocean = FftOcean::new(&pm, &spreading, &options).unwrap();
+        let full = ocean.rest_fields(3.7);
+        let jac = ocean.rest_jacobian_fields(3.7, 0.0);
+        assert_eq!(jac.len(), full.len());
+        for (a, b) in full.iter().zip(&jac) {
+            for i in 0..a.dxx.len() {
+                assert!((a.dxx[i] - b.dxx[i]).abs() < SAME_FIELDS);
+                assert!((a.dzz[i] - b.dzz[i]).abs() < SAME_FIELDS);
+                assert!((a.dxz[i] - b.dxz[i]).abs() < SAME_FIELDS);
+            }
+        }
+        // A footprint that washes out the second cascade's band keeps only the first.
+        assert_eq!(ocean.rest_jacobian_fields(3.7, GAUSSIAN_KEEP / (ocean.band(1).0 * 0.99)).len(), 1);
+        assert!(ocean.jacobian_variance_removed(0.0, 1.0).abs() < f64::MIN_POSITIVE);
+    }
+
     use super::*;
     use crate::Elfouhaily;
 

@@ -140,7 +140,7 @@ pub use dispersion::{Dispersion, ELFOUHAILY_K_M, SEA_WATER_DENSITY, SEA_WATER_SU
 pub use dispersion::{G, omega_deep_water, wavenumber_deep_water};
 pub use elfouhaily::{Elfouhaily, ElfouhailySpreading};
 pub use error::WaveError;
-pub use fft::{FftOcean, FftRestFields};
+pub use fft::{FftOcean, FftRestFields, FftRestJacobian};
 pub use fft_frame::{FftCascade, FftFrame};
 pub use fft_options::{
     FFT_CASCADE_CUT_INDEX, FFT_DEFAULT_TILE_RATIO, FFT_MAX_CASCADES, FFT_MAX_CHOPPINESS, FFT_MAX_LOOP_PERIOD_S,

@@ -1,7 +1,7 @@
 //! Mip-mapped statistics of the displacement Jacobian of an FFT ocean (Dupuy & Bruneton 2012):
 //! the mean and variance of `J` over a pixel footprint from per-cascade pyramids.
 
-use brine_waves::{FftFrame, FftPyramid};
+use brine_waves::{FftFrame, FftPyramid, FftRestJacobian};
 
 use crate::statistics::Moments;
 
@@ -64,6 +64,33 @@ impl FftJacobianStatistics {
                     })
                     .collect();
                 FftPyramid::new(c.resolution(), c.spacing(), base)
+            })
+            .collect();
+        Self { cascades }
+    }
+
+    /// The pyramids of the Jacobians of rest-grid derivative fields (brine-waves
+    /// `FftOcean::rest_jacobian_fields`), read at rest positions: the long waves' Jacobian in the
+    /// past, for the foam memory.
+    ///
+    /// # Arguments
+    /// - `fields`: per cascade, the derivatives per unit choppiness.
+    /// - `choppiness`: `λ ≥ 0`.
+    ///
+    /// # Returns
+    /// The pyramids, as [`Self::new`] (`kᵢ = Jᵢ − 1 + 1/n`, `n = fields.len()`).
+    pub fn from_rest_jacobians(fields: &[FftRestJacobian], choppiness: f64) -> Self {
+        let share = 1.0 / fields.len().max(1) as f64;
+        let cascades = fields
+            .iter()
+            .map(|f| {
+                let base = (0..f.dxx.len())
+                    .map(|i| {
+                        let k = f.jacobian(i, choppiness) - 1.0 + share;
+                        [k, k * k]
+                    })
+                    .collect();
+                FftPyramid::new(f.resolution, f.tile_size / f.resolution as f64, base)
             })
             .collect();
         Self { cascades }

@@ -33,6 +33,11 @@
 //! | `⟨kᵢ⟩`, `⟨kᵢ²⟩` | [`FftJacobianStatistics::cascade_moments`] | 1 | footprint means of `kᵢ = 1/n + aᵢ + bᵢ + aᵢbᵢ − cᵢ²` and of `kᵢ²` |
 //! | `Δ_min`, `L_max` | [`FftJacobianStatistics::finest_spacing`], [`FftJacobianStatistics::largest_tile`] | m | finest grid spacing, largest tile |
 //! | `α(s)` | [`FftCalibration::alpha_for_footprint`] | 1 | threshold calibrated for the footprint size `s` |
+//! | `s_b` | [`breaking_footprint`] | m | footprint keeping the breaking waves (faster than `c_p/4`) |
+//! | `σ_e` | [`WhiteWaterModel::edge_std`] | 1 | short waves' share of the breaking variable (edge noise) |
+//!
+//! [`WhiteWaterModel`] composes the whitecaps of the breaking waves with the foam they leave
+//! (brine-foam `FoamMemory`) and calibrates one threshold for both on Monahan's coverage.
 //!
 //! ## Validity
 //!
@@ -76,6 +81,8 @@
 //! - Winitzki S. 2008, "A handy approximation for the error function and its inverse".
 //! - Abramowitz M., Stegun I. 1964, *Handbook of Mathematical Functions*, 7.1.26, 9.6, 9.7.
 //! - Monahan E., Ó Muircheartaigh I. 1980, JPO 10:2094–2099 (calibration target).
+//! - Melville W. K., Matusov P. 2002, Nature 417:58–63; Gemmrich J. R., Banner M. L., Garrett C.
+//!   2008, JPO 38:1296–1312 (the speed of breaking crests).
 
 mod bessel;
 mod calibration;
@@ -85,6 +92,7 @@ mod error;
 mod fft_calibration;
 mod fft_statistics;
 mod statistics;
+mod white_water;
 
 pub use calibration::{Calibration, CalibrationOptions, CoverageEstimate, surface_coverage};
 pub use coverage::{WHITECAP_REFLECTANCE, compose_with_whitecaps, whitecap_coverage, whitecap_radiance};
@@ -95,4 +103,8 @@ pub use erf::{
 pub use error::WhitecapError;
 pub use fft_calibration::{FFT_CALIBRATION_SAMPLES, FftCalibration};
 pub use fft_statistics::FftJacobianStatistics;
-pub use statistics::{F32_MOMENTS_ERROR, FootprintFilter, JacobianStatistics, Moments};
+pub use statistics::{F32_MOMENTS_ERROR, FootprintFilter, HistoryRotation, JacobianStatistics, Moments};
+pub use white_water::{
+    BREAKING_SPEED_SHARE, BreakingSource, FftBreaking, TrochoidBreaking, WHITE_WATER_FOOTPRINTS_M, WhiteWaterModel,
+    WhiteWaterOptions, breaking_footprint, breaking_wavenumber_cut,
+};

@@ -2,8 +2,9 @@
 //! function, its extinction and optical depth).
 
 use brine_foam::{
-    CoverageParams, DARLES_ONSET_WIND_M_S, ExtinctionEfficiency, MSD86_RADIUS_RANGE_UM, SprayMedium, SprayParams,
-    WhitecapLaw, msd86_flux, whitecap_coverage,
+    CoverageParams, DARLES_ONSET_WIND_M_S, ExtinctionEfficiency, FOAM_DENSITY, FoamMemory, FoamMemoryParams,
+    KOEPKE_EFFICIENCY, MSD86_RADIUS_RANGE_UM, SprayMedium, SprayParams, WIND_DRIFT_FRACTION, WhitecapLaw, msd86_flux,
+    whitecap_coverage,
 };
 use serde_json::{Value, json};
 
@@ -86,12 +87,23 @@ pub fn foam_json(args: &FoamArgs) -> Result<Value, CliError> {
         }
         _ => None,
     };
+    let memory = FoamMemoryParams::for_wind(args.u10, 0.0, 1);
+    let m = FoamMemory::new(&memory, KOEPKE_EFFICIENCY).map_err(|e| CliError::Input(e.to_string()))?;
     Ok(json!({
         "u10_m_s": args.u10,
         "law": law.name(),
         "delta_t_c": delta_t,
         "onset_m_s": args.onset_m_s,
         "coverage": whitecap_coverage(&params),
+        "memory": {
+            "decay_time_s": m.decay_time(),
+            "brightness_decay_time_s": m.brightness_decay_time(),
+            "foam_density": FOAM_DENSITY,
+            "length_s": m.length(),
+            "step_s": m.step(),
+            "wind_drift_m_s": WIND_DRIFT_FRACTION * args.u10,
+            "streak_stretch": memory.streak_stretch,
+        },
     }))
 }
 
@@ -110,6 +122,14 @@ pub fn run_foam(args: &FoamArgs) -> Result<(), CliError> {
             100.0 * v["coverage"].as_f64().unwrap_or(0.0),
             args.u10,
             v["law"].as_str().unwrap_or("")
+        );
+        let m = &v["memory"];
+        super::outln!(
+            "foam left by breaking: area decays in {} s (brightness in {:.2} s), drifts {:.2} m/s downwind, patches {:.1}× longer along the wind",
+            m["decay_time_s"],
+            m["brightness_decay_time_s"].as_f64().unwrap_or(0.0),
+            m["wind_drift_m_s"].as_f64().unwrap_or(0.0),
+            m["streak_stretch"].as_f64().unwrap_or(1.0)
         );
     }
     Ok(())

@@ -476,8 +476,16 @@ pub const KEYS: &[KeySpec] = &[
     ),
     k("phenomena", "clouds", BOOL, "—", "`true`", "the layers of `[sky.clouds]`"),
     k("phenomena", "subsurface", BOOL, "—", "`true`", "sun light through thin crests (Jensen dipole)"),
-    k("phenomena", "foam", BOOL, "—", "`true`", "Darles/Koepke foam on crests"),
+    k("phenomena", "foam", BOOL, "—", "`true`", "foam (left by breaking crests; alone: Darles/Koepke foam on crests)"),
     k("phenomena", "whitecaps", BOOL, "—", "`true`", "Dupuy–Bruneton whitecaps from the Jacobian"),
+    k(
+        "phenomena",
+        "foam_memory",
+        BOOL,
+        "—",
+        "`true`",
+        "with foam and whitecaps: foam left by the breaking crests, drifting and decaying (`false`: the two drawn separately)",
+    ),
     k("phenomena", "spray", BOOL, "—", "`true`", "Monahan spray along the camera ray"),
     k(
         "phenomena",

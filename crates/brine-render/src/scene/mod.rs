@@ -157,6 +157,10 @@ pub struct PhenomenaConfig {
     /// Raw whitecap threshold `α` of Dupuy & Bruneton (`[−2, 2]`); when absent, `α` is calibrated
     /// so that the sea's mean coverage is Monahan's.
     pub whitecap_alpha: Option<f64>,
+    /// With foam and whitecaps both on: the foam is left by the breaking crests and remembered
+    /// (brine-foam `FoamMemory`); `false` draws the two separately (Darles' extension and the
+    /// Jacobian whitecaps, a faint veil).
+    pub foam_memory: bool,
 }
 
 impl Default for PhenomenaConfig {
@@ -170,6 +174,7 @@ impl Default for PhenomenaConfig {
             whitecaps: true,
             spray: true,
             whitecap_alpha: None,
+            foam_memory: true,
         }
     }
 }

@@ -1,0 +1,562 @@
+//! White water with a memory: active whitecaps leave foam on the water, which drifts, breaks
+//! into patches and streaks, and decays.
+
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+use crate::error::{FoamError, check};
+use crate::noise::{FoamNoise, smoothstep};
+
+/// E-folding time of a whitecap's foam area in sea water, `τ = 3.85 s` (Monahan 1971; 2.54 s in
+/// fresh water). Callaghan et al. (2012) measured 0.5–8 s for single whitecaps.
+pub const MONAHAN_1971_DECAY_TIME_S: f64 = 3.85;
+
+/// Wind drift of surface foam relative to the water's orbital motion, as a fraction of `U₁₀`:
+/// about 3 % (Wu 1983).
+pub const WIND_DRIFT_FRACTION: f64 = 0.03;
+
+/// Aspect ratio (along / across the wind) of the foam patches at Beaufort 8 and above: Brine's
+/// choice for "foam blown in well-marked streaks along the direction of the wind"; the Beaufort
+/// descriptions give no number.
+pub const STREAK_STRETCH: f64 = 6.0;
+
+/// Winds (m s⁻¹) over which the patches stretch from round (Beaufort 6's upper end) to
+/// [`STREAK_STRETCH`] (Beaufort 8's lower end): the Beaufort scale's "foam begins to be blown in
+/// streaks" (Beaufort 7, 13.9–17.1 m s⁻¹).
+pub const STREAK_WINDS_M_S: (f64, f64) = (12.0, 17.2);
+
+/// Share of the water a breaking crest swept that its foam covers once the crest has passed,
+/// `A₀` of the area law: foam left behind is a lace of bubbles rafts, never a sheet (Brine's
+/// choice; the breaking crest itself is solid white).
+pub const FOAM_DENSITY: f64 = 0.8;
+
+/// Largest number of lattice instants a [`FoamMemory`] reads.
+pub const MAX_MEMORY_INSTANTS: usize = 64;
+
+/// Number of octaves of the patch noise and of the edge noise.
+const NOISE_OCTAVES: u32 = 5;
+
+/// Quantiles tabulated to make the patch noise uniform (its empirical distribution function).
+const QUANTILES: usize = 256;
+
+/// Points the quantiles are estimated from (a few thousand first-octave cells).
+const QUANTILE_SAMPLES: usize = 16_384;
+
+/// Half-width of the survival step in the uniform patch variable: a patch edge is smoothed over
+/// ±2 % of the area quantile instead of aliasing.
+const EDGE_SOFTNESS: f64 = 0.02;
+
+/// Survivals below this are skipped (the source is not evaluated there).
+const NEGLIGIBLE_SURVIVAL: f64 = 1e-4;
+
+/// Parameters of the foam memory.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FoamMemoryParams {
+    /// E-folding time `τ` of the foam area (s), `(0, 60]`; default
+    /// [`MONAHAN_1971_DECAY_TIME_S`].
+    pub decay_time_s: f64,
+    /// Spacing `Δt` of the global time lattice at which past breaking is read (s),
+    /// `(0, decay_time_s]`; default 0.5 s.
+    pub step_s: f64,
+    /// Length of the memory in decay times `T/τ`, `[1, 5]`; default 2 (foam older than `2τ` keeps
+    /// 14 % of its area and fades out over the last step).
+    pub length_in_decay_times: f64,
+    /// Drift of the foam relative to the water particles `(v_x, v_z)` (m s⁻¹), each within ±5;
+    /// see [`FoamMemoryParams::for_wind`].
+    pub drift_m_s: [f64; 2],
+    /// Wavelength of the first octave of the patch noise across the wind (m), `(0, 10⁴]`.
+    pub patch_wavelength_m: f64,
+    /// Stretch of the patches along the wind, `[1, 20]` (1: round patches).
+    pub streak_stretch: f64,
+    /// Direction the wind blows toward, from +x toward +z (rad), finite.
+    pub wind_direction_rad: f64,
+    /// Wavelength of the first octave of the edge noise (m), `(0, 10⁴]`.
+    pub edge_wavelength_m: f64,
+    /// Seed of both noises.
+    pub seed: u64,
+}
+
+impl Default for FoamMemoryParams {
+    fn default() -> Self {
+        Self {
+            decay_time_s: MONAHAN_1971_DECAY_TIME_S,
+            step_s: 0.25,
+            length_in_decay_times: 1.5,
+            drift_m_s: [0.0, 0.0],
+            patch_wavelength_m: 4.0,
+            streak_stretch: 1.0,
+            wind_direction_rad: 0.0,
+            edge_wavelength_m: 1.0,
+            seed: 1,
+        }
+    }
+}
+
+impl FoamMemoryParams {
+    /// The defaults for a wind of `u10` (m s⁻¹, `[0, 60]`) blowing toward `direction_rad`: a drift
+    /// of [`WIND_DRIFT_FRACTION`] `U₁₀` downwind and patches stretched along the wind from
+    /// round below 12 m s⁻¹ to [`STREAK_STRETCH`] from 17.2 m s⁻¹ (smoothstep between).
+    ///
+    /// # References
+    /// Wu J. 1983, "Sea-surface drift currents induced by wind and waves", JPO 13:1441–1451;
+    /// the Beaufort scale's sea-state descriptions (WMO No. 8).
+    pub fn for_wind(u10: f64, direction_rad: f64, seed: u64) -> Self {
+        let drift = WIND_DRIFT_FRACTION * u10;
+        Self {
+            drift_m_s: [drift * direction_rad.cos(), drift * direction_rad.sin()],
+            streak_stretch: 1.0 + (STREAK_STRETCH - 1.0) * smoothstep(STREAK_WINDS_M_S.0, STREAK_WINDS_M_S.1, u10),
+            wind_direction_rad: direction_rad,
+            seed,
+            ..Self::default()
+        }
+    }
+}
+
+/// One past instant of the memory ([`FoamMemory::compose`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MemorySample {
+    /// Index of the instant, 0 the newest.
+    pub index: usize,
+    /// The lattice instant `tⱼ = Δt(⌊t/Δt⌋ − j)` (s).
+    pub time_s: f64,
+    /// Age of foam made then, `aⱼ = t − tⱼ` (s).
+    pub age_s: f64,
+    /// Offset to add to the current point's rest coordinates to find where that foam was made,
+    /// `−v aⱼ` (m).
+    pub rest_offset_m: [f64; 2],
+    /// Share of that foam still there, `Sⱼ ∈ [0, 1]`.
+    pub survival: f64,
+}
+
+/// White water at one point: the active whitecap, the foam it left, and the two together.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WhiteWater {
+    /// Cover of actively breaking water (stage A), `[0, 1]`.
+    pub active: f64,
+    /// Cover of the foam left behind (stage B), `[0, 1]`.
+    pub residual: f64,
+    /// White cover `1 − (1 − active)(1 − residual)`, `[0, 1]`.
+    pub white: f64,
+    /// Reflectance of the white water relative to fresh foam, `(0, 1]` (1 where there is none).
+    pub brightness: f64,
+}
+
+/// Foam that remembers: a stateless function of the rest position and the time.
+///
+/// A breaking crest (an active whitecap, stage A of Monahan & Lu 1990) covers the water it passes
+/// with foam; once the crest has gone the foam (stage B) drifts with the surface and its area
+/// decays exponentially, `A(a) = A₀ e^{−a/τ}` (Monahan 1971, Callaghan et al. 2012). Brine makes
+/// that decay a shape: the foam of age `a` survives where a uniform patch variable `m(u)` carried
+/// by the water is below `e^{−a/τ}`, so the foam of one breaking event shrinks into patches and
+/// threads with exactly the exponential area law, and a still is the state reached from the past:
+///
+/// `residual(u, t) = 1 − Πⱼ (1 − Aⱼ Sⱼ)`, `Aⱼ = A(u − v aⱼ, tⱼ)`, `Sⱼ = S(m(u), aⱼ)`,
+///
+/// over the instants `tⱼ` of a global lattice of step `Δt` and ages `aⱼ = t − tⱼ ≤ T`, where `A`
+/// is the active cover (the caller's source, e.g. Dupuy & Bruneton's Jacobian whitecaps), `v` the
+/// drift of the foam relative to the water (wind drift), and
+///
+/// `S(m, a) = (1 − r) · smoothstep(θ + ε, θ − ε, m) + r θ`, `θ(a) = A₀ e^{−a/τ} min(1, (T − a)/Δt)`,
+///
+/// with `r` the share of the patch noise that the pixel footprint does not resolve (a far pixel
+/// sees the mean survival, a near one the patches) and `ε` the edge softness. Both terms have
+/// area mean `θ`, so the filtering keeps the mean foam at every distance. `m = F(g)` is the
+/// empirical distribution function of a gradient-noise fBm `g` (tabulated in the constructor,
+/// so `m` is uniform to sampling), evaluated in coordinates stretched along the wind by
+/// `streak_stretch`: foam streaks along the wind. The brightness of foam of age `a` relative
+/// to fresh foam is `e^{−a/τ_R}`, `τ_R = τ f_ef/(1 − f_ef)`, so that the area-weighted mean over
+/// the exponential age distribution of the residual foam is Koepke's efficiency `f_ef`.
+///
+/// Active whitecaps are given a lacy edge by [`FoamMemory::edge_noise`], a zero-mean noise of
+/// unit variance carried by the water, which the caller adds (scaled) to the breaking variable.
+///
+/// Because every term is a function of `(u, t)` on a global lattice, frame `k` is the same alone,
+/// in a sequence or resumed, at any thread count. The approximation: the rest position of a hit
+/// is the caller's (the renderer takes the displaced position); the source is read at the
+/// lattice instants only, so a crest moving faster than its width per `Δt` leaves a dotted trail.
+///
+/// # References
+/// Monahan E. C. 1971, "Oceanic whitecaps", JPO 1:139–144 (decay time 3.85 s); Monahan E. C.,
+/// Lu M. 1990, IEEE J. Oceanic Eng. 15(4):340–349 (stages A and B); Callaghan A. H., Deane G. B.,
+/// Stokes M. D. 2012, JGR 117:C09015 (exponential area decay); Koepke P. 1984, Appl. Opt.
+/// 23(11):1816–1824 (`f_ef`); Wu J. 1983, JPO 13:1441–1451 (wind drift).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FoamMemory {
+    tau: f64,
+    tau_r: f64,
+    step: f64,
+    length: f64,
+    count: usize,
+    drift: [f64; 2],
+    along: [f64; 2],
+    stretch: f64,
+    patches: FoamNoise,
+    edges: FoamNoise,
+    edge_std: f64,
+    quantiles: Vec<f64>,
+}
+
+impl FoamMemory {
+    /// Checks the parameters and tabulates the distribution of the patch noise.
+    ///
+    /// # Arguments
+    /// - `params`: [`FoamMemoryParams`].
+    /// - `efficiency`: Koepke's `f_ef`, `(0, 1)` (0.4), for the brightness decay.
+    ///
+    /// # Errors
+    /// [`FoamError::OutOfRange`] naming the first parameter out of its range.
+    pub fn new(params: &FoamMemoryParams, efficiency: f64) -> Result<Self, FoamError> {
+        let (tau, step, ratio) = crate::history::check_lattice(
+            params.decay_time_s,
+            params.step_s,
+            (params.length_in_decay_times, (1.0, 5.0), "[1, 5]"),
+            params.drift_m_s,
+        )?;
+        check("streak_stretch", params.streak_stretch, (1.0..=20.0).contains(&params.streak_stretch), "[1, 20]")?;
+        check("wind_direction_rad", params.wind_direction_rad, true, "finite rad")?;
+        check("efficiency", efficiency, efficiency > 0.0 && efficiency < 1.0, "(0, 1)")?;
+        let count = (ratio * tau / step).ceil() as usize + 1;
+        if count > MAX_MEMORY_INSTANTS {
+            return Err(FoamError::OutOfRange {
+                name: "step_s",
+                value: step,
+                range: "at least length_in_decay_times · decay_time_s / 63 s (at most 64 instants)",
+            });
+        }
+        let patches = FoamNoise::new(1.0, params.patch_wavelength_m, NOISE_OCTAVES, params.seed)?;
+        let edges = FoamNoise::new(1.0, params.edge_wavelength_m, NOISE_OCTAVES, params.seed ^ 0x5eed_ed9e)?;
+        let mut memory = Self {
+            tau,
+            tau_r: tau * efficiency / (1.0 - efficiency),
+            step,
+            length: step * (count - 1) as f64,
+            count,
+            drift: params.drift_m_s,
+            along: [params.wind_direction_rad.cos(), params.wind_direction_rad.sin()],
+            stretch: params.streak_stretch,
+            patches,
+            edges,
+            edge_std: 1.0,
+            quantiles: Vec::new(),
+        };
+        // The empirical distribution of the patch noise and the standard deviation of the edge
+        // noise, from the same deterministic points spread over many first-octave cells.
+        let mut rng = ChaCha8Rng::seed_from_u64(params.seed ^ 0x0a11_7e57);
+        let span = 200.0 * params.patch_wavelength_m.max(params.edge_wavelength_m) * memory.stretch;
+        let (mut g, mut e2) = (Vec::with_capacity(QUANTILE_SAMPLES), 0.0);
+        for _ in 0..QUANTILE_SAMPLES {
+            let (x, z) = (rng.random_range(-span..span), rng.random_range(-span..span));
+            g.push(memory.patch_value(x, z, 0.0));
+            let e = memory.edges.value(x, z, 0.0) - 1.0;
+            e2 += e * e;
+        }
+        g.sort_by(f64::total_cmp);
+        memory.quantiles = (0..=QUANTILES).map(|i| g[(i * (QUANTILE_SAMPLES - 1)) / QUANTILES]).collect();
+        memory.edge_std = (e2 / QUANTILE_SAMPLES as f64).sqrt().max(f64::MIN_POSITIVE);
+        Ok(memory)
+    }
+
+    /// `τ`, the decay time of the foam area (s).
+    pub fn decay_time(&self) -> f64 {
+        self.tau
+    }
+
+    /// `τ_R`, the decay time of the foam's brightness (s).
+    pub fn brightness_decay_time(&self) -> f64 {
+        self.tau_r
+    }
+
+    /// `T`, the age at which foam is dropped (s).
+    pub fn length(&self) -> f64 {
+        self.length
+    }
+
+    /// Number of lattice instants read at most per point.
+    pub fn sample_count(&self) -> usize {
+        self.count
+    }
+
+    /// The patch noise `g − 1` at `(x, z)` in stretched coordinates, footprint-filtered.
+    fn patch_value(&self, x: f64, z: f64, footprint_m: f64) -> f64 {
+        let (a, c) = (self.along[0], self.along[1]);
+        let (s, q) = ((x * a + z * c) / self.stretch, -x * c + z * a);
+        // The footprint shrinks along the stretched axis too; take the across-wind one (the
+        // shorter wavelength) so no octave aliases.
+        self.patches.value(s, q, footprint_m) - 1.0
+    }
+
+    /// The uniform patch variable `m = F(g)` (empirical distribution function), `[0, 1]`.
+    fn uniform(&self, g: f64) -> f64 {
+        let q = &self.quantiles;
+        let i = q.partition_point(|&v| v < g);
+        if i == 0 {
+            return 0.0;
+        }
+        if i > QUANTILES {
+            return 1.0;
+        }
+        let (lo, hi) = (q[i - 1], q[i]);
+        let f = if hi > lo { (g - lo) / (hi - lo) } else { 0.5 };
+        ((i - 1) as f64 + f) / QUANTILES as f64
+    }
+
+    /// Unit-variance, zero-mean edge noise carried by the water at rest position `(x, z)` and the
+    /// share of its variance the footprint keeps.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: rest position (m), finite.
+    /// - `footprint_m`: pixel footprint `ℓ` (m), `≥ 0`.
+    ///
+    /// # Returns
+    /// `(e, k)`: the resolved noise `e` (dimensionless; variance `k` over the sea) and `k ∈ [0, 1]`.
+    /// A caller adding `σ_e e` to a Gaussian breaking variable adds `σ_e²(1 − k)` to its variance.
+    pub fn edge_noise(&self, x: f64, z: f64, footprint_m: f64) -> (f64, f64) {
+        debug_assert!(footprint_m >= 0.0);
+        ((self.edges.value(x, z, footprint_m) - 1.0) / self.edge_std, self.edges.resolved_variance_share(footprint_m))
+    }
+
+    /// Spacing `Δt` of the lattice (s).
+    pub fn step(&self) -> f64 {
+        self.step
+    }
+
+    /// Drift `v` of the foam relative to the water (m s⁻¹).
+    pub fn drift(&self) -> [f64; 2] {
+        self.drift
+    }
+
+    /// Lattice instant `j` before `t` and the age of its foam: `(tⱼ, aⱼ)` (s).
+    pub fn instant(&self, t: f64, j: usize) -> (f64, f64) {
+        let time_s = ((t / self.step).floor() - j as f64) * self.step;
+        (time_s, (t - time_s).max(0.0))
+    }
+
+    /// Survivals `Sⱼ` of the foam of the lattice instants before `t` at rest position `u`, for a
+    /// footprint `ℓ`: writes `out[j]` and returns how many instants can hold foam (those beyond
+    /// are 0; at most `out.len()` and [`Self::sample_count`]).
+    ///
+    /// # Arguments
+    /// - `u`: rest position (m); `t`: time (s); `footprint_m`: `ℓ` (m), `≥ 0`.
+    /// - `out`: receives `Sⱼ ∈ [0, 1]`.
+    pub fn survivals(&self, u: [f64; 2], t: f64, footprint_m: f64, out: &mut [f64]) -> usize {
+        debug_assert!(t.is_finite() && footprint_m >= 0.0);
+        let r = 1.0 - self.patches.resolved_variance_share(footprint_m);
+        let m = self.uniform(self.patch_value(u[0], u[1], footprint_m));
+        let mut used = 0;
+        let a0 = self.instant(t, 0).1;
+        // e^{−aⱼ/τ} by recurrence: aⱼ = a₀ + jΔt.
+        let (mut decay, ratio) = (libm::exp(-a0 / self.tau), libm::exp(-self.step / self.tau));
+        for j in 0..self.count.min(out.len()) {
+            let age = a0 + j as f64 * self.step;
+            let theta = if age <= self.length {
+                FOAM_DENSITY * decay * ((self.length - age) / self.step).min(1.0)
+            } else {
+                0.0
+            };
+            decay *= ratio;
+            let survival = (1.0 - r) * smoothstep(theta + EDGE_SOFTNESS, theta - EDGE_SOFTNESS, m) + r * theta;
+            out[j] = if survival < NEGLIGIBLE_SURVIVAL { 0.0 } else { survival };
+            if out[j] > 0.0 {
+                used = j + 1;
+            } else if r <= 0.0 && j > 0 && theta < m - EDGE_SOFTNESS {
+                break; // Older foam has a lower threshold still.
+            }
+        }
+        used
+    }
+
+    /// White water from the active cover now and at the lattice instants.
+    ///
+    /// # Arguments
+    /// - `t`: time (s).
+    /// - `active`: active cover now, `[0, 1]`.
+    /// - `survivals`: `Sⱼ` of [`Self::survivals`].
+    /// - `sources`: the active cover `Aⱼ` at instant `j` where the foam now at the point was then
+    ///   (`u − v aⱼ`), same length as `survivals`, `[0, 1]`.
+    ///
+    /// # Returns
+    /// [`WhiteWater`]: `residual = 1 − Πⱼ(1 − AⱼSⱼ)`, `white = 1 − (1 − active)(1 − residual)`.
+    pub fn combine(&self, t: f64, active: f64, survivals: &[f64], sources: &[f64]) -> WhiteWater {
+        debug_assert_eq!(survivals.len(), sources.len());
+        let active = active.clamp(0.0, 1.0);
+        let (mut clear, mut bright) = (1.0, 0.0);
+        for (j, (&s, &a)) in survivals.iter().zip(sources).enumerate() {
+            let c = (a.clamp(0.0, 1.0) * s).min(1.0);
+            if c > 0.0 {
+                bright += clear * c * libm::exp(-self.instant(t, j).1 / self.tau_r);
+                clear *= 1.0 - c;
+            }
+        }
+        let residual = 1.0 - clear;
+        let white = 1.0 - (1.0 - active) * clear;
+        // Fresh foam where active, the residual's own brightness elsewhere (`bright` is the
+        // brightness-weighted union, `≤ residual`).
+        let brightness = if white > 0.0 { (active + (1.0 - active) * bright) / white } else { 1.0 };
+        WhiteWater { active, residual, white, brightness: brightness.clamp(0.0, 1.0) }
+    }
+
+    /// White water at rest position `u` and time `t`: the active cover now and the foam left by
+    /// the active cover at the lattice instants, read from `past` (called only for instants whose
+    /// foam can still be there).
+    ///
+    /// # Arguments
+    /// - `u`: rest position `(x, z)` (m), finite.
+    /// - `t`: time (s), finite.
+    /// - `footprint_m`: pixel footprint `ℓ` (m), `≥ 0`.
+    /// - `active`: active cover at `(u, t)`, `[0, 1]`.
+    /// - `past`: the active cover at `(u + rest_offset, time_s)` of a [`MemorySample`], `[0, 1]`.
+    ///
+    /// # Returns
+    /// [`WhiteWater`], as [`Self::combine`].
+    pub fn compose(
+        &self,
+        u: [f64; 2],
+        t: f64,
+        footprint_m: f64,
+        active: f64,
+        mut past: impl FnMut(&MemorySample) -> f64,
+    ) -> WhiteWater {
+        let mut surv = [0.0; MAX_MEMORY_INSTANTS];
+        let n = self.survivals(u, t, footprint_m, &mut surv);
+        let mut src = [0.0; MAX_MEMORY_INSTANTS];
+        for j in 0..n {
+            if surv[j] > 0.0 {
+                let (time_s, age_s) = self.instant(t, j);
+                src[j] = past(&MemorySample {
+                    index: j,
+                    time_s,
+                    age_s,
+                    rest_offset_m: [-self.drift[0] * age_s, -self.drift[1] * age_s],
+                    survival: surv[j],
+                });
+            }
+        }
+        self.combine(t, active, &surv[..n], &src[..n])
+    }
+}
+
+/// The threshold `α` at which a white cover reaches its target, by bisection.
+///
+/// # Arguments
+/// - `target`: the mean cover to reach, `[0, 1]`.
+/// - `range`: `(lo, hi)` bracketing `α`, `lo < hi`.
+/// - `tolerance`: the bracket width at which to stop, `> 0`.
+/// - `mean_cover`: the mean cover at a threshold, non-decreasing in `α`.
+///
+/// # Returns
+/// `α` within `tolerance` of the root (the end of the range when the target is out of reach).
+pub fn calibrate_threshold(
+    target: f64,
+    range: (f64, f64),
+    tolerance: f64,
+    mut mean_cover: impl FnMut(f64) -> f64,
+) -> f64 {
+    debug_assert!(range.0 < range.1 && tolerance > 0.0);
+    let (mut lo, mut hi) = range;
+    while hi - lo > tolerance {
+        let mid = 0.5 * (lo + hi);
+        if mean_cover(mid) < target {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Standard error of a share measured on 40 000 points whose patch variable is correlated
+    /// over ~1 first-octave cell (a few thousand independent cells): ≈ 0.01; three of them.
+    const AREA_TOL: f64 = 0.03;
+
+    fn memory() -> FoamMemory {
+        FoamMemory::new(&FoamMemoryParams::default(), 0.4).unwrap()
+    }
+
+    /// The documented threshold `θ(a) = A₀ e^{−a/τ} min(1, (T − a)/Δt)`.
+    fn theta(mem: &FoamMemory, age: f64) -> f64 {
+        FOAM_DENSITY * (-age / mem.decay_time()).exp() * ((mem.length() - age) / mem.step()).clamp(0.0, 1.0)
+    }
+
+    /// Points spread over many patch cells.
+    fn points() -> impl Iterator<Item = [f64; 2]> {
+        (0..200).flat_map(|i| (0..200).map(move |j| [f64::from(i) * 1.37 + 0.11, f64::from(j) * 1.41 - 0.23]))
+    }
+
+    #[test]
+    fn the_patch_variable_is_uniform() {
+        let mem = memory();
+        let n = 40_000.0;
+        for q in [0.1, 0.25, 0.5, 0.75, 0.9] {
+            let share = points().filter(|p| mem.uniform(mem.patch_value(p[0], p[1], 0.0)) < q).count() as f64 / n;
+            assert!((share - q).abs() < AREA_TOL, "P(m < {q}) = {share}");
+        }
+    }
+
+    /// One breaking event covering everything at one instant leaves foam whose area decays as
+    /// `e^{−a/τ}` (Monahan 1971): the area law is exact in the mean, whatever the patches' shape.
+    #[test]
+    fn foam_area_decays_with_monahans_time_constant() {
+        let mem = memory();
+        let t0 = 10.0;
+        for age in [0.5, 1.0, 2.0, 4.0, 5.9] {
+            let t = t0 + age;
+            let mean: f64 = points()
+                .map(|p| mem.compose(p, t, 0.0, 0.0, |s| if (s.time_s - t0).abs() < 1e-9 { 1.0 } else { 0.0 }).white)
+                .sum::<f64>()
+                / 40_000.0;
+            let expected = theta(&mem, age);
+            assert!((mean - expected).abs() < AREA_TOL, "age {age}: area {mean}, e^(-a/τ) {expected}");
+        }
+    }
+
+    /// A far pixel, whose footprint hides every patch, sees the mean survival exactly.
+    #[test]
+    fn an_unresolved_pixel_sees_the_mean_survival() {
+        let mem = memory();
+        let w = mem.compose([3.0, 4.0], 11.1, 1e3, 0.0, |s| if s.index == 2 { 1.0 } else { 0.0 });
+        let age = mem.instant(11.1, 2).1;
+        assert!((w.white - theta(&mem, age)).abs() < 1e-12);
+    }
+
+    #[test]
+    fn streaks_are_longer_along_the_wind() {
+        let p = FoamMemoryParams { streak_stretch: 6.0, wind_direction_rad: 0.0, ..FoamMemoryParams::default() };
+        let mem = FoamMemory::new(&p, 0.4).unwrap();
+        // Mean absolute change of the patch noise over 1 m along x (the wind) and along z.
+        let diff = |dx: f64, dz: f64| -> f64 {
+            points()
+                .map(|q| (mem.patch_value(q[0] + dx, q[1] + dz, 0.0) - mem.patch_value(q[0], q[1], 0.0)).abs())
+                .sum()
+        };
+        let (along, across) = (diff(1.0, 0.0), diff(0.0, 1.0));
+        assert!(along < 0.5 * across, "along {along}, across {across}");
+    }
+
+    #[test]
+    fn white_water_is_a_pure_function_of_place_and_time() {
+        let mem = memory();
+        let src = |s: &MemorySample| (0.5 + 0.5 * (s.time_s * 1.3).sin()).max(0.0);
+        let a = mem.compose([1.0, 2.0], 7.3, 0.1, 0.2, src);
+        let b = memory().compose([1.0, 2.0], 7.3, 0.1, 0.2, src);
+        assert_eq!(a, b);
+        assert!((0.0..=1.0).contains(&a.white) && a.white >= a.active && a.white >= a.residual);
+    }
+
+    #[test]
+    fn the_bisection_finds_the_threshold() {
+        let alpha = calibrate_threshold(0.3, (-1.0, 1.0), 1e-10, |a| 0.5 * (1.0 + a));
+        assert!((alpha - (-0.4)).abs() < 1e-9);
+    }
+
+    #[test]
+    fn bad_parameters_are_named() {
+        let e = FoamMemory::new(&FoamMemoryParams { streak_stretch: 0.5, ..FoamMemoryParams::default() }, 0.4);
+        assert!(matches!(e, Err(FoamError::OutOfRange { name: "streak_stretch", .. })));
+        let e = FoamMemory::new(&FoamMemoryParams { step_s: 10.0, ..FoamMemoryParams::default() }, 0.4);
+        assert!(matches!(e, Err(FoamError::OutOfRange { name: "step_s", .. })));
+    }
+}
