@@ -245,6 +245,9 @@ fn breaking_footprint_of(s: &SeaConfig) -> Result<f64, WorldError> {
 /// `√((1 − W)/(W M))`, 3.5 % at `W` = 5 %).
 const FFT_WHITE_WATER_SAMPLES: usize = 16_384;
 
+/// The instant of the FFT sea on which its white water is calibrated (s): one for every frame.
+const FFT_CALIBRATION_TIME_S: f64 = 0.0;
+
 /// Share of the short waves' Jacobian that shapes the edge of a whitecap (brine-whitecap
 /// `WhiteWaterModel`): Brine's choice, 0.7 of their standard deviation.
 pub(crate) const EDGE_SHARE: f64 = 0.7;
@@ -817,32 +820,30 @@ impl World {
                     let chop = ocean.options().choppiness;
                     let stats_at =
                         |t: f64| FftJacobianStatistics::from_rest_jacobians(&ocean.rest_jacobian_fields(t, s_b), chop);
-                    let now = stats_at(s.time_s);
-                    let past: Vec<(f64, FftJacobianStatistics)> = (0..memory.sample_count())
-                        .into_par_iter()
-                        .map(|j| {
-                            let tj = memory.instant(s.time_s, j).0;
-                            (tj, stats_at(tj))
-                        })
-                        .collect();
+                    let breaking_at = |t: f64| {
+                        let past: Vec<(f64, FftJacobianStatistics)> = (0..memory.sample_count())
+                            .into_par_iter()
+                            .map(|j| {
+                                let tj = memory.instant(t, j).0;
+                                (tj, stats_at(tj))
+                            })
+                            .collect();
+                        FftBreaking::new(stats_at(t), past, s_b, ocean.jacobian_variance_removed(s_b, chop))
+                    };
+                    // Calibrated on the sea at the reference instant 0 s, whatever the frame: the
+                    // threshold is the same for every frame of an animation.
+                    let reference = breaking_at(FFT_CALIBRATION_TIME_S);
                     let options = WhiteWaterOptions {
                         samples: FFT_WHITE_WATER_SAMPLES,
-                        region_m: now.largest_tile(),
-                        times_s: (s.time_s, s.time_s),
+                        region_m: reference.now().largest_tile(),
+                        times_s: (FFT_CALIBRATION_TIME_S, FFT_CALIBRATION_TIME_S),
                         seed: s.seed,
                         ..WhiteWaterOptions::default()
                     };
-                    WhiteWaterSea::Fft(
-                        WhiteWaterModel::new(
-                            FftBreaking::new(now, past, s_b, ocean.jacobian_variance_removed(s_b, chop)),
-                            memory,
-                            s_b,
-                            EDGE_SHARE,
-                            monahan,
-                            &options,
-                        )
-                        .map_err(|e| model(&e))?,
-                    )
+                    let now = breaking_at(s.time_s);
+                    let calibrated = WhiteWaterModel::new(reference, memory, s_b, EDGE_SHARE, monahan, &options)
+                        .map_err(|e| model(&e))?;
+                    WhiteWaterSea::Fft(calibrated.with_source(now))
                 }
                 _ => {
                     let stats = JacobianStatistics::new(&set).map_err(|e| model(&e))?;

@@ -389,6 +389,23 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
         self.alphas[i - 1] + f * (self.alphas[i] - self.alphas[i - 1])
     }
 
+    /// The same thresholds (and edge noise) over another source of the same sea: for a sea whose
+    /// calibration is made at a reference instant and read at another (the FFT sea of an
+    /// animation frame, calibrated once for the animation).
+    pub fn with_source<T: BreakingSource>(self, source: T) -> WhiteWaterModel<T> {
+        WhiteWaterModel {
+            source,
+            memory: self.memory,
+            breaking_footprint: self.breaking_footprint,
+            short_variance: self.short_variance,
+            edge_std: self.edge_std,
+            target: self.target,
+            alpha0: self.alpha0,
+            ln_levels: self.ln_levels,
+            alphas: self.alphas,
+        }
+    }
+
     /// `s_b`, the footprint of the breaking waves (m).
     pub fn breaking_footprint(&self) -> f64 {
         self.breaking_footprint
