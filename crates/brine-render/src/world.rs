@@ -808,6 +808,7 @@ impl World {
         let together = ph.foam && ph.whitecaps && ph.foam_memory && ph.whitecap_alpha.is_none();
         let white_water = if together && monahan > 0.0 && !stats.flat {
             let s_b = breaking_footprint_of(s)?;
+            let forward = brine_whitecap::forward_face_offset(s_b, wind_angle);
             // The edge noise has the scale of the waves just shorter than the breaking ones.
             let params = FoamMemoryParams {
                 edge_wavelength_m: (std::f64::consts::PI * s_b).clamp(0.5, 20.0),
@@ -843,7 +844,7 @@ impl World {
                     let now = breaking_at(s.time_s);
                     let calibrated = WhiteWaterModel::new(reference, memory, s_b, EDGE_SHARE, monahan, &options)
                         .map_err(|e| model(&e))?;
-                    WhiteWaterSea::Fft(calibrated.with_source(now))
+                    WhiteWaterSea::Fft(calibrated.with_source(now).with_forward_face(forward))
                 }
                 _ => {
                     let stats = JacobianStatistics::new(&set).map_err(|e| model(&e))?;
@@ -851,7 +852,8 @@ impl World {
                     let options = WhiteWaterOptions { seed: s.seed, ..WhiteWaterOptions::default() };
                     WhiteWaterSea::Trochoids(
                         WhiteWaterModel::new(stats, memory, s_b, EDGE_SHARE, monahan, &options)
-                            .map_err(|e| model(&e))?,
+                            .map_err(|e| model(&e))?
+                            .with_forward_face(forward),
                     )
                 }
             })

@@ -106,5 +106,5 @@ pub use fft_statistics::FftJacobianStatistics;
 pub use statistics::{F32_MOMENTS_ERROR, FootprintFilter, HistoryRotation, JacobianStatistics, Moments};
 pub use white_water::{
     BREAKING_SPEED_SHARE, BreakingSource, FftBreaking, TrochoidBreaking, WHITE_WATER_FOOTPRINTS_M, WhiteWaterModel,
-    WhiteWaterOptions, breaking_footprint, breaking_wavenumber_cut,
+    WhiteWaterOptions, breaking_footprint, breaking_wavenumber_cut, forward_face_offset,
 };

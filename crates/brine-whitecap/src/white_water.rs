@@ -126,6 +126,27 @@ pub fn breaking_footprint(peak_phase_speed_m_s: f64) -> f64 {
     c_b * c_b / brine_waves::G
 }
 
+/// How far ahead of the crest the whitecap of a breaking wave lies: an eighth of the breaking
+/// wavelength `λ_b = 2π s_b` along the direction the waves travel. The turbulent roller of a
+/// breaking wave rides on its forward face, from the crest down (Duncan 1981); the Jacobian of the
+/// breaking waves is lowest at the crest itself. An eighth (the middle of the upper half of the
+/// face) is Brine's choice.
+///
+/// # Arguments
+/// - `breaking_footprint_m`: `s_b` (m), `≥ 0`.
+/// - `direction_rad`: direction the waves travel, from +x toward +z (rad).
+///
+/// # Returns
+/// The offset `(Δx, Δz)` (m).
+///
+/// # References
+/// Duncan J. H. 1981, "An experimental investigation of breaking waves produced by a towed
+/// hydrofoil", Proc. R. Soc. Lond. A 377:331–348.
+pub fn forward_face_offset(breaking_footprint_m: f64, direction_rad: f64) -> DVec2 {
+    let delta = std::f64::consts::TAU * breaking_footprint_m / 8.0;
+    DVec2::new(direction_rad.cos(), direction_rad.sin()) * delta
+}
+
 /// The wavenumber beyond which a Gaussian footprint `s_b` (m) leaves less than `10⁻⁶` of a wave
 /// (rad m⁻¹): the waves a breaking variable filtered by `s_b` can do without.
 pub fn breaking_wavenumber_cut(breaking_footprint_m: f64) -> f64 {
@@ -215,6 +236,7 @@ pub struct WhiteWaterModel<S> {
     breaking_footprint: f64,
     short_variance: f64,
     edge_std: f64,
+    forward: DVec2,
     target: f64,
     alpha0: f64,
     ln_levels: Vec<f64>,
@@ -282,6 +304,7 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
             breaking_footprint: breaking_footprint_m,
             short_variance: 0.0,
             edge_std: 0.0,
+            forward: DVec2::ZERO,
             target,
             alpha0: 0.0,
             ln_levels: WHITE_WATER_FOOTPRINTS_M.iter().map(|s| s.ln()).collect(),
@@ -338,7 +361,7 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
     /// left inside the pixel, and the edge noise (with the footprint of the breaking waves).
     fn breaking(&self, u: DVec2, t: f64, s: f64) -> (f64, f64, f64, f64) {
         let s_eff = s.hypot(self.breaking_footprint);
-        let m = self.source.moments(u, t, s_eff);
+        let m = self.source.moments(u - self.forward, t, s_eff);
         let (e, k) = self.memory.edge_noise(u.x, u.y, s);
         let x0 = m.mu + self.edge_std * e;
         let var = (m.sigma2 - self.short_variance).max(0.0) + self.edge_std * self.edge_std * (1.0 - k);
@@ -362,7 +385,7 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
         }
         let (t0, a0) = self.memory.instant(t, 0);
         let v = DVec2::from_array(self.memory.drift());
-        self.source.mean_history(u - v * a0, t0, self.memory.step(), v, s, out);
+        self.source.mean_history(u - self.forward - v * a0, t0, self.memory.step(), v, s, out);
     }
 
     /// The threshold `α(s)` for a footprint `s` (m).
@@ -399,11 +422,20 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
             breaking_footprint: self.breaking_footprint,
             short_variance: self.short_variance,
             edge_std: self.edge_std,
+            forward: self.forward,
             target: self.target,
             alpha0: self.alpha0,
             ln_levels: self.ln_levels,
             alphas: self.alphas,
         }
+    }
+
+    /// The whitecaps drawn `offset` (m) ahead of where the breaking variable is lowest: on the
+    /// forward face of the crest ([`forward_face_offset`]). A constant shift of a stationary sea:
+    /// the calibration holds unchanged.
+    pub fn with_forward_face(mut self, offset_m: DVec2) -> Self {
+        self.forward = offset_m;
+        self
     }
 
     /// `s_b`, the footprint of the breaking waves (m).
