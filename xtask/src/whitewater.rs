@@ -142,6 +142,15 @@ fn save_png(frame: &Frame, path: &Path) -> Result<(), String> {
     brine_render::write_frame(path, frame, frame.exposure_ev, false).map_err(|e| e.to_string())
 }
 
+/// The top-down view of one sea at time 0; the first seed's image is kept in `dir`.
+fn render_top_down(surface: &str, wind: f64, seed: u64, dir: &Path) -> Result<Frame, String> {
+    let frame = render(&scene_text(surface, wind, seed, HEIGHT_M, 0.0), "whitewater")?;
+    if seed == SEEDS[0] {
+        save_png(&frame, &dir.join(format!("{surface}-{wind:02}.png")))?;
+    }
+    Ok(frame)
+}
+
 /// Runs the measurements and writes `docs/whitewater.md`.
 pub fn run(root: &Path) -> Result<(), String> {
     let dir = root.join("docs/whitewater");
@@ -166,10 +175,7 @@ pub fn run(root: &Path) -> Result<(), String> {
         for surface in SURFACES {
             let (mut vis, mut mean) = (0.0, 0.0);
             for &seed in &SEEDS {
-                let frame = render(&scene_text(surface, wind, seed, HEIGHT_M, 0.0), "whitewater")?;
-                if seed == SEEDS[0] {
-                    save_png(&frame, &dir.join(format!("{surface}-{wind:02}.png")))?;
-                }
+                let frame = render_top_down(surface, wind, seed, &dir)?;
                 let (v, m) = coverage(&white(&frame));
                 vis += v / SEEDS.len() as f64;
                 mean += m / SEEDS.len() as f64;
@@ -200,10 +206,7 @@ pub fn run(root: &Path) -> Result<(), String> {
     for surface in SURFACES {
         let (mut along, mut across) = (0.0, 0.0);
         for &seed in &SEEDS {
-            let frame = render(&scene_text(surface, STREAK_WIND, seed, HEIGHT_M, 0.0), "whitewater")?;
-            if seed == SEEDS[0] {
-                save_png(&frame, &dir.join(format!("{surface}-{STREAK_WIND:02}.png")))?;
-            }
+            let frame = render_top_down(surface, STREAK_WIND, seed, &dir)?;
             let foam: Vec<Option<f64>> =
                 frame.aovs.iter().map(|a| a.depth.is_finite().then(|| f64::from(a.foam))).collect();
             let (a, c) = correlation_lengths(&foam, SIZE as usize);

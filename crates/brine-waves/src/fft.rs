@@ -466,6 +466,14 @@ impl FftOcean {
     ///
     /// # Arguments
     /// - `footprint_m`: `s` (m), `≥ 0`; `choppiness`: `λ ≥ 0`.
+    ///
+    /// # Returns
+    /// The variance (dimensionless): the expected one over the random phases, the quadratic
+    /// terms of `J` left out.
+    ///
+    /// # References
+    /// Tessendorf 2001, Eq. 44 (the choppy map; `Var(∂Dₓ/∂x + ∂D_z/∂z) = Σ k²E(k)` follows from it);
+    /// Dupuy & Bruneton 2012 (the Jacobian's variance over a footprint).
     pub fn jacobian_variance_removed(&self, footprint_m: f64, choppiness: f64) -> f64 {
         let s2 = footprint_m * footprint_m;
         self.cascades

@@ -79,6 +79,9 @@ impl FftJacobianStatistics {
     ///
     /// # Returns
     /// The pyramids, as [`Self::new`] (`kᵢ = Jᵢ − 1 + 1/n`, `n = fields.len()`).
+    ///
+    /// # References
+    /// Dupuy & Bruneton 2012 (mip-mapped `J` and `J²`); Tessendorf 2001 (the choppy map).
     pub fn from_rest_jacobians(fields: &[FftRestJacobian], choppiness: f64) -> Self {
         let share = 1.0 / fields.len().max(1) as f64;
         let cascades = fields
