@@ -12,6 +12,11 @@ const BENCHES: &[(&str, &str, &[&str])] = &[
         &["bench", "-p", "brine-render", "--bench", "frame"],
     ),
     (
+        "export",
+        "the default sea handed to other tools: a 1024² bake frame, a 1 M-vertex mesh, 10⁶ point queries (brine-render)",
+        &["bench", "-p", "brine-render", "--bench", "export"],
+    ),
+    (
         "optics",
         "brine-optics per-pixel and per-scene costs (criterion)",
         &["bench", "-p", "brine-optics", "--bench", "optics"],

@@ -95,9 +95,97 @@ fn write_with_aovs(
     exposure_ev: f64,
 ) -> Result<(), OutputError> {
     let format = OutputFormat::from_path(path).map_err(OutputError::Format)?;
+    let mut failed = None;
+    let written = write_atomic(path, |w| {
+        encode_image(w, format, width, height, pixels, aovs, exposure_ev).map_err(|message| {
+            failed = Some(message.clone());
+            std::io::Error::other(message)
+        })
+    });
+    match (written, failed) {
+        (Err(_), Some(message)) => Err(OutputError::Encode { path: path.display().to_string(), message }),
+        (result, _) => result,
+    }
+}
+
+/// Encodes an image into `w`.
+fn encode_image(
+    w: &mut BufWriter<&mut std::fs::File>,
+    format: OutputFormat,
+    width: u32,
+    height: u32,
+    pixels: &[DVec3],
+    aovs: Option<&[crate::Aov]>,
+    exposure_ev: f64,
+) -> Result<(), String> {
+    match format {
+        OutputFormat::Png => {
+            let scale = exposure_scale(exposure_ev);
+            let mut bytes = Vec::with_capacity(pixels.len() * 3);
+            for p in pixels {
+                bytes.extend_from_slice(&to_srgb8(*p, scale));
+            }
+            image::codecs::png::PngEncoder::new(w)
+                .write_image(&bytes, width, height, image::ExtendedColorType::Rgb8)
+                .map_err(|e| e.to_string())
+        }
+        OutputFormat::Exr => {
+            let f32s = |f: &dyn Fn(usize) -> f32| (0..pixels.len()).map(f).collect::<Vec<f32>>();
+            let mut channels = vec![
+                ("R".to_owned(), f32s(&|i| pixels[i].x as f32)),
+                ("G".to_owned(), f32s(&|i| pixels[i].y as f32)),
+                ("B".to_owned(), f32s(&|i| pixels[i].z as f32)),
+            ];
+            if let Some(a) = aovs {
+                let aov = |name: &str, f: &dyn Fn(usize) -> f32| (name.to_owned(), f32s(f));
+                channels.push(aov("depth.Z", &|i| a[i].depth));
+                channels.push(aov("normal.X", &|i| a[i].normal[0]));
+                channels.push(aov("normal.Y", &|i| a[i].normal[1]));
+                channels.push(aov("normal.Z", &|i| a[i].normal[2]));
+                channels.push(aov("foam.Y", &|i| a[i].foam));
+                channels.push(aov("whitecap.Y", &|i| a[i].whitecap));
+                channels.push(aov("glint.Y", &|i| a[i].glint));
+                channels.push(aov("evaluations.Y", &|i| a[i].evaluations));
+            }
+            encode_exr(w, width as usize, height as usize, channels)
+        }
+    }
+}
+
+/// Encodes named f32 channels (row-major, top row first) as one OpenEXR layer into `w`.
+///
+/// # Errors
+/// The encoder's message.
+pub fn encode_exr(
+    w: &mut BufWriter<&mut std::fs::File>,
+    width: usize,
+    height: usize,
+    channels: Vec<(String, Vec<f32>)>,
+) -> Result<(), String> {
+    use exr::prelude::*;
+    let channels: Vec<AnyChannel<FlatSamples>> =
+        channels.into_iter().map(|(name, v)| AnyChannel::new(name.as_str(), FlatSamples::F32(v))).collect();
+    let layer = Layer::new(
+        (width, height),
+        LayerAttributes::named("brine"),
+        Encoding::SMALL_LOSSLESS,
+        AnyChannels::sort(SmallVec::from_vec(channels)),
+    );
+    Image::from_layer(layer).write().to_buffered(w).map_err(|e| e.to_string())
+}
+
+/// Writes `path` atomically: `write` fills a temporary file in the destination folder, renamed
+/// over `path` only once complete and synced; a signal meanwhile removes the temporary
+/// ([`remove_temporaries_on_signal`]).
+///
+/// # Errors
+/// [`OutputError::Io`] naming the path; the destination is then untouched.
+pub fn write_atomic(
+    path: &Path,
+    write: impl FnOnce(&mut BufWriter<&mut std::fs::File>) -> std::io::Result<()>,
+) -> Result<(), OutputError> {
     let shown = path.display().to_string();
     let io = |source| OutputError::Io { path: shown.clone(), source };
-    let encode = |message: String| OutputError::Encode { path: shown.clone(), message };
     let dir = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
@@ -106,54 +194,17 @@ fn write_with_aovs(
     let prefix = format!(".{name}.");
     let mut builder = tempfile::Builder::new();
     builder.prefix(&prefix).suffix(".tmp");
-    // tempfile creates files readable by the owner only; an image is an ordinary file (0666
+    // tempfile creates files readable by the owner only; an output is an ordinary file (0666
     // before the umask).
     #[cfg(unix)]
     builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
     // Registered before the temporary exists, so that a signal at any moment finds it.
     let _guard = InProgress::register(path);
     let mut tmp = builder.tempfile_in(dir).map_err(io)?;
-    match format {
-        OutputFormat::Png => {
-            let scale = exposure_scale(exposure_ev);
-            let mut bytes = Vec::with_capacity(pixels.len() * 3);
-            for p in pixels {
-                bytes.extend_from_slice(&to_srgb8(*p, scale));
-            }
-            let mut w = BufWriter::new(tmp.as_file_mut());
-            image::codecs::png::PngEncoder::new(&mut w)
-                .write_image(&bytes, width, height, image::ExtendedColorType::Rgb8)
-                .map_err(|e| encode(e.to_string()))?;
-            w.flush().map_err(io)?;
-        }
-        OutputFormat::Exr => {
-            use exr::prelude::*;
-            let f32s = |f: &dyn Fn(usize) -> f32| FlatSamples::F32((0..pixels.len()).map(f).collect());
-            let mut channels = vec![
-                AnyChannel::new("R", f32s(&|i| pixels[i].x as f32)),
-                AnyChannel::new("G", f32s(&|i| pixels[i].y as f32)),
-                AnyChannel::new("B", f32s(&|i| pixels[i].z as f32)),
-            ];
-            if let Some(a) = aovs {
-                channels.push(AnyChannel::new("depth.Z", f32s(&|i| a[i].depth)));
-                channels.push(AnyChannel::new("normal.X", f32s(&|i| a[i].normal[0])));
-                channels.push(AnyChannel::new("normal.Y", f32s(&|i| a[i].normal[1])));
-                channels.push(AnyChannel::new("normal.Z", f32s(&|i| a[i].normal[2])));
-                channels.push(AnyChannel::new("foam.Y", f32s(&|i| a[i].foam)));
-                channels.push(AnyChannel::new("whitecap.Y", f32s(&|i| a[i].whitecap)));
-                channels.push(AnyChannel::new("glint.Y", f32s(&|i| a[i].glint)));
-                channels.push(AnyChannel::new("evaluations.Y", f32s(&|i| a[i].evaluations)));
-            }
-            let layer = Layer::new(
-                (width as usize, height as usize),
-                LayerAttributes::named("brine"),
-                Encoding::SMALL_LOSSLESS,
-                AnyChannels::sort(SmallVec::from_vec(channels)),
-            );
-            let mut out = BufWriter::new(tmp.as_file_mut());
-            Image::from_layer(layer).write().to_buffered(&mut out).map_err(|e| encode(e.to_string()))?;
-            out.flush().map_err(io)?;
-        }
+    {
+        let mut w = BufWriter::new(tmp.as_file_mut());
+        write(&mut w).map_err(io)?;
+        w.flush().map_err(io)?;
     }
     tmp.as_file().sync_all().map_err(io)?;
     tmp.persist(path).map_err(|e| io(e.error))?;

@@ -9,9 +9,9 @@ use brine_trace::{Aabb, LipschitzSum, Ray, TraceOptions, TraceStats, trace, trac
 use brine_trace::{Hit, Method};
 use brine_waves::{GerstnerField, SineField, TracedTrochoids};
 
-use crate::world::Sea;
+use brine_waves::FrameSurface;
 use brine_whitecap::WHITECAP_REFLECTANCE;
-use glam::{DVec2, DVec3};
+use glam::DVec3;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
@@ -683,28 +683,23 @@ fn white_water(world: &World, p: DVec3, d: DVec3, t: f64, n: DVec3, sea: DVec3, 
         let f = |c: usize| brine_foam::foam_radiance(r, e_sun[c], cos_sun, e_sky[c] + e_moon[c]);
         DVec3::new(f(0), f(1), f(2))
     };
-    if let Some(ww) = &world.white_water {
-        // Fresh foam (Koepke's R_f) where the crest breaks, dimming with the foam's age.
-        let w = ww.at(DVec2::new(p.x, p.z), world.time, footprint / 12f64.sqrt());
-        // Ageing foam thins (Koepke's falling reflectance): the water shows through it.
-        let c = w.white * w.brightness;
+    let cover = world.cover_at(p, n, footprint);
+    if let Some((white, brightness)) = cover.memory {
+        // Fresh foam (Koepke's R_f) where the crest breaks, dimming with the foam's age; ageing
+        // foam thins (Koepke's falling reflectance): the water shows through it.
+        let c = white * brightness;
         if c > 0.0 {
             shade.radiance = shade.radiance * (1.0 - c) + lambert(FRESH_FOAM_REFLECTANCE) * c;
         }
-        shade.foam = w.residual;
-        shade.whitecap = w.active;
     }
     if let Some(foam) = &world.foam {
-        let (gx, gz) = (-n.x / n.y.max(1e-3), -n.z / n.y.max(1e-3));
-        let s = foam.extension.foam_amount(foam.coverage, p.y, gx, gz, p.x, p.z, footprint);
-        shade.radiance = shade.radiance * (1.0 - s) + lambert(foam.reflectance) * s;
-        shade.foam = s;
+        shade.radiance = shade.radiance * (1.0 - cover.foam) + lambert(foam.reflectance) * cover.foam;
     }
-    if let Some(wc) = &world.whitecaps {
-        let w = wc.coverage(DVec2::new(p.x, p.z), world.time, footprint / 12f64.sqrt());
-        shade.radiance = shade.radiance * (1.0 - w) + lambert(WHITECAP_REFLECTANCE) * w;
-        shade.whitecap = w;
+    if world.whitecaps.is_some() {
+        shade.radiance = shade.radiance * (1.0 - cover.whitecap) + lambert(WHITECAP_REFLECTANCE) * cover.whitecap;
     }
+    shade.foam = cover.foam;
+    shade.whitecap = cover.whitecap;
     shade
 }
 
@@ -802,11 +797,11 @@ pub(crate) enum SeaField<'a> {
 
 impl<'a> SeaField<'a> {
     fn new(world: &'a World) -> Self {
-        match &world.sea {
-            Sea::Trochoids(t) => SeaField::Traced(t),
-            Sea::Gerstner(g) => SeaField::Gerstner(g.at_time(world.time)),
-            Sea::Sine(s) => SeaField::Sine(s.at_time(world.time)),
-            Sea::Fft(f) => SeaField::Fft(f),
+        match world.sea.surface() {
+            FrameSurface::Trochoids(t) => SeaField::Traced(t),
+            FrameSurface::Gerstner(g) => SeaField::Gerstner(g.at_time(world.time)),
+            FrameSurface::Sine(s) => SeaField::Sine(s.at_time(world.time)),
+            FrameSurface::Fft(f) => SeaField::Fft(f),
         }
     }
 
@@ -950,6 +945,7 @@ impl<'a> SeaField<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::DVec2;
 
     /// f32 depth AOVs and the f64 hit differ by rounding only; the hit itself is within the trace
     /// tolerance of the first crossing for either start, so two hits are within twice it.

@@ -13,9 +13,9 @@ use brine_sky::{CloudParams, DaylightModel, FilteredSky, MoonParams, Sky, SkyPar
 use brine_trace::{Method, TraceOptions};
 use brine_waves::{
     BandLimited, CosineSquared, CosineTwoS, DetailOptions, DetailSlopes, DetailWaves, Directions, Dispersion,
-    DonelanBanner, Elfouhaily, FftFrame, FftOcean, FftOptions, FftSlopeFilter, FitOptions, GerstnerSurface, Jonswap,
-    Phillips, PiersonMoskowitz, SeaComponent, SineSet, Spectrum, Spreading, SteepnessLimit, Tma, TracedTrochoids,
-    Trochoid, TrochoidSet, TrochoidSum, WaveSurface, fit_sea_state,
+    DonelanBanner, Elfouhaily, FftOcean, FftOptions, FftSlopeFilter, FitOptions, FrameSurface, Jonswap, Ocean,
+    Phillips, PiersonMoskowitz, SeaComponent, SeaFrame, Spectrum, Spreading, SteepnessLimit, TileLattice, Tma,
+    Trochoid, TrochoidSet, TrochoidSum, fit_sea_state,
 };
 use brine_whitecap::{
     Calibration, CalibrationOptions, ErfMethod, FftBreaking, FftCalibration, FftJacobianStatistics, FootprintFilter,
@@ -44,8 +44,11 @@ pub enum WorldError {
 pub struct World {
     /// The fitted wave set.
     pub set: TrochoidSet,
-    /// The traced surface.
-    pub sea: Sea,
+    /// The sea of the scene as a model of time (brine-waves `Ocean`): what bakes, meshes and
+    /// queries freeze at other instants.
+    pub ocean: Ocean,
+    /// The traced surface at the frame's time (brine-waves `SeaFrame`).
+    pub sea: SeaFrame,
     /// Time of the frame (s).
     pub time: f64,
     /// Sky, sun, moon, clouds and aerial perspective, for any sun elevation.
@@ -115,6 +118,50 @@ pub struct World {
     pub reference: bool,
 }
 
+/// White water at one point of the surface, as the renderer draws it there.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Cover {
+    /// Share of the area under foam in `[0, 1]`: the foam that breaking crests left (white water
+    /// with memory) or Darles et al.'s foam amount.
+    pub foam: f64,
+    /// Share of the area under active whitecaps in `[0, 1]`.
+    pub whitecap: f64,
+    /// With the white water with memory: its white share and its brightness (Koepke's ageing),
+    /// both in `[0, 1]`.
+    pub memory: Option<(f64, f64)>,
+}
+
+impl World {
+    /// The white water at surface point `p` of upward normal `n` (unit), seen through a pixel
+    /// footprint of side `footprint_m` (m, `≥ 0`; 0 for a point).
+    pub fn cover_at(&self, p: DVec3, n: DVec3, footprint_m: f64) -> Cover {
+        self.cover_at_time(p, n, self.time, footprint_m)
+    }
+
+    /// [`World::cover_at`] at time `t` (s): trochoid, Gerstner and sine seas' white water is a
+    /// function of time; the FFT sea's whitecap statistics are those of the world's frame
+    /// whatever `t` (build a world at `t` for it).
+    pub fn cover_at_time(&self, p: DVec3, n: DVec3, t: f64, footprint_m: f64) -> Cover {
+        let mut cover = Cover::default();
+        // A Gaussian footprint of the pixel's area has σ = ℓ/√12.
+        let sigma = footprint_m / 12f64.sqrt();
+        if let Some(ww) = &self.white_water {
+            let w = ww.at(DVec2::new(p.x, p.z), t, sigma);
+            cover.foam = w.residual;
+            cover.whitecap = w.active;
+            cover.memory = Some((w.white, w.brightness));
+        }
+        if let Some(foam) = &self.foam {
+            let (gx, gz) = (-n.x / n.y.max(1e-3), -n.z / n.y.max(1e-3));
+            cover.foam = foam.extension.foam_amount(foam.coverage, p.y, gx, gz, p.x, p.z, footprint_m);
+        }
+        if let Some(wc) = &self.whitecaps {
+            cover.whitecap = wc.coverage(DVec2::new(p.x, p.z), t, sigma);
+        }
+        cover
+    }
+}
+
 impl World {
     /// The pixel angle (rad) the waves fade with and the normals are filtered by: the camera's,
     /// or 0 in the reference rendering.
@@ -178,35 +225,6 @@ pub fn log_average_luminance_cd_m2(pixels: &[DVec3]) -> f64 {
 pub const FILTERED_SKY_WIDTH: usize = 256;
 /// See [`FILTERED_SKY_WIDTH`].
 pub const FILTERED_SKY_HEIGHT: usize = 64;
-
-/// Waves shorter than this are not drawn as geometry by the sine surface of Chen et al.: they only
-/// perturb its normals (m).
-pub const SINE_DETAIL_WAVELENGTH_M: f64 = 4.0;
-
-/// The sea surface a scene traces.
-pub enum Sea {
-    /// Darles et al.'s trochoid sum, laid out for the tiered tracer (brine-waves
-    /// `TracedTrochoids`).
-    Trochoids(TracedTrochoids),
-    /// The true Gerstner sum.
-    Gerstner(GerstnerSurface),
-    /// Chen et al.'s sine waves with normal-perturbing detail waves.
-    Sine(SineSet),
-    /// Tessendorf's FFT cascades at the frame's time (traced as certified cubic B-splines).
-    Fft(Box<FftFrame>),
-}
-
-impl Sea {
-    /// Height of the surface above `(x, z)` at time `t` (m).
-    pub fn height(&self, x: f64, z: f64, t: f64) -> f64 {
-        match self {
-            Sea::Trochoids(s) => s.height(x, z),
-            Sea::Gerstner(s) => s.height(x, z, t),
-            Sea::Sine(s) => s.height(x, z, t),
-            Sea::Fft(f) => f.height(x, z),
-        }
-    }
-}
 
 /// Share of Monahan's whitecap coverage drawn as active whitecaps (Dupuy & Bruneton) when foam
 /// (Darles' extension) draws the rest: Brine's split of stage A (active breaking) and stage B
@@ -577,7 +595,7 @@ impl Spreading for SummedSpectrum<'_> {
 
 /// The sea (and swell) of `[sea]` as Tessendorf's FFT cascades and their frame at the frame's
 /// time, or `None` for a flat calm (brine-waves `FftOcean`).
-fn fft_sea(s: &SeaConfig) -> Result<Option<(FftOcean, FftFrame)>, WorldError> {
+fn fft_sea(s: &SeaConfig, lattice: Option<&TileLattice>) -> Result<Option<FftOcean>, WorldError> {
     let err = |e: brine_waves::WaveError| WorldError::Model(e.to_string());
     let SeaSpectra { spectra, spreadings, options, k_cox_munk, .. } = sea_spectra(s, true)?;
     if spectra.is_empty() {
@@ -590,7 +608,7 @@ fn fft_sea(s: &SeaConfig) -> Result<Option<(FftOcean, FftFrame)>, WorldError> {
         offsets: options.iter().map(|o| o.wind_direction - wind).collect(),
     };
     let f = &s.fft;
-    let fft_options = FftOptions {
+    let mut fft_options = FftOptions {
         resolution: f.resolution as usize,
         choppiness: f.choppiness,
         loop_period: f.loop_period_s,
@@ -598,11 +616,14 @@ fn fft_sea(s: &SeaConfig) -> Result<Option<(FftOcean, FftFrame)>, WorldError> {
         wind_direction: wind,
         ..FftOptions::for_spectrum(&summed, f.cascades as usize)
     };
+    if let Some(l) = lattice {
+        fft_options.tile_sizes = l.commensurate_tiles(&fft_options.tile_sizes);
+        fft_options.loop_period = l.loop_period_s().or(fft_options.loop_period);
+        fft_options.tiled = true;
+    }
     // No cascade draws waves beyond the one where the wind sea reaches Cox & Munk's total.
     let drawn = BandLimited::between_wavenumbers(&summed, 0.0, k_cox_munk);
-    let ocean = FftOcean::new(&drawn, &summed, &fft_options).map_err(err)?;
-    let frame = ocean.at_time(s.time_s);
-    Ok(Some((ocean, frame)))
+    Ok(Some(FftOcean::new(&drawn, &summed, &fft_options).map_err(err)?))
 }
 
 /// A swell: JONSWAP of peak `ω_p = 2π/T_p` and enhancement `γ`, with the Phillips constant
@@ -630,8 +651,8 @@ struct SeaStatistics {
 
 /// Statistics of the sea: of the trochoid set, or the expected ones of the FFT cascades
 /// (`½ Σ |a|²` of the drawn spectrum), with the frame's exact height bounds.
-fn sea_statistics(set: &TrochoidSet, sea: &Sea, wind_angle: f64) -> SeaStatistics {
-    if let Sea::Fft(frame) = sea {
+fn sea_statistics(set: &TrochoidSet, sea: &SeaFrame, wind_angle: f64) -> SeaStatistics {
+    if let FrameSurface::Fft(frame) = sea.surface() {
         let c: DVec3 = frame.cascades().iter().map(|c| c.expected_slope_covariance()).sum();
         let variance: f64 = frame.cascades().iter().map(|c| c.expected_variance()).sum();
         let (wx, wz) = (wind_angle.cos(), wind_angle.sin());
@@ -704,24 +725,44 @@ impl World {
     /// # Errors
     /// [`WorldError`] if a model rejects a parameter.
     pub fn new(scene: &Scene) -> Result<Self, WorldError> {
+        Self::on_lattice(scene, None)
+    }
+
+    /// Builds the models of a validated scene with its waves snapped to a tile's lattice (and
+    /// loop), so that the sea repeats over the tile: the trochoid, Gerstner and sine waves by
+    /// brine-waves `TileLattice::snap`, the FFT cascades' tiles made whole fractions of the tile
+    /// (`TileLattice::commensurate_tiles`); what `brine bake` draws.
+    ///
+    /// # Errors
+    /// [`WorldError`] if a model rejects a parameter.
+    pub fn on_lattice(scene: &Scene, lattice: Option<&TileLattice>) -> Result<Self, WorldError> {
         let model = |e: &dyn std::fmt::Display| WorldError::Model(e.to_string());
         let s = &scene.sea;
         let wind_angle = s.wind_direction_deg.to_radians();
         let wind = DVec3::new(wind_angle.cos(), 0.0, wind_angle.sin());
         // The FFT ocean has no trochoid set: its statistics come from the frame.
-        let set = if s.surface == SurfaceKind::Fft { TrochoidSet::default() } else { fit_sea(s)? };
-        let mut fft_ocean = None;
-        let sea = match s.surface {
-            SurfaceKind::Trochoids => Sea::Trochoids(TracedTrochoids::new(&set, s.time_s)),
-            SurfaceKind::Gerstner => Sea::Gerstner(GerstnerSurface::new(&set).map_err(|e| model(&e))?),
-            SurfaceKind::Sine => Sea::Sine(SineSet::split_at_wavelength(&set, SINE_DETAIL_WAVELENGTH_M)),
-            SurfaceKind::Fft => match fft_sea(s)? {
-                Some((ocean, frame)) => {
-                    fft_ocean = Some(ocean);
-                    Sea::Fft(Box::new(frame))
-                }
-                None => Sea::Trochoids(TracedTrochoids::new(&set, s.time_s)),
+        let set = if s.surface == SurfaceKind::Fft {
+            TrochoidSet::default()
+        } else {
+            let fitted = fit_sea(s)?;
+            match lattice {
+                Some(l) => l.snap(&fitted).map_err(|e| model(&e))?,
+                None => fitted,
+            }
+        };
+        let ocean = match s.surface {
+            SurfaceKind::Trochoids => Ocean::trochoids(set.clone()),
+            SurfaceKind::Gerstner => Ocean::gerstner(set.clone()).map_err(|e| model(&e))?,
+            SurfaceKind::Sine => Ocean::sine(&set),
+            SurfaceKind::Fft => match fft_sea(s, lattice)? {
+                Some(ocean) => Ocean::fft(ocean),
+                None => Ocean::trochoids(set.clone()),
             },
+        };
+        let sea = ocean.at_time(s.time_s);
+        let fft_ocean = match &ocean {
+            Ocean::Fft { ocean } => Some(ocean.as_ref()),
+            _ => None,
         };
         let stats = sea_statistics(&set, &sea, wind_angle);
 
@@ -815,8 +856,8 @@ impl World {
                 ..FoamMemoryParams::for_wind(s.wind_speed_m_s, wind_angle, s.seed)
             };
             let memory = FoamMemory::new(&params, KoepkeFoam::default().efficiency()).map_err(|e| model(&e))?;
-            Some(match (&sea, &fft_ocean) {
-                (Sea::Fft(_), Some(ocean)) => {
+            Some(match (sea.surface(), fft_ocean) {
+                (FrameSurface::Fft(_), Some(ocean)) => {
                     // The long waves' Jacobian on the rest grids, now and at the memory's instants.
                     let chop = ocean.options().choppiness;
                     let stats_at =
@@ -878,8 +919,8 @@ impl World {
             let alpha = ph.whitecap_alpha.unwrap_or(0.0);
             let target = monahan * whitecap_share;
             let calibrate = ph.whitecap_alpha.is_none();
-            Some(match &sea {
-                Sea::Fft(frame) => {
+            Some(match sea.surface() {
+                FrameSurface::Fft(frame) => {
                     let stats = Box::new(FftJacobianStatistics::new(frame));
                     let calibration = calibrate
                         .then(|| FftCalibration::new(&stats, target, &CalibrationOptions::default()))
@@ -931,12 +972,13 @@ impl World {
             tolerance_relative: 1e-5,
             ..TraceOptions::default()
         };
-        let fft_slopes = match &sea {
-            Sea::Fft(frame) => Some(FftSlopeFilter::new(frame)),
+        let fft_slopes = match sea.surface() {
+            FrameSurface::Fft(frame) => Some(FftSlopeFilter::new(frame)),
             _ => None,
         };
         let world = Self {
             set,
+            ocean,
             sea,
             time: s.time_s,
             sky,
@@ -969,7 +1011,7 @@ impl World {
         };
         let mut world = world;
         let c = camera.position;
-        world.underwater = c.y < world.sea.height(c.x, c.z, world.time);
+        world.underwater = c.y < world.sea.height(c.x, c.z);
         Ok(world)
     }
 }
@@ -1032,8 +1074,8 @@ mod tests {
                 scene.sea.wind_speed_m_s = wind;
                 scene.sea.surface = surface;
                 let world = World::new(&scene).expect("a valid scene");
-                let drawn = match &world.sea {
-                    Sea::Fft(frame) => {
+                let drawn = match world.sea.surface() {
+                    FrameSurface::Fft(frame) => {
                         let c: DVec3 = frame.cascades().iter().map(|c| c.expected_slope_covariance()).sum();
                         c.x + c.z
                     }

@@ -204,6 +204,7 @@ impl DetailWaves {
             loop_period: options.loop_period,
             seed: options.seed ^ DETAIL_SEED_MIX,
             wind_direction: options.wind_direction,
+            tiled: false,
         };
         let ocean = FftOcean::new(&band, spreading, &fft)?;
         Ok(Self { ocean, options: *options })

@@ -66,6 +66,10 @@ pub struct FftOptions {
     pub seed: u64,
     /// Mean wind (and wave) direction `θ_w` (rad), from +x toward +z, finite (default 0).
     pub wind_direction: f64,
+    /// The cascades are meant to repeat together over the first tile (a tileable sea, as
+    /// `brine bake` makes with [`crate::TileLattice::commensurate_tiles`]): commensurate tile
+    /// ratios are then allowed (default `false`).
+    pub tiled: bool,
 }
 
 impl Default for FftOptions {
@@ -79,6 +83,7 @@ impl Default for FftOptions {
             loop_period: None,
             seed: 1,
             wind_direction: 0.0,
+            tiled: false,
         }
     }
 }
@@ -140,7 +145,7 @@ impl FftOptions {
             check(
                 "tile_ratio",
                 r,
-                !commensurate(r),
+                self.tiled || !commensurate(r),
                 "not within 1e-3 of a fraction p/q with q ≤ 8 (tiles would realign)",
             )?;
         }

@@ -125,6 +125,7 @@ mod lanes;
 mod lipschitz;
 mod phillips;
 mod pierson_moskowitz;
+mod sea;
 mod set;
 mod sine;
 mod sine_lipschitz;
@@ -140,7 +141,7 @@ pub use dispersion::{Dispersion, ELFOUHAILY_K_M, SEA_WATER_DENSITY, SEA_WATER_SU
 pub use dispersion::{G, omega_deep_water, wavenumber_deep_water};
 pub use elfouhaily::{Elfouhaily, ElfouhailySpreading};
 pub use error::WaveError;
-pub use fft::{FftOcean, FftRestFields, FftRestJacobian};
+pub use fft::{FftKinematics, FftOcean, FftRestFields, FftRestJacobian, ParticleState};
 pub use fft_frame::{FftCascade, FftFrame};
 pub use fft_options::{
     FFT_CASCADE_CUT_INDEX, FFT_DEFAULT_TILE_RATIO, FFT_MAX_CASCADES, FFT_MAX_CHOPPINESS, FFT_MAX_LOOP_PERIOD_S,
@@ -158,6 +159,7 @@ pub use gerstner::{
 };
 pub use jonswap::Jonswap;
 pub use phillips::Phillips;
+pub use sea::{FrameSurface, Ocean, SINE_DETAIL_WAVELENGTH_M, SeaFrame, SurfaceSample, TileLattice};
 pub use set::TrochoidSet;
 pub use sine::{SineField, SineSet};
 pub use spectrum::{PiersonMoskowitz, Spectrum};

@@ -66,6 +66,8 @@ struct Tier {
     series: Vec<[f32; LANES]>,
     /// `kᵢ` in f32 (the fade distances are computed in f32 lanes).
     wavenumber_f32: [f32; LANES],
+    /// `ωᵢ` (rad s⁻¹), for the particle kinematics.
+    omega: [f32; LANES],
     /// Real waves in this tier.
     count: u32,
     /// `Σ Aᵢ` of the f32 amplitudes the kernel uses (m).
@@ -74,6 +76,18 @@ struct Tier {
     spread: f64,
     /// Bound of the evaluation error of the tier's sum (m).
     error: f64,
+}
+
+/// The particle kinematics of a trochoid sum at one point ([`TracedTrochoids::kinematics`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub(crate) struct Kinematics {
+    pub(crate) height: f64,
+    pub(crate) gradient: DVec2,
+    pub(crate) height_rate: f64,
+    pub(crate) velocity: DVec2,
+    pub(crate) displacement: DVec2,
+    pub(crate) deformation: DVec3,
+    pub(crate) vertical_acceleration: f64,
 }
 
 /// The trochoid-sum surface of Darles et al. (`F = y − Σ Aᵢ τ_{Qᵢ}(kᵢ d̂ᵢ·(x, z) − ωᵢt + φᵢ)`,
@@ -136,6 +150,7 @@ impl TracedTrochoids {
                 mode: ProfileMode::for_steepness(0.0),
                 series: Vec::new(),
                 wavenumber_f32: [0.0; LANES],
+                omega: [0.0; LANES],
                 count: chunk.len() as u32,
                 amplitude_sum: 0.0,
                 spread: 0.0,
@@ -149,6 +164,7 @@ impl TracedTrochoids {
                 t.kx[l] = w.wavenumber() * d.x;
                 t.kz[l] = w.wavenumber() * d.y;
                 t.offset[l] = w.phase() - w.omega() * time;
+                t.omega[l] = w.omega() as f32;
                 t.wavenumber[l] = w.wavenumber();
                 t.amplitude[l] = a as f32;
                 t.steepness[l] = q as f32;
@@ -225,6 +241,76 @@ impl TracedTrochoids {
             sum += f64::from((f32x8::new(t.amplitude) * c).reduce_add());
         }
         sum
+    }
+
+    /// The particle kinematics of the trochoid sum at `(x, z)` by the f32 kernel (each wave's
+    /// particle at its own phase `θᵢ`, as [`crate::TrochoidField`]'s): height `Σ Aᵢ cos θᵢ`,
+    /// gradient `−Σ Aᵢ kᵢ sin θᵢ/(1 − Qᵢ cos θᵢ)`, `∂h/∂t = Σ Aᵢωᵢ sin θᵢ/(1 − Qᵢ cos θᵢ)`,
+    /// horizontal velocity `Σ (Qᵢωᵢ/kᵢ) d̂ᵢ cos θᵢ`, displacement `−Σ (Qᵢ/kᵢ) d̂ᵢ sin θᵢ`,
+    /// deformation `I − Σ Qᵢ d̂ᵢd̂ᵢᵀ cos θᵢ` and vertical acceleration `−Σ Aᵢωᵢ² cos θᵢ`, within
+    /// the kernel's f32 error of the f64 sums.
+    pub(crate) fn kinematics(&self, x: f64, z: f64) -> Kinematics {
+        let mut k = Kinematics::default();
+        for t in &self.tiers {
+            let mut s = [0.0; LANES];
+            for l in 0..LANES {
+                s[l] = t.kx[l] * x + t.kz[l] * z + t.offset[l];
+            }
+            let q = f32x8::new(t.steepness);
+            let (c, g) = profile8(reduce_phases(&s), q, &t.series, t.mode);
+            let a = f32x8::new(t.amplitude);
+            let w = f32x8::new(t.omega);
+            let (ac, ag) = (a * c, a * g);
+            let sn = g * (f32x8::ONE - q * c);
+            let mut kx = [0f32; LANES];
+            let mut kz = [0f32; LANES];
+            let mut inv_k2 = [0f32; LANES];
+            for l in 0..LANES {
+                kx[l] = t.kx[l] as f32;
+                kz[l] = t.kz[l] as f32;
+                inv_k2[l] =
+                    if t.wavenumber[l] > 0.0 { (1.0 / (t.wavenumber[l] * t.wavenumber[l])) as f32 } else { 0.0 };
+            }
+            let (kx, kz, inv_k2) = (f32x8::new(kx), f32x8::new(kz), f32x8::new(inv_k2));
+            let qc = q * c * inv_k2;
+            let v = qc * w;
+            let d = q * sn * inv_k2;
+            let r = |v: f32x8| f64::from(v.reduce_add());
+            k.height += r(ac);
+            k.gradient -= DVec2::new(r(ag * kx), r(ag * kz));
+            k.height_rate += r(ag * w);
+            k.velocity += DVec2::new(r(v * kx), r(v * kz));
+            k.displacement -= DVec2::new(r(d * kx), r(d * kz));
+            k.deformation -= DVec3::new(r(qc * kx * kx), r(qc * kx * kz), r(qc * kz * kz));
+            k.vertical_acceleration -= r(ac * w * w);
+        }
+        k.deformation += DVec3::new(1.0, 0.0, 1.0);
+        k
+    }
+
+    /// `−Σ (Qᵢ/kᵢ) d̂ᵢ sin(kᵢ·u + offᵢ)`: each wave's particle displacement at rest phase
+    /// `kᵢ·u + offᵢ` (f32 lanes, the phase reduced in f64).
+    pub(crate) fn rest_displacement(&self, u: DVec2) -> DVec2 {
+        let mut d = DVec2::ZERO;
+        for t in &self.tiers {
+            let mut s = [0f32; LANES];
+            let mut fx = [0f32; LANES];
+            let mut fz = [0f32; LANES];
+            for l in 0..LANES {
+                let p = t.kx[l] * u.x + t.kz[l] * u.y + t.offset[l];
+                s[l] = (p - TAU * (p / TAU).round()) as f32;
+                let k2 = t.wavenumber[l] * t.wavenumber[l];
+                let f = if k2 > 0.0 { f64::from(t.steepness[l]) / k2 } else { 0.0 };
+                fx[l] = (f * t.kx[l]) as f32;
+                fz[l] = (f * t.kz[l]) as f32;
+            }
+            let sn = f32x8::new(s).sin();
+            d -= DVec2::new(
+                f64::from((sn * f32x8::new(fx)).reduce_add()),
+                f64::from((sn * f32x8::new(fz)).reduce_add()),
+            );
+        }
+        d
     }
 
     /// Height of wave `i` alone by the scalar twin of the kernel.

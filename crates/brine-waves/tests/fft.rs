@@ -132,7 +132,15 @@ fn polar_band_integral(s: &dyn Spectrum, d: &dyn Spreading, wind: f64, lo: f64, 
 }
 
 fn options(n: usize, tiles: &[f64], choppiness: f64, seed: u64) -> FftOptions {
-    FftOptions { resolution: n, tile_sizes: tiles.to_vec(), choppiness, loop_period: None, seed, wind_direction: 0.3 }
+    FftOptions {
+        resolution: n,
+        tile_sizes: tiles.to_vec(),
+        choppiness,
+        loop_period: None,
+        seed,
+        wind_direction: 0.3,
+        tiled: false,
+    }
 }
 
 /// `count` cascades from `l0` down by the default ratio.

@@ -52,6 +52,7 @@ fn frames() -> &'static [(f64, FftFrame)] {
                 loop_period: None,
                 seed,
                 wind_direction: 0.7 * seed as f64,
+                tiled: false,
             };
             out.push((choppiness, FftOcean::new(&elf, &d, &o).unwrap().at_time(2.0 + seed as f64)));
         }
@@ -366,6 +367,7 @@ fn trough_frame(seed: u64, tile: f64) -> (FftFrame, (f64, f64), f64) {
         loop_period: None,
         seed,
         wind_direction: 0.3,
+        tiled: false,
     };
     let frame = FftOcean::new(&elf, &spreading, &o).unwrap().at_time(1.0);
     let cascade = &frame.cascades()[0];

@@ -91,6 +91,7 @@ fn replace_word(text: &str, word: &str, by: &str) -> String {
 }
 
 mod ephem;
+mod export;
 mod foam;
 mod optics;
 mod render;
@@ -158,6 +159,12 @@ pub enum Command {
     Whitecap(whitecap::WhitecapArgs),
     /// The photo-based ocean of Lai & Wu.
     Texture(texture::TextureArgs),
+    /// Height, normal, motion and white water of the rendered sea at points and times.
+    Query(export::QueryArgs),
+    /// The rendered sea as a mesh (glTF 2.0, OBJ, PLY): a regular grid or camera-adaptive.
+    Mesh(export::MeshArgs),
+    /// Tileable maps of the rendered sea (displacement, normal, foam, whitecap, Jacobian, spray).
+    Bake(export::BakeArgs),
 }
 
 /// Parses the process arguments and runs; prints `error: …` on failure.
@@ -192,6 +199,9 @@ fn subcommand_name(c: &Command) -> &'static str {
         Command::Spray(_) => "spray",
         Command::Whitecap(_) => "whitecap",
         Command::Texture(_) => "texture",
+        Command::Query(_) => "query",
+        Command::Mesh(_) => "mesh",
+        Command::Bake(_) => "bake",
     }
 }
 
@@ -213,6 +223,9 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Some(Command::Spray(args)) => foam::run_spray(&args),
         Some(Command::Whitecap(args)) => whitecap::run_whitecap(&args),
         Some(Command::Texture(args)) => texture::run_texture(&args),
+        Some(Command::Query(args)) => export::run_query(&args),
+        Some(Command::Mesh(args)) => export::run_mesh(&args),
+        Some(Command::Bake(args)) => export::run_bake(&args),
     }
 }
 

@@ -58,7 +58,7 @@ pub struct RenderArgs {
 pub const REFERENCE_SPP: u32 = 64;
 
 /// Parses `A..B` with `A < B`, or a count `N ≥ 1` as `0..N`.
-fn parse_frames(s: &str) -> Result<(u32, u32), String> {
+pub(crate) fn parse_frames(s: &str) -> Result<(u32, u32), String> {
     let Some((a, b)) = s.split_once("..") else {
         let n: u32 =
             s.trim().parse().map_err(|_| format!("expected A..B (e.g. 0..240) or a frame count, got {s:?}"))?;

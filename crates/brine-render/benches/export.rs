@@ -1,0 +1,58 @@
+//! `cargo xtask bench export`: the default sea handed to other tools — a 1024² bake frame, a
+//! 1 M-vertex mesh and a million point queries, on the threads this machine has; medians of 3
+//! (the world is built once, outside the timings, as `brine bake` builds it once per animation).
+
+use std::time::Instant;
+
+use brine_render::export::{BakeOptions, MeshGrid, QueryPoint, UpAxis, bake_frame, grid_mesh, query_points};
+use brine_render::{Scene, World};
+use glam::DVec2;
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+fn time(runs: usize, mut f: impl FnMut()) -> f64 {
+    median(
+        (0..runs)
+            .map(|_| {
+                let t = Instant::now();
+                f();
+                t.elapsed().as_secs_f64()
+            })
+            .collect(),
+    )
+}
+
+fn main() {
+    let scene = Scene::default_scene();
+    let threads = rayon::current_num_threads();
+    let lattice = brine_waves::TileLattice::new(200.0, None).expect("a valid tile");
+    let tiled = World::on_lattice(&scene, Some(&lattice)).expect("the default scene builds");
+    let world = World::new(&scene).expect("the default scene builds");
+    let options = BakeOptions { size: 1024, tile_m: 200.0, up: UpAxis::Y };
+    let bake = time(3, || {
+        std::hint::black_box(bake_frame(&tiled, 0.5, &options));
+    });
+    let grid = MeshGrid { center: DVec2::ZERO, size_m: 499.5, spacing_m: 0.5 };
+    let mesh = time(3, || {
+        std::hint::black_box(grid_mesh(&world, scene.sea.time_s, &grid));
+    });
+    let n = 1_000_000;
+    let points: Vec<QueryPoint> = (0..n)
+        .map(|i| {
+            let (a, b) = ((i as f64 * 0.618_034).fract(), (i as f64 * 0.754_878).fract());
+            QueryPoint { x: 1000.0 * a - 500.0, z: 1000.0 * b - 500.0, t: scene.sea.time_s }
+        })
+        .collect();
+    let query = time(3, || {
+        std::hint::black_box(query_points(&scene, &world, &points).expect("queries"));
+    });
+    println!("export of the default sea ({threads} threads), medians of 3:");
+    println!("| task | time | goal | ratio to goal |");
+    println!("|---|---|---|---|");
+    println!("| bake 1024² (6 maps, no file) | {bake:.2} s | 1 s | {:.2} |", bake / 1.0);
+    println!("| mesh 1000² vertices (no file) | {mesh:.2} s | 2 s | {:.2} |", mesh / 2.0);
+    println!("| query 10⁶ points | {query:.2} s ({:.2} M points/s) | 1 M points/s | {:.2} |", 1.0 / query, query);
+}

@@ -1,0 +1,330 @@
+//! `brine query`, `brine mesh`, `brine bake`: the rendered sea handed to other tools.
+
+use std::io::{BufRead, IsTerminal, Write};
+use std::path::PathBuf;
+
+use glam::DVec2;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+
+use super::CliError;
+use crate::export::{BakeOptions, MeshFormat, MeshGrid, UpAxis};
+use crate::{Scene, World};
+
+/// Loads `path` (or the default scene) and sets the sea's time when `time` is given.
+fn load(path: Option<&PathBuf>, time: Option<f64>) -> Result<Scene, CliError> {
+    let mut scene = match path {
+        Some(p) => Scene::load(p).map_err(|e| CliError::Input(e.to_string()))?,
+        None => Scene::default_scene(),
+    };
+    if let Some(t) = time {
+        scene.sea.time_s = t;
+    }
+    Ok(scene)
+}
+
+fn world_of(scene: &Scene, lattice: Option<&brine_waves::TileLattice>) -> Result<World, CliError> {
+    World::on_lattice(scene, lattice).map_err(|e| CliError::Input(e.to_string()))
+}
+
+/// Output format of `brine query`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum QueryFormat {
+    /// One JSON array of objects.
+    #[default]
+    Json,
+    /// Comma-separated values with a header line.
+    Csv,
+}
+
+/// Arguments of `brine query`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct QueryArgs {
+    /// Scene file (TOML); the embedded default scene when omitted.
+    pub scene: Option<PathBuf>,
+    /// Points `x,z[,t];…` (m, s); a point without `t` is at the scene's `sea.time_s`.
+    #[arg(long, conflicts_with = "stdin", required_unless_present = "stdin", allow_hyphen_values = true)]
+    pub points: Option<String>,
+    /// Read the points from standard input, one `x,z[,t]` a line (`#` starts a comment).
+    #[arg(long)]
+    pub stdin: bool,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t)]
+    pub format: QueryFormat,
+    /// Time of the points that give none (s); overrides `sea.time_s`.
+    #[arg(long, value_parser = super::finite)]
+    pub time: Option<f64>,
+}
+
+/// Runs `brine query`.
+///
+/// # Errors
+/// [`CliError::Input`] for a bad scene or point.
+pub fn run_query(args: &QueryArgs) -> Result<(), CliError> {
+    let scene = load(args.scene.as_ref(), args.time)?;
+    let points = match (&args.points, args.stdin) {
+        (Some(text), _) => crate::export::parse_points(text, scene.sea.time_s, "--points"),
+        (None, _) => {
+            let mut text = String::new();
+            for line in std::io::stdin().lock().lines() {
+                let line = line.map_err(|e| CliError::Failure(format!("cannot read standard input: {e}")))?;
+                text.push_str(&line);
+                text.push('\n');
+            }
+            crate::export::parse_points(&text, scene.sea.time_s, "stdin")
+        }
+    }
+    .map_err(CliError::Input)?;
+    let world = world_of(&scene, None)?;
+    let results = crate::export::query_points(&scene, &world, &points).map_err(|e| CliError::Input(e.to_string()))?;
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    let written = match args.format {
+        QueryFormat::Json => serde_json::to_writer_pretty(&mut out, &results)
+            .map_err(std::io::Error::other)
+            .and_then(|()| writeln!(out)),
+        QueryFormat::Csv => (|| {
+            writeln!(
+                out,
+                "x,z,t,height_m,normal_x,normal_y,normal_z,displacement_x_m,displacement_z_m,velocity_x_m_s,velocity_y_m_s,velocity_z_m_s,vertical_acceleration_m_s2,jacobian,foam,whitecap"
+            )?;
+            for r in &results {
+                writeln!(
+                    out,
+                    "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+                    r.x,
+                    r.z,
+                    r.t,
+                    r.height_m,
+                    r.normal[0],
+                    r.normal[1],
+                    r.normal[2],
+                    r.displacement_m[0],
+                    r.displacement_m[1],
+                    r.velocity_m_s[0],
+                    r.velocity_m_s[1],
+                    r.velocity_m_s[2],
+                    r.vertical_acceleration_m_s2,
+                    r.jacobian,
+                    r.foam,
+                    r.whitecap
+                )?;
+            }
+            Ok(())
+        })(),
+    }
+    .and_then(|()| out.flush());
+    match written {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        Err(e) => Err(CliError::Failure(format!("cannot write to standard output: {e}"))),
+        Ok(()) => Ok(()),
+    }
+}
+
+/// Parses `x,z`.
+fn parse_xz(s: &str) -> Result<DVec2, String> {
+    let (a, b) = s.split_once(',').ok_or_else(|| format!("expected x,z (metres), got {s:?}"))?;
+    Ok(DVec2::new(super::finite(a)?, super::finite(b)?))
+}
+
+/// Arguments of `brine mesh`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct MeshArgs {
+    /// Scene file (TOML); the embedded default scene when omitted.
+    pub scene: Option<PathBuf>,
+    /// Output mesh: `.glb`, `.gltf` (with a `.bin` beside it), `.obj` or `.ply`.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Side of the square grid (m).
+    #[arg(long, default_value_t = 100.0, value_parser = super::finite, conflicts_with = "camera")]
+    pub size_m: f64,
+    /// Distance between the grid's rest positions (m).
+    #[arg(long, default_value_t = 0.5, value_parser = super::finite, conflicts_with = "camera")]
+    pub spacing_m: f64,
+    /// Centre of the grid `x,z` (m).
+    #[arg(long, value_parser = parse_xz, default_value = "0,0", allow_hyphen_values = true, conflicts_with = "camera")]
+    pub center: DVec2,
+    /// A camera-adaptive mesh instead: spacing following the pixel footprint of the scene's
+    /// camera, over its field of view out to the trace distance.
+    #[arg(long)]
+    pub camera: bool,
+    /// With `--camera`: pixel footprints per edge.
+    #[arg(long, default_value_t = 2.0, value_parser = super::within(0.25, 64.0), requires = "camera")]
+    pub pixels: f64,
+    /// Time of the surface (s); overrides `sea.time_s`.
+    #[arg(long, value_parser = super::finite)]
+    pub time: Option<f64>,
+    /// No summary.
+    #[arg(short, long)]
+    pub quiet: bool,
+}
+
+/// Runs `brine mesh`.
+///
+/// # Errors
+/// [`CliError::Input`] for bad input (nothing is written), [`CliError::Failure`] for I/O.
+pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
+    MeshFormat::from_path(&args.output).map_err(CliError::Input)?;
+    crate::output::check_writable(&args.output).map_err(CliError::Input)?;
+    let scene = load(args.scene.as_ref(), args.time)?;
+    let grid = MeshGrid { center: args.center, size_m: args.size_m, spacing_m: args.spacing_m };
+    if !args.camera {
+        grid.check().map_err(CliError::Input)?;
+    }
+    crate::output::remove_temporaries_on_signal().map_err(CliError::Failure)?;
+    let started = std::time::Instant::now();
+    let world = world_of(&scene, None)?;
+    let mesh = if args.camera {
+        let (_, _, n) = crate::export::mesh::camera_layout(&world, args.pixels);
+        crate::export::check_memory(&format!("a camera mesh of {n} vertices"), n * 112).map_err(CliError::Input)?;
+        crate::export::camera_mesh(&world, scene.sea.time_s, args.pixels)
+    } else {
+        crate::export::grid_mesh(&world, scene.sea.time_s, &grid)
+    };
+    crate::export::write_mesh(&args.output, &mesh).map_err(CliError::Failure)?;
+    if !args.quiet {
+        eprintln!(
+            "{}: {} vertices, {} triangles in {:.2} s",
+            args.output.display(),
+            mesh.positions.len(),
+            mesh.indices.len() / 3,
+            started.elapsed().as_secs_f64()
+        );
+    }
+    Ok(())
+}
+
+/// Arguments of `brine bake`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct BakeArgs {
+    /// Scene file (TOML); the embedded default scene when omitted.
+    pub scene: Option<PathBuf>,
+    /// Output folder (made if missing).
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Texels per side.
+    #[arg(long, default_value_t = 512)]
+    pub size: usize,
+    /// Side of the tile (m); by default the FFT sea's largest cascade, or the
+    /// longest wave of a trochoid sea (about four peak wavelengths).
+    #[arg(long, value_parser = super::finite)]
+    pub tile_m: Option<f64>,
+    /// Frames `A..B` (B excluded) or a count `N`; frame `f` at `sea.time_s + f/fps`.
+    #[arg(long, value_parser = super::render::parse_frames)]
+    pub frames: Option<(u32, u32)>,
+    /// Loop period (s): the waves' frequencies are snapped so that the maps repeat exactly after it.
+    #[arg(long, value_parser = super::finite)]
+    pub loop_s: Option<f64>,
+    /// Write 16-bit PNG maps instead of OpenEXR (the encodings are in `bake.json`).
+    #[arg(long)]
+    pub png16: bool,
+    /// Up axis of the vector maps: `y` (Brine, glTF, Houdini, Unity) or `z` (Blender).
+    #[arg(long, value_enum, default_value_t)]
+    pub up: UpAxis,
+    /// No progress bar and no summary.
+    #[arg(short, long)]
+    pub quiet: bool,
+}
+
+/// Runs `brine bake`.
+///
+/// # Errors
+/// [`CliError::Input`] for bad input (nothing is written), [`CliError::Failure`] for I/O.
+pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
+    let scene = load(args.scene.as_ref(), None)?;
+    // The tile: given, or from the sea itself.
+    let tile_m = match args.tile_m {
+        Some(t) => t,
+        None => {
+            let plain = world_of(&scene, None)?;
+            match &plain.ocean {
+                brine_waves::Ocean::Fft { ocean } => ocean.options().tile_sizes[0],
+                o => {
+                    let longest =
+                        o.waves().map_or(0.0, |s| s.waves().iter().map(|w| w.wavelength()).fold(0.0, f64::max));
+                    longest.max(10.0).ceil()
+                }
+            }
+        }
+    };
+    let options = BakeOptions { size: args.size, tile_m, up: args.up };
+    options.check().map_err(CliError::Input)?;
+    let lattice = brine_waves::TileLattice::new(tile_m, args.loop_s)
+        .map_err(|e| CliError::Input(e.to_string().replace("tile_m", "--tile-m").replace("loop_s", "--loop-s")))?;
+    if args.output.exists() && !args.output.is_dir() {
+        return Err(CliError::Input(format!("--output {}: not a folder", args.output.display())));
+    }
+    std::fs::create_dir_all(&args.output)
+        .map_err(|e| CliError::Input(format!("cannot make the folder {}: {e}", args.output.display())))?;
+    crate::output::check_writable(&args.output.join("bake.json")).map_err(CliError::Input)?;
+    crate::output::remove_temporaries_on_signal().map_err(CliError::Failure)?;
+    let (first, last) = args.frames.unwrap_or((0, 1));
+    let fps = scene.animation.fps;
+    let time_of = |f: u32| scene.sea.time_s + f64::from(f) / fps;
+    let fft = scene.sea.surface == crate::scene::SurfaceKind::Fft;
+    // Trochoid, Gerstner and sine seas answer at any time from one world; the FFT sea's white
+    // water belongs to its frame.
+    let shared = if fft { None } else { Some(world_of(&scene, Some(&lattice))?) };
+    let bar = if args.quiet || !std::io::stderr().is_terminal() {
+        ProgressBar::hidden()
+    } else {
+        let b = ProgressBar::with_draw_target(Some(u64::from(last - first)), ProgressDrawTarget::stderr());
+        b.set_style(
+            ProgressStyle::with_template("baking {bar:40} {pos}/{len} frames, {eta} left")
+                .unwrap_or_else(|_| ProgressStyle::default_bar()),
+        );
+        b
+    };
+    let started = std::time::Instant::now();
+    let mut range_m = 0.0f64;
+    let mut frames = Vec::new();
+    for f in first..last {
+        let t = time_of(f);
+        let own;
+        let world = match &shared {
+            Some(w) => w,
+            None => {
+                let mut s = scene.clone();
+                s.sea.time_s = t;
+                own = world_of(&s, Some(&lattice))?;
+                &own
+            }
+        };
+        let frame = crate::export::bake_frame(world, t, &options);
+        // One displacement range for every frame of a PNG bake: the sea's height bound.
+        let (lo, hi) = world.sea.height_bounds();
+        range_m = range_m.max(lo.abs().max(hi.abs()) * 1.5).max(1e-3);
+        let png = args.png16.then_some(range_m);
+        crate::export::write_bake_frame(&args.output, f, &frame, png).map_err(CliError::Failure)?;
+        frames.push(serde_json::json!({ "index": f, "time_s": t }));
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    let meta = serde_json::json!({
+        "generator": format!("brine {}", env!("CARGO_PKG_VERSION")),
+        "surface": format!("{:?}", scene.sea.surface).to_lowercase(),
+        "tile_m": tile_m,
+        "size": args.size,
+        "texel_m": tile_m / args.size as f64,
+        "loop_period_s": args.loop_s,
+        "up": match args.up { UpAxis::Y => "y (x east, y up, z south)", UpAxis::Z => "z (X east, Y north, Z up)" },
+        "maps": ["displacement", "normal", "foam", "whitecap", "jacobian", "spray"],
+        "format": if args.png16 { "png16" } else { "exr" },
+        "png16_encodings": args.png16.then(|| {
+            crate::export::bake::png_scales(range_m).iter().map(|(k, s)| (k.to_string(), serde_json::json!(s))).collect::<serde_json::Map<_, _>>()
+        }),
+        "frames": frames,
+    });
+    let text = serde_json::to_string_pretty(&meta).map_err(|e| CliError::Failure(e.to_string()))?;
+    crate::output::write_atomic(&args.output.join("bake.json"), |w| w.write_all(text.as_bytes()))
+        .map_err(|e| CliError::Failure(e.to_string()))?;
+    if !args.quiet {
+        let n = last - first;
+        eprintln!(
+            "{}: {n} frame(s) of 6 maps, {}×{} texels over {tile_m} m, {:.2} s a frame",
+            args.output.display(),
+            args.size,
+            args.size,
+            started.elapsed().as_secs_f64() / f64::from(n)
+        );
+    }
+    Ok(())
+}

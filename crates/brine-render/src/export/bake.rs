@@ -1,0 +1,284 @@
+//! Tileable maps of the sea over a square: `brine bake` (OpenEXR, or 16-bit PNG).
+
+use std::path::{Path, PathBuf};
+
+use glam::{DVec2, DVec3};
+use rayon::prelude::*;
+
+use crate::World;
+
+/// The up axis of the maps' vectors.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum, serde::Serialize)]
+pub enum UpAxis {
+    /// Brine's, glTF's, Houdini's, Unity's: `(x east, y up, z south)`.
+    #[default]
+    Y,
+    /// Blender's: `(X east, Y north, Z up)` = `(x, −z, y)`.
+    Z,
+}
+
+impl UpAxis {
+    /// A vector of Brine's axes in this convention.
+    pub fn convert(self, v: DVec3) -> DVec3 {
+        match self {
+            UpAxis::Y => v,
+            UpAxis::Z => DVec3::new(v.x, -v.z, v.y),
+        }
+    }
+}
+
+/// What to bake.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BakeOptions {
+    /// Texels per side, `[2, 16384]`.
+    pub size: usize,
+    /// Side of the tile (m); the waves are snapped to its lattice by the world.
+    pub tile_m: f64,
+    /// Up axis of the vector maps.
+    pub up: UpAxis,
+}
+
+/// Largest map side of `brine bake` (memory refuses far smaller ones first on most machines).
+pub const MAX_BAKE_SIZE: usize = 1 << 20;
+
+/// Bytes per texel while baking: six maps of up to 3 f32 channels (13 floats), held once as
+/// computed and once encoded.
+const BYTES_PER_TEXEL: u64 = 2 * 13 * 4;
+
+impl BakeOptions {
+    /// Estimated peak memory of one frame (bytes).
+    pub fn memory_estimate(&self) -> u64 {
+        (self.size as u64).saturating_mul(self.size as u64).saturating_mul(BYTES_PER_TEXEL)
+    }
+
+    /// Checks the options and the memory they need.
+    ///
+    /// # Errors
+    /// A message naming the flag and its range, or the memory estimate.
+    pub fn check(&self) -> Result<(), String> {
+        if !(2..=MAX_BAKE_SIZE).contains(&self.size) {
+            return Err(format!("--size = {} is out of range: expected [2, {MAX_BAKE_SIZE}] texels", self.size));
+        }
+        if !(self.tile_m > 0.0 && self.tile_m <= 1e6) {
+            return Err(format!("--tile-m = {} is out of range: expected (0, 1e6] m", self.tile_m));
+        }
+        super::check_memory(&format!("a {0} × {0} bake", self.size), self.memory_estimate())
+    }
+}
+
+/// The maps of one frame, row-major (row `j` at `z = jL/N`, top row first; column `i` at
+/// `x = iL/N`).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct BakedFrame {
+    /// Texels per side.
+    pub size: usize,
+    /// Time of the frame (s).
+    pub time: f64,
+    /// The maps.
+    pub maps: BakeMaps,
+}
+
+/// The baked maps (f32 per channel).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct BakeMaps {
+    /// Vector displacement `(D_x, h, D_z)` (m, in the up axis' convention): the texel's rest
+    /// position `u` goes to `u + (D_x, 0, D_z)` and up by `h`.
+    pub displacement: Vec<[f32; 3]>,
+    /// Unit normal of the surface there.
+    pub normal: Vec<[f32; 3]>,
+    /// Foam cover `[0, 1]`.
+    pub foam: Vec<f32>,
+    /// Active whitecap cover `[0, 1]`.
+    pub whitecap: Vec<f32>,
+    /// Jacobian determinant of the horizontal map.
+    pub jacobian: Vec<f32>,
+    /// The minor eigenvector of the deformation (horizontal, unit: `(e_x, e_z)` or `(e_X, e_Y)`)
+    /// and its eigenvalue `μ₋` (Blender's "spray" map: where `μ₋ < 0` the surface folds).
+    pub spray: Vec<[f32; 3]>,
+}
+
+/// Bakes the sea of `world` (built on the tile's lattice, `World::on_lattice`) at time `t`.
+///
+/// Texel `(i, j)` is the rest position `u = (iL/N, jL/N)`: it goes to `x = u + D(u)` (brine-waves
+/// `SeaFrame::rest_displacement`), and the maps hold the traced surface there (`SeaFrame::sample`)
+/// and the renderer's white water at a footprint of one texel.
+///
+/// # Arguments
+/// - `world`: the world on the lattice; `t`: time (s), finite; `options`: checked options.
+///
+/// # Returns
+/// The [`BakedFrame`].
+pub fn bake_frame(world: &World, t: f64, options: &BakeOptions) -> BakedFrame {
+    let frame_at;
+    let frame = if t.to_bits() == world.time.to_bits() {
+        &world.sea
+    } else {
+        frame_at = world.ocean.at_time(t);
+        &frame_at
+    };
+    let n = options.size;
+    let texel = options.tile_m / n as f64;
+    let up = options.up;
+    let f3 = |v: DVec3| v.as_vec3().to_array();
+    let texels: Vec<_> = (0..n * n)
+        .into_par_iter()
+        .with_min_len(1024)
+        .map(|k| {
+            let u = DVec2::new((k % n) as f64, (k / n) as f64) * texel;
+            let d = frame.rest_displacement(u);
+            let x = u + d;
+            let s = frame.sample(x.x, x.y);
+            let p = DVec3::new(x.x, s.height, x.y);
+            let cover = world.cover_at_time(p, s.normal, t, texel);
+            let (mu, e) = s.minor_eigen();
+            let e3 = up.convert(DVec3::new(e.x, 0.0, e.y));
+            let spray = match up {
+                UpAxis::Y => [e3.x as f32, e3.z as f32, mu as f32],
+                UpAxis::Z => [e3.x as f32, e3.y as f32, mu as f32],
+            };
+            (
+                f3(up.convert(DVec3::new(d.x, s.height, d.y))),
+                f3(up.convert(s.normal)),
+                cover.foam as f32,
+                cover.whitecap as f32,
+                s.jacobian as f32,
+                spray,
+            )
+        })
+        .collect();
+    let mut maps = BakeMaps::default();
+    for (d, nrm, f, w, j, s) in texels {
+        maps.displacement.push(d);
+        maps.normal.push(nrm);
+        maps.foam.push(f);
+        maps.whitecap.push(w);
+        maps.jacobian.push(j);
+        maps.spray.push(s);
+    }
+    BakedFrame { size: n, time: t, maps }
+}
+
+/// Encoding of the 16-bit PNG maps: `value = offset + scale × code/65535`.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct PngScale {
+    /// Value of code 0.
+    pub offset: f64,
+    /// Value of code 65535 minus that of code 0.
+    pub scale: f64,
+}
+
+/// The 16-bit PNG encodings of the maps: displacement over `±range_m`, unit vectors over
+/// `[−1, 1]`, covers over `[0, 1]`, Jacobian and eigenvalue over `[−1, 3]`.
+pub fn png_scales(range_m: f64) -> [(&'static str, PngScale); 4] {
+    [
+        ("displacement", PngScale { offset: -range_m, scale: 2.0 * range_m }),
+        ("unit vectors", PngScale { offset: -1.0, scale: 2.0 }),
+        ("cover", PngScale { offset: 0.0, scale: 1.0 }),
+        ("jacobian and eigenvalue", PngScale { offset: -1.0, scale: 4.0 }),
+    ]
+}
+
+/// One map to write: its name, its named channels and their 16-bit PNG encodings.
+type Map<'a> = (&'a str, Vec<(String, Vec<f32>)>, Vec<PngScale>);
+
+/// Writes the six maps of `frame` into `dir` as `NAME_FFFF.exr` (or `.png`, 16 bits, with
+/// `png_range_m` the displacement range), each atomically.
+///
+/// # Errors
+/// A message naming the file and the cause.
+pub fn write_bake_frame(
+    dir: &Path,
+    index: u32,
+    frame: &BakedFrame,
+    png_range_m: Option<f64>,
+) -> Result<Vec<PathBuf>, String> {
+    let n = frame.size;
+    let m = &frame.maps;
+    let ext = if png_range_m.is_some() { "png" } else { "exr" };
+    let path = |name: &str| dir.join(format!("{name}_{index:04}.{ext}"));
+    let rgb = |v: &[[f32; 3]]| -> Vec<(String, Vec<f32>)> {
+        ["R", "G", "B"]
+            .iter()
+            .enumerate()
+            .map(|(c, name)| ((*name).to_owned(), v.iter().map(|p| p[c]).collect()))
+            .collect()
+    };
+    let grey = |v: &[f32]| vec![("Y".to_owned(), v.to_vec())];
+    // (name, channels, PNG offset and scale per channel)
+    let range = png_range_m.unwrap_or(1.0);
+    let maps: Vec<Map<'_>> = {
+        let s = png_scales(range);
+        vec![
+            ("displacement", rgb(&m.displacement), vec![s[0].1; 3]),
+            ("normal", rgb(&m.normal), vec![s[1].1; 3]),
+            ("foam", grey(&m.foam), vec![s[2].1]),
+            ("whitecap", grey(&m.whitecap), vec![s[2].1]),
+            ("jacobian", grey(&m.jacobian), vec![s[3].1]),
+            ("spray", rgb(&m.spray), vec![s[1].1, s[1].1, s[3].1]),
+        ]
+    };
+    let mut written = Vec::new();
+    for (name, channels, scales) in maps {
+        let p = path(name);
+        let shown = p.display().to_string();
+        if png_range_m.is_some() {
+            let c = channels.len();
+            let mut codes: Vec<u16> = Vec::with_capacity(n * n * c);
+            for k in 0..n * n {
+                for (ch, s) in channels.iter().zip(&scales) {
+                    let v = (f64::from(ch.1[k]) - s.offset) / s.scale;
+                    codes.push((v.clamp(0.0, 1.0) * 65535.0).round() as u16);
+                }
+            }
+            let bytes: Vec<u8> = codes.iter().flat_map(|v| v.to_be_bytes()).collect();
+            let colour = if c == 1 { image::ExtendedColorType::L16 } else { image::ExtendedColorType::Rgb16 };
+            crate::output::write_atomic(&p, |w| {
+                use image::ImageEncoder as _;
+                image::codecs::png::PngEncoder::new(w)
+                    .write_image(&bytes, n as u32, n as u32, colour)
+                    .map_err(std::io::Error::other)
+            })
+            .map_err(|e| format!("cannot write {shown}: {e}"))?;
+        } else {
+            let mut failed = None;
+            crate::output::write_atomic(&p, |w| {
+                crate::output::encode_exr(w, n, n, channels).map_err(|e| {
+                    failed = Some(e.clone());
+                    std::io::Error::other(e)
+                })
+            })
+            .map_err(|e| failed.map_or_else(|| e.to_string(), |f| format!("cannot encode {shown}: {f}")))?;
+        }
+        written.push(p);
+    }
+    Ok(written)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bake_sizes_are_checked_and_huge_ones_refused() {
+        let o = BakeOptions { size: 1024, tile_m: 100.0, up: UpAxis::Y };
+        assert!(o.check().is_ok());
+        assert!(BakeOptions { size: 1, ..o }.check().unwrap_err().contains("--size"));
+        // 65 536² × 104 B = 447 GB: refused with the estimate on any machine with less.
+        if let Some(avail) = super::super::available_memory_bytes()
+            && avail < 400 << 30
+        {
+            let e = BakeOptions { size: 65536, ..o }.check().unwrap_err();
+            assert!(e.contains("65536 × 65536") && e.contains("GiB"), "{e}");
+        }
+        assert!(BakeOptions { tile_m: -1.0, ..o }.check().unwrap_err().contains("--tile-m"));
+        assert_eq!(BakeOptions { size: 65536, ..o }.memory_estimate(), 65536 * 65536 * BYTES_PER_TEXEL);
+    }
+
+    #[test]
+    fn blender_axes_are_right_handed_z_up() {
+        let b = |v: DVec3| UpAxis::Z.convert(v);
+        // East stays X, up becomes Z, north (−z) becomes Y: east × north = up.
+        assert_eq!((b(DVec3::X), b(DVec3::Y), b(DVec3::NEG_Z)), (DVec3::X, DVec3::Z, DVec3::Y));
+        assert_eq!(b(DVec3::X).cross(b(DVec3::NEG_Z)), b(DVec3::Y));
+    }
+}

@@ -1,0 +1,465 @@
+//! The displaced sea surface as a triangle mesh: `brine mesh` (glTF 2.0, OBJ, PLY).
+
+use std::io::Write;
+use std::path::Path;
+
+use glam::{DVec2, DVec3};
+use rayon::prelude::*;
+
+use crate::World;
+
+/// A triangle mesh of the sea: positions (m, y up), unit normals, foam and whitecap cover per
+/// vertex, counter-clockwise triangles seen from above.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Mesh {
+    /// Vertex positions `(x, y, z)` (m).
+    pub positions: Vec<[f32; 3]>,
+    /// Unit upward normals.
+    pub normals: Vec<[f32; 3]>,
+    /// Foam cover `[0, 1]`.
+    pub foam: Vec<f32>,
+    /// Active whitecap cover `[0, 1]`.
+    pub whitecap: Vec<f32>,
+    /// Triangles, three vertex indices each.
+    pub indices: Vec<u32>,
+}
+
+/// Bytes per vertex of a [`Mesh`] in memory and in its file (position, normal, foam, whitecap)
+/// plus its share of the indices (two triangles per vertex), twice over (the mesh and the
+/// encoded file): what [`MeshGrid::memory_estimate`] counts.
+const BYTES_PER_VERTEX: u64 = 2 * (12 + 12 + 4 + 4 + 24);
+
+/// A regular grid of rest positions: `count × count` points `spacing_m` apart around `center`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeshGrid {
+    /// Centre of the grid `(x, z)` (m).
+    pub center: DVec2,
+    /// Side of the square (m), `> 0`.
+    pub size_m: f64,
+    /// Distance between neighbouring rest positions (m), `> 0`.
+    pub spacing_m: f64,
+}
+
+/// Most vertices a mesh may have: 32-bit indices.
+pub const MAX_MESH_VERTICES: u64 = u32::MAX as u64;
+
+impl MeshGrid {
+    /// Vertices along a side, `round(size/spacing) + 1`.
+    pub fn count(&self) -> u64 {
+        (self.size_m / self.spacing_m).round() as u64 + 1
+    }
+
+    /// Estimated peak memory of the mesh and its encoding (bytes).
+    pub fn memory_estimate(&self) -> u64 {
+        self.count().saturating_mul(self.count()).saturating_mul(BYTES_PER_VERTEX)
+    }
+
+    /// Checks the grid: positive sizes, at least 2 × 2 vertices, indices that fit 32 bits, and
+    /// memory the machine has.
+    ///
+    /// # Errors
+    /// A message naming the flag and its range, or the memory estimate.
+    pub fn check(&self) -> Result<(), String> {
+        if !(self.size_m > 0.0 && self.size_m <= 1e6) {
+            return Err(format!("--size-m = {} is out of range: expected (0, 1e6] m", self.size_m));
+        }
+        if !(self.spacing_m > 0.0 && self.spacing_m <= self.size_m) {
+            return Err(format!("--spacing-m = {} is out of range: expected (0, --size-m] m", self.spacing_m));
+        }
+        let n = self.count().saturating_mul(self.count());
+        if n > MAX_MESH_VERTICES {
+            return Err(format!(
+                "a {0} × {0} grid has {n} vertices, more than a mesh with 32-bit indices holds ({MAX_MESH_VERTICES}): raise --spacing-m",
+                self.count()
+            ));
+        }
+        super::check_memory(&format!("a mesh of {n} vertices"), self.memory_estimate())
+    }
+}
+
+/// One vertex of the surface: the point of rest position `u` (see brine-waves
+/// `SeaFrame::rest_displacement`) with its normal and cover.
+fn vertex(world: &World, frame: &brine_waves::SeaFrame, x: DVec2, footprint_m: f64) -> ([f32; 3], [f32; 3], f32, f32) {
+    let s = frame.sample(x.x, x.y);
+    let p = DVec3::new(x.x, s.height, x.y);
+    let c = world.cover_at_time(p, s.normal, frame.time(), footprint_m);
+    (p.as_vec3().to_array(), s.normal.as_vec3().to_array(), c.foam as f32, c.whitecap as f32)
+}
+
+/// Fills a mesh from vertex rows (row-major, `cols` per row) and triangulates the grid.
+fn grid_of(rows: usize, cols: usize, vertices: Vec<([f32; 3], [f32; 3], f32, f32)>) -> Mesh {
+    let mut m = Mesh {
+        positions: Vec::with_capacity(vertices.len()),
+        normals: Vec::with_capacity(vertices.len()),
+        foam: Vec::with_capacity(vertices.len()),
+        whitecap: Vec::with_capacity(vertices.len()),
+        indices: Vec::with_capacity(6 * rows.saturating_sub(1) * cols.saturating_sub(1)),
+    };
+    for (p, n, f, w) in vertices {
+        m.positions.push(p);
+        m.normals.push(n);
+        m.foam.push(f);
+        m.whitecap.push(w);
+    }
+    for j in 0..rows.saturating_sub(1) {
+        for i in 0..cols.saturating_sub(1) {
+            let a = (j * cols + i) as u32;
+            let (b, c, d) = (a + 1, a + cols as u32, a + cols as u32 + 1);
+            // Counter-clockwise seen from +y: x east, z south (right-handed, y up).
+            m.indices.extend_from_slice(&[a, c, b, b, c, d]);
+        }
+    }
+    m
+}
+
+/// The sea of `world` at time `t` (s) on a regular grid of rest positions: each grid point `u`
+/// goes to `x = u + D(u)` (the water's own displacement, so that vertices crowd toward the
+/// crests) and then onto the traced surface `(x, h(x))`.
+///
+/// # Arguments
+/// - `world`: the scene's world; `t`: time (s), finite; `grid`: a checked [`MeshGrid`].
+///
+/// # Returns
+/// The [`Mesh`].
+pub fn grid_mesh(world: &World, t: f64, grid: &MeshGrid) -> Mesh {
+    let frame_at;
+    let frame = if t.to_bits() == world.time.to_bits() {
+        &world.sea
+    } else {
+        frame_at = world.ocean.at_time(t);
+        &frame_at
+    };
+    let n = grid.count() as usize;
+    let origin = grid.center - DVec2::splat(0.5 * (n - 1) as f64 * grid.spacing_m);
+    let vertices: Vec<_> = (0..n * n)
+        .into_par_iter()
+        .with_min_len(1024)
+        .map(|k| {
+            let u = origin + DVec2::new((k % n) as f64, (k / n) as f64) * grid.spacing_m;
+            let x = u + frame.rest_displacement(u);
+            vertex(world, frame, x, grid.spacing_m)
+        })
+        .collect();
+    grid_of(n, n, vertices)
+}
+
+/// The sea of `world` at time `t` as the camera sees it: a polar grid around the camera's foot,
+/// over its horizontal field of view (and a margin of a tenth of it each side), from where the
+/// view meets the sea out to the trace distance, with vertices `pixels` pixel footprints apart —
+/// across, `r α`; along the view, `r α/sin γ` (`α` the pixel angle, `γ` the grazing angle).
+///
+/// # Arguments
+/// - `world`, `t`: as [`grid_mesh`]; `pixels`: pixel footprints per edge, `≥ 0.25`.
+///
+/// # Returns
+/// The [`Mesh`] (Eulerian vertices: each on the traced surface above its grid point).
+pub fn camera_mesh(world: &World, t: f64, pixels: f64) -> Mesh {
+    let (rings, angles, _) = camera_layout(world, pixels);
+    let frame_at;
+    let frame = if t.to_bits() == world.time.to_bits() {
+        &world.sea
+    } else {
+        frame_at = world.ocean.at_time(t);
+        &frame_at
+    };
+    let c = world.camera.position;
+    let alpha = world.camera.pixel_angle();
+    let cols = angles.len();
+    let vertices: Vec<_> = (0..rings.len() * cols)
+        .into_par_iter()
+        .with_min_len(1024)
+        .map(|k| {
+            let (r, a) = (rings[k / cols], angles[k % cols]);
+            let x = DVec2::new(c.x + r * a.cos(), c.z + r * a.sin());
+            vertex(world, frame, x, pixels * alpha * r)
+        })
+        .collect();
+    grid_of(rings.len(), cols, vertices)
+}
+
+/// The radii and azimuths (atan2 in the x–z plane) of [`camera_mesh`] and its vertex count.
+pub fn camera_layout(world: &World, pixels: f64) -> (Vec<f64>, Vec<f64>, u64) {
+    let cam = &world.camera;
+    let alpha = cam.pixel_angle() * pixels.max(0.25);
+    let h = (cam.position.y - world.sea.height_bounds().1).max(0.5);
+    let aspect = f64::from(cam.width) / f64::from(cam.height);
+    let half_h = (cam.tan_half_fov * aspect).atan();
+    let yaw = cam.forward.z.atan2(cam.forward.x);
+    let half = 1.2 * half_h;
+    let count = (2.0 * half / alpha).ceil().max(1.0) as usize;
+    let angles: Vec<f64> = (0..=count).map(|i| yaw - half + 2.0 * half * i as f64 / count as f64).collect();
+    // From where the lowest ray meets the sea (at least half the eye's height) to the trace distance.
+    let pitch = cam.forward.y.asin();
+    let lowest = pitch - cam.tan_half_fov.atan();
+    let r_min = if lowest < -1e-3 { (h / (-lowest).tan()).max(0.5 * h) } else { 0.5 * h } * 0.8;
+    let r_max = world.trace.t_max.max(r_min * 1.01);
+    let mut rings = vec![r_min];
+    while let Some(&r) = rings.last() {
+        if r >= r_max || rings.len() > 1 << 22 {
+            break;
+        }
+        let sin_grazing = h / r.hypot(h);
+        rings.push((r + alpha * r / sin_grazing).min(r_max));
+    }
+    let n = (rings.len() * angles.len()) as u64;
+    (rings, angles, n)
+}
+
+/// Mesh file formats, chosen by the extension.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MeshFormat {
+    /// Binary glTF 2.0 (`.glb`).
+    Glb,
+    /// glTF 2.0 JSON with its buffer in a `.bin` beside it (`.gltf`).
+    Gltf,
+    /// Wavefront OBJ with vertex normals and the white-water cover as a vertex colour.
+    Obj,
+    /// Binary little-endian PLY with `foam` and `whitecap` vertex properties.
+    Ply,
+}
+
+impl MeshFormat {
+    /// The format of `path`'s extension.
+    ///
+    /// # Errors
+    /// A message naming the extension if it is not one of `.glb`, `.gltf`, `.obj`, `.ply`.
+    pub fn from_path(path: &Path) -> Result<Self, String> {
+        match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
+            Some("glb") => Ok(Self::Glb),
+            Some("gltf") => Ok(Self::Gltf),
+            Some("obj") => Ok(Self::Obj),
+            Some("ply") => Ok(Self::Ply),
+            other => Err(format!(
+                "--output {}: {} (expected .glb, .gltf, .obj or .ply)",
+                path.display(),
+                other.map_or("no extension".to_owned(), |e| format!("unsupported extension .{e}"))
+            )),
+        }
+    }
+}
+
+/// The mesh's binary buffer (positions, normals, foam, whitecap, indices) and the glTF JSON
+/// describing it; `uri` names the external buffer of a `.gltf`.
+fn gltf_parts(mesh: &Mesh, uri: Option<String>) -> Result<(Vec<u8>, Vec<u8>), String> {
+    use gltf::json;
+    use gltf::json::validation::Checked::Valid;
+    use gltf::json::validation::USize64;
+    let mut bin = Vec::new();
+    let n = mesh.positions.len();
+    let mut put = |bytes: &[u8]| {
+        let offset = bin.len();
+        bin.extend_from_slice(bytes);
+        while bin.len() % 4 != 0 {
+            bin.push(0);
+        }
+        (offset, bytes.len())
+    };
+    let flat3 = |v: &[[f32; 3]]| v.iter().flat_map(|p| p.iter().flat_map(|c| c.to_le_bytes())).collect::<Vec<u8>>();
+    let flat1 = |v: &[f32]| v.iter().flat_map(|c| c.to_le_bytes()).collect::<Vec<u8>>();
+    let parts = [
+        put(&flat3(&mesh.positions)),
+        put(&flat3(&mesh.normals)),
+        put(&flat1(&mesh.foam)),
+        put(&flat1(&mesh.whitecap)),
+        put(&mesh.indices.iter().flat_map(|i| i.to_le_bytes()).collect::<Vec<u8>>()),
+    ];
+    let mut root = json::Root::default();
+    root.asset.generator = Some(format!("brine {}", env!("CARGO_PKG_VERSION")));
+    let buffer = root.push(json::Buffer {
+        byte_length: USize64::from(bin.len()),
+        name: None,
+        uri,
+        extensions: Option::default(),
+        extras: Default::default(),
+    });
+    let mut view = |(offset, len): (usize, usize), target| {
+        root.push(json::buffer::View {
+            buffer,
+            byte_length: USize64::from(len),
+            byte_offset: Some(USize64::from(offset)),
+            byte_stride: None,
+            name: None,
+            target: Some(Valid(target)),
+            extensions: Option::default(),
+            extras: Default::default(),
+        })
+    };
+    let array = json::buffer::Target::ArrayBuffer;
+    let views = [
+        view(parts[0], array),
+        view(parts[1], array),
+        view(parts[2], array),
+        view(parts[3], array),
+        view(parts[4], json::buffer::Target::ElementArrayBuffer),
+    ];
+    let (mut lo, mut hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
+    for p in &mesh.positions {
+        for k in 0..3 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let mut accessor = |view, count: usize, component, type_, bounds: Option<(Vec<f32>, Vec<f32>)>| {
+        root.push(json::Accessor {
+            buffer_view: Some(view),
+            byte_offset: Some(USize64(0)),
+            count: USize64::from(count),
+            component_type: Valid(json::accessor::GenericComponentType(component)),
+            extensions: Option::default(),
+            extras: Default::default(),
+            type_: Valid(type_),
+            min: bounds.as_ref().map(|b| json::Value::from(b.0.clone())),
+            max: bounds.map(|b| json::Value::from(b.1)),
+            name: None,
+            normalized: false,
+            sparse: None,
+        })
+    };
+    use json::accessor::{ComponentType, Type};
+    let position = accessor(views[0], n, ComponentType::F32, Type::Vec3, Some((lo.to_vec(), hi.to_vec())));
+    let normal = accessor(views[1], n, ComponentType::F32, Type::Vec3, None);
+    let foam = accessor(views[2], n, ComponentType::F32, Type::Scalar, None);
+    let whitecap = accessor(views[3], n, ComponentType::F32, Type::Scalar, None);
+    let indices = accessor(views[4], mesh.indices.len(), ComponentType::U32, Type::Scalar, None);
+    let mut attributes = std::collections::BTreeMap::new();
+    attributes.insert(Valid(json::mesh::Semantic::Positions), position);
+    attributes.insert(Valid(json::mesh::Semantic::Normals), normal);
+    attributes.insert(Valid(json::mesh::Semantic::Extras("FOAM".into())), foam);
+    attributes.insert(Valid(json::mesh::Semantic::Extras("WHITECAP".into())), whitecap);
+    let primitive = json::mesh::Primitive {
+        attributes,
+        extensions: Option::default(),
+        extras: Default::default(),
+        indices: Some(indices),
+        material: None,
+        mode: Valid(json::mesh::Mode::Triangles),
+        targets: None,
+    };
+    let mesh_index = root.push(json::Mesh {
+        extensions: Option::default(),
+        extras: Default::default(),
+        name: Some("sea".into()),
+        primitives: vec![primitive],
+        weights: None,
+    });
+    let node = root.push(json::Node { mesh: Some(mesh_index), name: Some("sea".into()), ..Default::default() });
+    let scene = root.push(json::Scene {
+        extensions: Option::default(),
+        extras: Default::default(),
+        name: Some("brine".into()),
+        nodes: vec![node],
+    });
+    root.scene = Some(scene);
+    let text = json::serialize::to_vec(&root).map_err(|e| e.to_string())?;
+    Ok((text, bin))
+}
+
+/// Writes `mesh` to `path` in the format of its extension, atomically (a `.gltf` writes its
+/// buffer to the `.bin` of the same name first).
+///
+/// # Errors
+/// A message naming the path and the cause.
+pub fn write_mesh(path: &Path, mesh: &Mesh) -> Result<(), String> {
+    let format = MeshFormat::from_path(path)?;
+    let atomic =
+        |p: &Path, bytes: &[u8]| crate::output::write_atomic(p, |w| w.write_all(bytes)).map_err(|e| e.to_string());
+    match format {
+        MeshFormat::Glb => {
+            let (json, bin) = gltf_parts(mesh, None)?;
+            let pad = |n: usize| n.div_ceil(4) * 4;
+            let length = 12 + 8 + pad(json.len()) + 8 + pad(bin.len());
+            let glb = gltf::binary::Glb {
+                header: gltf::binary::Header {
+                    magic: *b"glTF",
+                    version: 2,
+                    length: u32::try_from(length).map_err(|_| "the mesh is larger than a GLB file holds (4 GiB): use .gltf, .obj or .ply".to_owned())?,
+                },
+                json: std::borrow::Cow::Owned(json),
+                bin: Some(std::borrow::Cow::Owned(bin)),
+            };
+            let bytes = glb.to_vec().map_err(|e| e.to_string())?;
+            atomic(path, &bytes)
+        }
+        MeshFormat::Gltf => {
+            let bin_path = path.with_extension("bin");
+            let uri = bin_path.file_name().and_then(|n| n.to_str()).unwrap_or("sea.bin").to_owned();
+            let (json, bin) = gltf_parts(mesh, Some(uri))?;
+            atomic(&bin_path, &bin)?;
+            atomic(path, &json)
+        }
+        MeshFormat::Obj => crate::output::write_atomic(path, |w| {
+            writeln!(w, "# brine {}: the sea surface; vertex colour = (foam, whitecap, 0)", env!("CARGO_PKG_VERSION"))?;
+            for (k, p) in mesh.positions.iter().enumerate() {
+                writeln!(w, "v {} {} {} {} {} 0", p[0], p[1], p[2], mesh.foam[k], mesh.whitecap[k])?;
+            }
+            for n in &mesh.normals {
+                writeln!(w, "vn {} {} {}", n[0], n[1], n[2])?;
+            }
+            for t in mesh.indices.chunks_exact(3) {
+                let (a, b, c) = (t[0] + 1, t[1] + 1, t[2] + 1);
+                writeln!(w, "f {a}//{a} {b}//{b} {c}//{c}")?;
+            }
+            Ok(())
+        })
+        .map_err(|e| e.to_string()),
+        MeshFormat::Ply => crate::output::write_atomic(path, |w| {
+            write!(
+                w,
+                "ply\nformat binary_little_endian 1.0\ncomment brine {}: the sea surface, y up\nelement vertex {}\nproperty float x\nproperty float y\nproperty float z\nproperty float nx\nproperty float ny\nproperty float nz\nproperty float foam\nproperty float whitecap\nelement face {}\nproperty list uchar uint vertex_indices\nend_header\n",
+                env!("CARGO_PKG_VERSION"),
+                mesh.positions.len(),
+                mesh.indices.len() / 3
+            )?;
+            for k in 0..mesh.positions.len() {
+                for c in mesh.positions[k].iter().chain(&mesh.normals[k]).chain([&mesh.foam[k], &mesh.whitecap[k]]) {
+                    w.write_all(&c.to_le_bytes())?;
+                }
+            }
+            for t in mesh.indices.chunks_exact(3) {
+                w.write_all(&[3u8])?;
+                for i in t {
+                    w.write_all(&i.to_le_bytes())?;
+                }
+            }
+            Ok(())
+        })
+        .map_err(|e| e.to_string()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn grids_are_checked_and_huge_ones_refused_up_front() {
+        let g = MeshGrid { center: DVec2::ZERO, size_m: 10.0, spacing_m: 1.0 };
+        assert_eq!(g.count(), 11);
+        assert!(g.check().is_ok());
+        let huge = MeshGrid { spacing_m: 1e-3, size_m: 100.0, ..g };
+        let e = huge.check().unwrap_err();
+        assert!(e.contains("vertices"), "{e}");
+        // A billion vertices fit 32-bit indices but not this machine's memory.
+        let billion = MeshGrid { spacing_m: 1e-2, size_m: 316.0, ..g };
+        if let Some(avail) = super::super::available_memory_bytes()
+            && billion.memory_estimate() > avail / 10 * 8
+        {
+            let e = billion.check().unwrap_err();
+            assert!(e.contains("GiB"), "{e}");
+        }
+        assert!(MeshGrid { spacing_m: 0.0, ..g }.check().unwrap_err().contains("--spacing-m"));
+        assert!(MeshGrid { size_m: f64::NAN, ..g }.check().unwrap_err().contains("--size-m"));
+    }
+
+    #[test]
+    fn grid_triangles_face_up() {
+        let verts = (0..9).map(|k| ([(k % 3) as f32, 0.0, (k / 3) as f32], [0.0, 1.0, 0.0], 0.0, 0.0)).collect();
+        let m = grid_of(3, 3, verts);
+        assert_eq!(m.indices.len(), 2 * 2 * 6);
+        for t in m.indices.chunks_exact(3) {
+            let p = |i: u32| glam::Vec3::from_array(m.positions[i as usize]);
+            let n = (p(t[1]) - p(t[0])).cross(p(t[2]) - p(t[0]));
+            assert!(n.y > 0.0, "{t:?}");
+        }
+    }
+}

@@ -1,0 +1,163 @@
+//! The sea handed to other tools is the sea that is rendered: queries against the depth AOV,
+//! baked maps that tile and loop, meshes that the Khronos validator accepts.
+
+use brine_render::export::{
+    BakeOptions, MeshGrid, QueryPoint, UpAxis, bake_frame, grid_mesh, query_points, write_mesh,
+};
+use brine_render::{RenderOptions, Scene, World, render_world};
+use glam::{DVec2, DVec3};
+
+/// Hit points against the queried height: 1 mm, what a buoyancy user asks of the near field. The
+/// tracer stops within its tolerance of the crossing (the world's `TraceOptions`: 1 mm, or
+/// `10⁻⁵` of the distance beyond 100 m, [`TRACE_RELATIVE`]); the f32 depth AOV rounds the distance
+/// by `2⁻²⁴` of it (6 µm at 100 m).
+const ON_THE_SURFACE_M: f64 = 1e-3;
+
+/// The world's relative trace tolerance (`tolerance_relative` of its `TraceOptions`).
+const TRACE_RELATIVE: f64 = 1e-5;
+
+/// Near field: hits closer than this (m), where no wave is faded by the pixel footprint.
+const NEAR_FIELD_M: f64 = 40.0;
+
+/// The hits of `scene`'s camera rays closer than `near_m`, and the worst distance between a hit
+/// and the queried surface in units of `max(1 mm, 10⁻⁵ × distance)`.
+fn hits_and_queries(scene: &Scene, world: &World, near_m: f64) -> (usize, f64) {
+    let frame = render_world(scene, world, &RenderOptions::default(), &|| {}).unwrap();
+    let mut points = Vec::new();
+    let mut hits = Vec::new();
+    for y in 0..scene.camera.height {
+        for x in 0..scene.camera.width {
+            let a = frame.aovs[(y * scene.camera.width + x) as usize];
+            let depth = f64::from(a.depth);
+            if depth.is_finite() && depth < near_m {
+                let d = world.camera.direction(f64::from(x) + 0.5, f64::from(y) + 0.5);
+                let p: DVec3 = world.camera.position + depth * d;
+                points.push(QueryPoint { x: p.x, z: p.z, t: scene.sea.time_s });
+                hits.push(p);
+            }
+        }
+    }
+    let results = query_points(scene, world, &points).unwrap();
+    let worst = hits
+        .iter()
+        .zip(&results)
+        .map(|(p, r)| {
+            let depth = (*p - world.camera.position).length();
+            (p.y - r.height_m).abs() / ON_THE_SURFACE_M.max(TRACE_RELATIVE * depth)
+        })
+        .fold(0.0, f64::max);
+    (hits.len(), worst)
+}
+
+/// In the near field of the default 640×360 view, where the pixel footprint fades no wave, the
+/// depth AOV's hit points lie on the queried surface; and in the reference rendering (nothing
+/// faded) they do at any distance.
+#[test]
+fn queried_heights_are_the_rendered_surface() {
+    for surface in [brine_render::scene::SurfaceKind::Trochoids, brine_render::scene::SurfaceKind::Fft] {
+        let mut scene = Scene::default_scene();
+        scene.sea.surface = surface;
+        scene.sea.fft.resolution = 128;
+        scene.camera.width = 640;
+        scene.camera.height = 360;
+        scene.camera.spp = 1;
+        scene.phenomena.glare = false;
+        let world = World::new(&scene).unwrap();
+        let (n, worst) = hits_and_queries(&scene, &world, NEAR_FIELD_M);
+        eprintln!("{surface:?}: {n} near hits, worst {:.2e} m", worst * ON_THE_SURFACE_M);
+        assert!(n > 1000, "{surface:?}: {n} near hits");
+        assert!(worst < 1.0, "{surface:?}: a near hit {} m off the queried surface", worst * ON_THE_SURFACE_M);
+        scene.camera.width = 96;
+        scene.camera.height = 54;
+        let mut world = World::new(&scene).unwrap();
+        world.reference = true;
+        let (n, worst) = hits_and_queries(&scene, &world, 1000.0);
+        assert!(n > 1000, "{surface:?}: {n} hits");
+        assert!(worst < 1.0, "{surface:?}: a reference hit {worst} tolerances off the queried surface");
+    }
+}
+
+/// Texels on opposite edges of a bake continue each other: the maps are periodic with the tile.
+#[test]
+fn baked_maps_tile_and_loop() {
+    for surface in [brine_render::scene::SurfaceKind::Trochoids, brine_render::scene::SurfaceKind::Fft] {
+        let mut scene = Scene::default_scene();
+        scene.sea.surface = surface;
+        scene.sea.fft.resolution = 64;
+        let tile = 64.0;
+        let lattice = brine_waves_lattice(tile, Some(8.0));
+        let world = World::on_lattice(&scene, Some(&lattice)).unwrap();
+        let n = 32;
+        // The surface one tile away is the same surface.
+        let frame = world.ocean.at_time(1.25);
+        for u in [DVec2::new(3.0, 7.0), DVec2::new(-11.0, 40.0)] {
+            let a = frame.sample(u.x, u.y);
+            for shift in [DVec2::new(tile, 0.0), DVec2::new(0.0, -tile), DVec2::new(2.0 * tile, tile)] {
+                let b = frame.sample(u.x + shift.x, u.y + shift.y);
+                assert!((a.height - b.height).abs() < 1e-4, "{surface:?}: height");
+                assert!((a.normal - b.normal).length() < 1e-3, "{surface:?}: normal");
+                let d = frame.rest_displacement(u) - frame.rest_displacement(u + shift);
+                assert!(d.length() < 1e-4, "{surface:?}: displacement");
+            }
+        }
+        // And one loop later, the same maps.
+        let options = BakeOptions { size: n, tile_m: tile, up: UpAxis::Y };
+        let (a, b) = (bake_frame(&world, 1.25, &options), bake_frame(&world, 9.25, &options));
+        let worst = a
+            .maps
+            .displacement
+            .iter()
+            .zip(&b.maps.displacement)
+            .map(|(p, q)| (0..3).map(|k| (p[k] - q[k]).abs()).fold(0.0f32, f32::max))
+            .fold(0.0f32, f32::max);
+        assert!(worst < 1e-3, "{surface:?}: the loop differs by {worst} m");
+    }
+}
+
+fn brine_waves_lattice(tile: f64, period: Option<f64>) -> brine_waves::TileLattice {
+    brine_waves::TileLattice::new(tile, period).unwrap()
+}
+
+/// The meshes are valid glTF 2.0 under the Khronos validator (the npm `gltf-validator`, run when
+/// `BRINE_GLTF_VALIDATOR` names its script, as `.ci/run` does), and OBJ and PLY files parse.
+#[test]
+fn meshes_are_valid() {
+    let scene = Scene::default_scene();
+    let world = World::new(&scene).unwrap();
+    let grid = MeshGrid { center: DVec2::new(5.0, -3.0), size_m: 20.0, spacing_m: 0.5 };
+    let mesh = grid_mesh(&world, scene.sea.time_s, &grid);
+    assert_eq!(mesh.positions.len(), 41 * 41);
+    // Every vertex lies on the rendered surface.
+    for p in mesh.positions.iter().step_by(97) {
+        let h = world.sea.height(f64::from(p[0]), f64::from(p[2]));
+        assert!((h - f64::from(p[1])).abs() < 1e-5, "vertex off the surface by {}", h - f64::from(p[1]));
+    }
+    let dir = tempfile::tempdir().unwrap();
+    for name in ["sea.glb", "sea.gltf", "sea.obj", "sea.ply"] {
+        write_mesh(&dir.path().join(name), &mesh).unwrap();
+    }
+    let obj = std::fs::read_to_string(dir.path().join("sea.obj")).unwrap();
+    assert_eq!(obj.lines().filter(|l| l.starts_with("v ")).count(), mesh.positions.len());
+    assert_eq!(obj.lines().filter(|l| l.starts_with("f ")).count(), mesh.indices.len() / 3);
+    let ply = std::fs::read(dir.path().join("sea.ply")).unwrap();
+    let header_end = ply.windows(11).position(|w| w == b"end_header\n").unwrap() + 11;
+    assert_eq!(ply.len() - header_end, mesh.positions.len() * 32 + mesh.indices.len() / 3 * 13);
+    // No temporary is left beside the outputs.
+    assert!(
+        std::fs::read_dir(dir.path()).unwrap().all(|e| !e.unwrap().file_name().to_string_lossy().ends_with(".tmp"))
+    );
+    match std::env::var_os("BRINE_GLTF_VALIDATOR") {
+        Some(script) => {
+            for name in ["sea.glb", "sea.gltf"] {
+                let out = std::process::Command::new("node").arg(&script).arg(dir.path().join(name)).output().unwrap();
+                assert!(
+                    out.status.success(),
+                    "{name}: {}{}",
+                    String::from_utf8_lossy(&out.stdout),
+                    String::from_utf8_lossy(&out.stderr)
+                );
+            }
+        }
+        None => eprintln!("BRINE_GLTF_VALIDATOR is not set: the Khronos validator was not run (.ci/run runs it)"),
+    }
+}
