@@ -84,6 +84,8 @@ fn baked_maps_tile_and_loop() {
         let mut scene = Scene::default_scene();
         scene.sea.surface = surface;
         scene.sea.fft.resolution = 64;
+        // Enough wind for foam and whitecaps to tile.
+        scene.sea.wind_speed_m_s = 14.0;
         let tile = 64.0;
         let lattice = brine_waves_lattice(tile, Some(8.0));
         let world = World::on_lattice(&scene, Some(&lattice)).unwrap();
@@ -100,6 +102,21 @@ fn baked_maps_tile_and_loop() {
                 assert!(d.length() < 1e-4, "{surface:?}: displacement");
             }
         }
+        // The white water repeats too: the same cover one tile away, over a grid with foam on it.
+        let (mut white, mut worst) = (0.0, 0.0f64);
+        for i in 0..40 {
+            for j in 0..40 {
+                let u = DVec2::new(f64::from(i) * 1.6, f64::from(j) * 1.6);
+                let s = frame.sample(u.x, u.y);
+                let p = DVec3::new(u.x, s.height, u.y);
+                let a = world.cover_at_time(p, s.normal, 1.25, 0.0);
+                let b = world.cover_at_time(p + DVec3::new(tile, 0.0, -tile), s.normal, 1.25, 0.0);
+                white += a.foam + a.whitecap;
+                worst = worst.max((a.foam - b.foam).abs()).max((a.whitecap - b.whitecap).abs());
+            }
+        }
+        assert!(white > 1.0, "{surface:?}: no white water to compare ({white})");
+        assert!(worst < 1e-6, "{surface:?}: the white water differs by {worst} one tile away");
         // And one loop later, the same maps.
         let options = BakeOptions { size: n, tile_m: tile, up: UpAxis::Y };
         let (a, b) = (bake_frame(&world, 1.25, &options), bake_frame(&world, 9.25, &options));

@@ -92,7 +92,8 @@ pub use history::{FoamHistory, FoamHistoryParams, FoamSample, FoamState, MAX_HIS
 pub use medium::{ExtinctionEfficiency, SprayMedium, SprayParams};
 pub use memory::{
     FOAM_DENSITY, FoamMemory, FoamMemoryParams, MAX_MEMORY_INSTANTS, MONAHAN_1971_DECAY_TIME_S, MemorySample,
-    STREAK_STRETCH, STREAK_WINDS_M_S, WIND_DRIFT_FRACTION, WhiteWater, calibrate_threshold,
+    PeriodicPatches, STREAK_STRETCH, STREAK_WINDS_M_S, WIND_DRIFT_FRACTION, WhiteWater, calibrate_threshold,
+    periodic_patches,
 };
 pub use noise::FoamNoise;
 pub use radiance::{FRESH_FOAM_REFLECTANCE, KOEPKE_EFFICIENCY, KoepkeFoam, foam_radiance, surface_radiance};

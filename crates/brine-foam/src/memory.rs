@@ -74,6 +74,10 @@ pub struct FoamMemoryParams {
     pub edge_wavelength_m: f64,
     /// Seed of both noises.
     pub seed: u64,
+    /// A square tile (m, `(0, 10⁶]`) over which the foam must repeat (a baked, tileable map), or
+    /// `None`: the noises' wavelengths, stretch and direction are then moved to the nearest ones
+    /// that repeat over it ([`periodic_patches`]).
+    pub tile_m: Option<f64>,
 }
 
 impl Default for FoamMemoryParams {
@@ -88,6 +92,7 @@ impl Default for FoamMemoryParams {
             wind_direction_rad: 0.0,
             edge_wavelength_m: 1.0,
             seed: 1,
+            tile_m: None,
         }
     }
 }
@@ -110,6 +115,66 @@ impl FoamMemoryParams {
             ..Self::default()
         }
     }
+}
+
+/// The patch noise made periodic over a tile ([`periodic_patches`]): direction `(m, n)` (coprime
+/// integers), `g` first-octave cells across the wind per `√(m² + n²)` of tile, stretch
+/// `g/stretch_divisor`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PeriodicPatches {
+    /// Direction along the wind, x component (integer).
+    pub m: i64,
+    /// Direction along the wind, z component (integer).
+    pub n: i64,
+    /// Cells across the wind per `√(m² + n²)` of tile.
+    pub g: i64,
+    /// The stretch is `g/stretch_divisor`.
+    pub stretch_divisor: i64,
+}
+
+/// The patch noise's direction, wavelength and stretch nearest to `direction_rad`,
+/// `wavelength_m` and `stretch` for which the noise repeats over a square tile of side `tile_m`.
+///
+/// The noise is read at `(s, q) = ((d̂·x)/σ, d̂⊥·x)/λ₀`; it repeats over the tile when the tile's
+/// sides map to whole cells: `d̂ = (m, n)/√(m² + n²)`, `λ₀ = L/(g√(m² + n²))` and `σ = g/M` with
+/// integers `m, n, g, M`. The search minimises `|ln(λ₀′/λ₀)| + |ln(σ′/σ)| + |Δθ|` over
+/// `|m|, |n| ≤ min(L/λ₀, 256)`. Round patches (`σ = 1`) keep their stretch exactly; the
+/// wavelength and direction move by about `λ₀/(2L)` (relative, rad).
+///
+/// # Arguments
+/// - `tile_m`: `L` (m), `> 0`; `wavelength_m`: `λ₀` (m), `> 0`; `stretch`: `σ ≥ 1`;
+///   `direction_rad`: the wind's direction.
+///
+/// # Returns
+/// The [`PeriodicPatches`].
+pub fn periodic_patches(tile_m: f64, wavelength_m: f64, stretch: f64, direction_rad: f64) -> PeriodicPatches {
+    let cells = tile_m / wavelength_m;
+    let reach = cells.ceil().clamp(1.0, 256.0) as i64;
+    let mut best = (f64::INFINITY, PeriodicPatches { m: 1, n: 0, g: 1, stretch_divisor: 1 });
+    let gcd = |mut a: i64, mut b: i64| {
+        (a, b) = (a.abs(), b.abs());
+        while b != 0 {
+            (a, b) = (b, a % b);
+        }
+        a
+    };
+    for m in -reach..=reach {
+        for n in -reach..=reach {
+            if gcd(m, n) != 1 {
+                continue;
+            }
+            let r = ((m * m + n * n) as f64).sqrt();
+            let g = (cells / r).round().max(1.0);
+            let divisor = (g / stretch).round().max(1.0);
+            let mut turn = (n as f64).atan2(m as f64) - direction_rad;
+            turn = (turn + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI;
+            let cost = ((g * r) / cells).ln().abs() + ((g / divisor) / stretch).ln().abs() + turn.abs();
+            if cost < best.0 {
+                best = (cost, PeriodicPatches { m, n, g: g as i64, stretch_divisor: divisor as i64 });
+            }
+        }
+    }
+    best.1
 }
 
 /// One past instant of the memory ([`FoamMemory::compose`]).
@@ -223,8 +288,22 @@ impl FoamMemory {
                 range: "at least length_in_decay_times · decay_time_s / 63 s (at most 64 instants)",
             });
         }
-        let patches = FoamNoise::new(1.0, params.patch_wavelength_m, NOISE_OCTAVES, params.seed)?;
-        let edges = FoamNoise::new(1.0, params.edge_wavelength_m, NOISE_OCTAVES, params.seed ^ 0x5eed_ed9e)?;
+        let mut patches = FoamNoise::new(1.0, params.patch_wavelength_m, NOISE_OCTAVES, params.seed)?;
+        let mut edges = FoamNoise::new(1.0, params.edge_wavelength_m, NOISE_OCTAVES, params.seed ^ 0x5eed_ed9e)?;
+        let (mut along, mut stretch) =
+            ([params.wind_direction_rad.cos(), params.wind_direction_rad.sin()], params.streak_stretch);
+        if let Some(tile) = params.tile_m {
+            check("tile_m", tile, tile > 0.0 && tile <= 1e6, "(0, 1e6] m")?;
+            let p = periodic_patches(tile, params.patch_wavelength_m, params.streak_stretch, params.wind_direction_rad);
+            let r = (p.m * p.m + p.n * p.n) as f64;
+            along = [p.m as f64 / r.sqrt(), p.n as f64 / r.sqrt()];
+            stretch = p.g as f64 / p.stretch_divisor as f64;
+            patches = FoamNoise::new(1.0, tile / (p.g as f64 * r.sqrt()), NOISE_OCTAVES, params.seed)?
+                .periodic([p.m * p.stretch_divisor, -p.g * p.n], [p.n * p.stretch_divisor, p.g * p.m])?;
+            let cells = (tile / params.edge_wavelength_m).round().max(1.0);
+            edges = FoamNoise::new(1.0, tile / cells, NOISE_OCTAVES, params.seed ^ 0x5eed_ed9e)?
+                .periodic([cells as i64, 0], [0, cells as i64])?;
+        }
         let mut memory = Self {
             tau,
             tau_r: tau * efficiency / (1.0 - efficiency),
@@ -232,8 +311,8 @@ impl FoamMemory {
             length: step * (count - 1) as f64,
             count,
             drift: params.drift_m_s,
-            along: [params.wind_direction_rad.cos(), params.wind_direction_rad.sin()],
-            stretch: params.streak_stretch,
+            along,
+            stretch,
             patches,
             edges,
             edge_std: 1.0,
@@ -544,6 +623,43 @@ mod tests {
         let b = memory().compose([1.0, 2.0], 7.3, 0.1, 0.2, src);
         assert_eq!(a, b);
         assert!((0.0..=1.0).contains(&a.white) && a.white >= a.active && a.white >= a.residual);
+    }
+
+    /// On a tile, the foam repeats: the same survivals one tile away, and the patch variable still
+    /// uniform.
+    #[test]
+    fn tiled_foam_repeats_over_its_tile() {
+        for (u10, dir) in [(8.0, 0.3), (18.0, 1.1)] {
+            let tile = 150.0;
+            let params = FoamMemoryParams { tile_m: Some(tile), ..FoamMemoryParams::for_wind(u10, dir, 5) };
+            let mem = FoamMemory::new(&params, 0.4).unwrap();
+            let (mut a, mut b) = ([0.0; MAX_MEMORY_INSTANTS], [0.0; MAX_MEMORY_INSTANTS]);
+            for u in [[1.0, 2.0], [-40.0, 77.0]] {
+                for shift in [[tile, 0.0], [0.0, tile], [-tile, 2.0 * tile]] {
+                    let na = mem.survivals(u, 3.3, 0.0, &mut a);
+                    let nb = mem.survivals([u[0] + shift[0], u[1] + shift[1]], 3.3, 0.0, &mut b);
+                    assert_eq!(na, nb);
+                    assert!(a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-9));
+                    let (ea, eb) =
+                        (mem.edge_noise(u[0], u[1], 0.0).0, mem.edge_noise(u[0] + shift[0], u[1] + shift[1], 0.0).0);
+                    assert!((ea - eb).abs() < 1e-9);
+                }
+            }
+            // The stretch and direction stay near the wind's.
+            let p = periodic_patches(tile, params.patch_wavelength_m, params.streak_stretch, dir);
+            let turn = (p.n as f64).atan2(p.m as f64) - dir;
+            assert!(turn.abs() < 0.1, "{p:?}");
+            let s = p.g as f64 / p.stretch_divisor as f64;
+            assert!((s / params.streak_stretch).ln().abs() < 0.25, "{p:?}");
+            let in_range = points()
+                .filter(|u| {
+                    let m = mem.uniform(mem.patch_value(u[0], u[1], 0.0));
+                    m < 0.3
+                })
+                .count();
+            let share = in_range as f64 / points().count() as f64;
+            assert!((share - 0.3).abs() < 0.03, "{share}");
+        }
     }
 
     #[test]

@@ -32,6 +32,45 @@ pub struct FoamNoise {
     wavelength: f64,
     octaves: u32,
     weight_sum: f64,
+    /// The lattice of periods in first-octave cells, when the noise repeats ([`FoamNoise::periodic`]).
+    period: Option<CellPeriod>,
+}
+
+/// A lattice of periods `{k₁(a, b) + k₂(0, c)}` of the noise in first-octave cell indices (the
+/// Hermite normal form of two period vectors): cell `(i, j)` and its translates are hashed alike.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct CellPeriod {
+    a: i64,
+    b: i64,
+    c: i64,
+}
+
+impl CellPeriod {
+    /// The Hermite normal form of the lattice spanned by `p1`, `p2` (integer, independent).
+    fn new(p1: [i64; 2], p2: [i64; 2]) -> Option<Self> {
+        let det = p1[0] * p2[1] - p1[1] * p2[0];
+        if det == 0 {
+            return None;
+        }
+        // g = gcd(p1x, p2x) = s p1x + t p2x (extended Euclid); v = s p1 + t p2 = (g, b).
+        let (mut r0, mut r1, mut s0, mut s1, mut t0, mut t1) = (p1[0], p2[0], 1i64, 0i64, 0i64, 1i64);
+        while r1 != 0 {
+            let q = r0.div_euclid(r1);
+            (r0, r1) = (r1, r0 - q * r1);
+            (s0, s1) = (s1, s0 - q * s1);
+            (t0, t1) = (t1, t0 - q * t1);
+        }
+        let (g, s, t) = if r0 < 0 { (-r0, -s0, -t0) } else { (r0, s0, t0) };
+        let c = det.abs() / g;
+        Some(Self { a: g, b: (s * p1[1] + t * p2[1]).rem_euclid(c), c })
+    }
+
+    /// The canonical representative of cell `(i, j)` at octave `o` (periods scaled by `2ᵒ`).
+    fn reduce(&self, i: i64, j: i64, o: u32) -> (i64, i64) {
+        let (a, b, c) = (self.a << o, self.b << o, self.c << o);
+        let k = i.div_euclid(a);
+        (i - k * a, (j - k * b).rem_euclid(c))
+    }
 }
 
 impl FoamNoise {
@@ -65,7 +104,23 @@ impl FoamNoise {
             *p = table[i & 255];
         }
         let weight_sum = (0..octaves).map(|o| libm::ldexp(1.0, -(o as i32))).sum();
-        Ok(Self { perm, amplitude, wavelength: wavelength_m, octaves, weight_sum })
+        Ok(Self { perm, amplitude, wavelength: wavelength_m, octaves, weight_sum, period: None })
+    }
+
+    /// The same noise made periodic: its values repeat under the translations `p1`, `p2`, given
+    /// in first-octave cells (`λ₀` units of the coordinates `value` is called with). Every octave
+    /// repeats with them (its cells are `2ᵒ` times smaller). The distribution of the values is
+    /// unchanged (the same gradients, hashed on a torus).
+    ///
+    /// # Errors
+    /// [`FoamError::OutOfRange`] if `p1` and `p2` are parallel (no torus).
+    pub fn periodic(mut self, p1: [i64; 2], p2: [i64; 2]) -> Result<Self, FoamError> {
+        self.period = Some(CellPeriod::new(p1, p2).ok_or(FoamError::OutOfRange {
+            name: "noise_period",
+            value: 0.0,
+            range: "two independent integer period vectors",
+        })?);
+        Ok(self)
     }
 
     /// Noise amplitude `a`.
@@ -99,7 +154,8 @@ impl FoamNoise {
             }
             // Offset each octave so their lattices do not line up at the origin.
             let shift = 17.31 * f64::from(o);
-            sum += fade * libm::ldexp(1.0, -(o as i32)) * self.gradient_noise(x / lambda + shift, z / lambda - shift);
+            sum +=
+                fade * libm::ldexp(1.0, -(o as i32)) * self.gradient_noise(x / lambda + shift, z / lambda - shift, o);
         }
         (1.0 + self.amplitude * sum / self.weight_sum).clamp(1.0 - self.amplitude, 1.0 + self.amplitude)
     }
@@ -130,17 +186,23 @@ impl FoamNoise {
     }
 
     /// Perlin gradient noise in `[−1, 1]` at lattice coordinates `(x, z)`.
-    fn gradient_noise(&self, x: f64, z: f64) -> f64 {
+    fn gradient_noise(&self, x: f64, z: f64, octave: u32) -> f64 {
         let (xf, zf) = (lattice_floor(x), lattice_floor(z));
-        let (xi, zi) = ((xf as i64 & 255) as usize, (zf as i64 & 255) as usize);
         let (dx, dz) = (x - xf, z - zf);
         let p = &self.perm;
-        let h = |i: usize, j: usize| p[p[i] as usize + j];
+        let (ci, cj) = (xf as i64, zf as i64);
+        let h = |di: i64, dj: i64| {
+            let (i, j) = match &self.period {
+                Some(per) => per.reduce(ci + di, cj + dj, octave),
+                None => (ci + di, cj + dj),
+            };
+            p[p[(i & 255) as usize] as usize + (j & 255) as usize]
+        };
         let (u, v) = (fade(dx), fade(dz));
-        let n00 = grad(h(xi, zi), dx, dz);
-        let n10 = grad(h(xi + 1, zi), dx - 1.0, dz);
-        let n01 = grad(h(xi, zi + 1), dx, dz - 1.0);
-        let n11 = grad(h(xi + 1, zi + 1), dx - 1.0, dz - 1.0);
+        let n00 = grad(h(0, 0), dx, dz);
+        let n10 = grad(h(1, 0), dx - 1.0, dz);
+        let n01 = grad(h(0, 1), dx, dz - 1.0);
+        let n11 = grad(h(1, 1), dx - 1.0, dz - 1.0);
         let a = n00 + u * (n10 - n00);
         let b = n01 + u * (n11 - n01);
         ((a + v * (b - a)) / PERLIN_2D_BOUND).clamp(-1.0, 1.0)
@@ -225,6 +287,26 @@ mod tests {
         assert!((mean - 1.0).abs() < MEAN_TOL, "mean {mean}");
         // A footprint longer than every octave removes the noise entirely.
         assert!((n.value(3.3, 4.4, 100.0) - 1.0).abs() < ROUNDING);
+    }
+
+    #[test]
+    fn periodic_noise_repeats_under_its_periods() {
+        let n = FoamNoise::new(0.8, 2.0, 5, 3).unwrap().periodic([7, -3], [2, 5]).unwrap();
+        // The periods in metres: λ₀ = 2 m per cell.
+        let (p1, p2) = ((14.0, -6.0), (4.0, 10.0));
+        for (x, z) in [(0.3, 0.7), (-13.1, 4.4), (101.0, -57.5)] {
+            let v = n.value(x, z, 0.0);
+            for (k1, k2) in [(1.0, 0.0), (0.0, 1.0), (-2.0, 3.0)] {
+                let w = n.value(x + k1 * p1.0 + k2 * p2.0, z + k1 * p1.1 + k2 * p2.1, 0.0);
+                assert!((v - w).abs() < 1e-9, "{v} {w}");
+            }
+        }
+        assert!(FoamNoise::new(0.8, 2.0, 5, 3).unwrap().periodic([2, 4], [1, 2]).is_err());
+        // The canonical representatives of the lattice points are the origin.
+        let per = CellPeriod::new([7, -3], [2, 5]).unwrap();
+        assert_eq!(per.a * per.c, 41);
+        assert_eq!(per.reduce(9, 2, 0), (0, 0));
+        assert_eq!(per.reduce(14, -6, 1), (0, 0));
     }
 
     #[test]

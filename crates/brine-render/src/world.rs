@@ -851,8 +851,10 @@ impl World {
             let s_b = breaking_footprint_of(s)?;
             let forward = brine_whitecap::forward_face_offset(s_b, wind_angle);
             // The edge noise has the scale of the waves just shorter than the breaking ones.
+            // On a tile's lattice the foam's noises repeat over the tile too.
             let params = FoamMemoryParams {
                 edge_wavelength_m: (std::f64::consts::PI * s_b).clamp(0.5, 20.0),
+                tile_m: lattice.map(TileLattice::tile_m),
                 ..FoamMemoryParams::for_wind(s.wind_speed_m_s, wind_angle, s.seed)
             };
             let memory = FoamMemory::new(&params, KoepkeFoam::default().efficiency()).map_err(|e| model(&e))?;
