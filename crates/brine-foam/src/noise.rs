@@ -185,24 +185,26 @@ impl FoamNoise {
         kept / total
     }
 
-    /// Perlin gradient noise in `[−1, 1]` at lattice coordinates `(x, z)`.
+    /// Perlin gradient noise in `[−1, 1]` at lattice coordinates `(x, z)` of octave `octave`.
+    #[inline]
     fn gradient_noise(&self, x: f64, z: f64, octave: u32) -> f64 {
         let (xf, zf) = (lattice_floor(x), lattice_floor(z));
         let (dx, dz) = (x - xf, z - zf);
         let p = &self.perm;
         let (ci, cj) = (xf as i64, zf as i64);
-        let h = |di: i64, dj: i64| {
-            let (i, j) = match &self.period {
-                Some(per) => per.reduce(ci + di, cj + dj, octave),
-                None => (ci + di, cj + dj),
-            };
-            p[p[(i & 255) as usize] as usize + (j & 255) as usize]
+        let hash = |i: i64, j: i64| p[p[(i & 255) as usize] as usize + (j & 255) as usize];
+        let [h00, h10, h01, h11] = match &self.period {
+            None => [hash(ci, cj), hash(ci + 1, cj), hash(ci, cj + 1), hash(ci + 1, cj + 1)],
+            Some(per) => [(0, 0), (1, 0), (0, 1), (1, 1)].map(|(di, dj)| {
+                let (i, j) = per.reduce(ci + di, cj + dj, octave);
+                hash(i, j)
+            }),
         };
         let (u, v) = (fade(dx), fade(dz));
-        let n00 = grad(h(0, 0), dx, dz);
-        let n10 = grad(h(1, 0), dx - 1.0, dz);
-        let n01 = grad(h(0, 1), dx, dz - 1.0);
-        let n11 = grad(h(1, 1), dx - 1.0, dz - 1.0);
+        let n00 = grad(h00, dx, dz);
+        let n10 = grad(h10, dx - 1.0, dz);
+        let n01 = grad(h01, dx, dz - 1.0);
+        let n11 = grad(h11, dx - 1.0, dz - 1.0);
         let a = n00 + u * (n10 - n00);
         let b = n01 + u * (n11 - n01);
         ((a + v * (b - a)) / PERLIN_2D_BOUND).clamp(-1.0, 1.0)

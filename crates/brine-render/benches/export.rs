@@ -61,5 +61,8 @@ fn main() {
     println!("| bake 1024² (6 maps, no file) | {bake:.2} s | 1 s | {:.2} |", bake / 1.0);
     println!("| mesh 1000² vertices (no file) | {mesh:.2} s | 2 s | {:.2} |", mesh / 2.0);
     println!("| query 10⁶ points | {query:.2} s ({:.2} M points/s) | 1 M points/s | {:.2} |", 1.0 / query, query);
-    println!("| query 10⁶ points, surface only (no white water) | {surface:.2} s ({:.2} M points/s) | — | — |", 1.0 / surface);
+    println!(
+        "| query 10⁶ points, surface only (no white water) | {surface:.2} s ({:.2} M points/s) | — | — |",
+        1.0 / surface
+    );
 }

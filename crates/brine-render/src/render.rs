@@ -5,11 +5,9 @@ use brine_optics::{
     SlopeVariance, SunDisc, WATER_IOR, fresnel_dielectric, reflect, reflected_disc_radiance, reflected_sun_radiance,
     refract,
 };
-use brine_trace::{Aabb, LipschitzSum, Ray, TraceOptions, TraceStats, trace, trace_tile};
 use brine_trace::{Hit, Method};
-use brine_waves::{GerstnerField, SineField, TracedTrochoids};
-
-use brine_waves::FrameSurface;
+use brine_trace::{Lowered, Ray, TraceOptions, TraceStats, trace};
+use brine_waves::TracedSea;
 use brine_whitecap::WHITECAP_REFLECTANCE;
 use glam::DVec3;
 use rand::{Rng, SeedableRng};
@@ -504,42 +502,11 @@ fn sky_radiance(world: &World, d: DVec3) -> DVec3 {
     world.sky.background_rgb(d)
 }
 
-/// `F(p + (0, depth, 0))`: a component sum moved down by `depth` (the sea floor at `y = −depth + h`).
-struct Lowered<'a, S> {
-    inner: &'a S,
-    depth: f64,
-}
-
-impl<S: LipschitzSum> LipschitzSum for Lowered<'_, S> {
-    fn component_count(&self) -> usize {
-        self.inner.component_count()
-    }
-    fn component(&self, i: usize, p: DVec3) -> f64 {
-        self.inner.component(i, p + DVec3::Y * self.depth)
-    }
-    fn component_lipschitz(&self, i: usize) -> f64 {
-        self.inner.component_lipschitz(i)
-    }
-    fn component_min(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
-        self.inner.component_min(i, a + DVec3::Y * self.depth, b + DVec3::Y * self.depth)
-    }
-    fn component_directional_lipschitz(&self, i: usize, d: DVec3) -> f64 {
-        self.inner.component_directional_lipschitz(i, d)
-    }
-    fn value(&self, p: DVec3) -> f64 {
-        self.inner.value(p + DVec3::Y * self.depth)
-    }
-    fn zero_set_bounds(&self) -> Aabb {
-        let b = self.inner.zero_set_bounds();
-        Aabb { min: b.min - DVec3::Y * self.depth, max: b.max - DVec3::Y * self.depth }
-    }
-}
-
 /// Where a ray through the water from `p` along the unit `d` meets the floor: `(distance, point)`.
 fn floor_hit(world: &World, p: DVec3, d: DVec3, cx: &mut Counters) -> Option<(f64, DVec3)> {
     let floor = world.floor.as_ref()?;
     let field = floor.shape.at_time(0.0);
-    let lowered = Lowered { inner: &field, depth: floor.depth };
+    let lowered = Lowered::new(&field, floor.depth);
     let ray = Ray::new(p, d).ok()?;
     let options = TraceOptions { t_max: 50.0 * floor.depth + 100.0, ..world.trace };
     trace(&lowered, &ray, &options, &mut cx.secondary).map(|h| (h.t, h.point))
@@ -783,113 +750,59 @@ fn underwater_radiance(
 /// Smallest `|d_y|` of the pixel footprint's stretch `1/√|d_y|` on the sea (the FFT fading's).
 const MIN_FOOTPRINT_GRAZING: f64 = 0.05;
 
-/// The sea surface of a frame, ready to trace.
-pub(crate) enum SeaField<'a> {
-    /// Trochoid sum by the tiered tracer with footprint fading.
-    Traced(&'a TracedTrochoids),
-    /// Gerstner sum by directional sphere tracing.
-    Gerstner(GerstnerField<'a>),
-    /// Sine waves by directional sphere tracing.
-    Sine(SineField<'a>),
-    /// FFT cascades by the tiered tracer (one tier per cascade) with footprint fading.
-    Fft(&'a brine_waves::FftFrame),
+/// The sea of a frame ready to trace (brine-waves `TracedSea`), with the renderer's choices of
+/// options: primary rays by the tiered method with the waves fading with the pixel footprint,
+/// secondary rays with every wave.
+pub(crate) struct SeaField<'a> {
+    sea: TracedSea<'a>,
 }
 
 impl<'a> SeaField<'a> {
     fn new(world: &'a World) -> Self {
-        match world.sea.surface() {
-            FrameSurface::Trochoids(t) => SeaField::Traced(t),
-            FrameSurface::Gerstner(g) => SeaField::Gerstner(g.at_time(world.time)),
-            FrameSurface::Sine(s) => SeaField::Sine(s.at_time(world.time)),
-            FrameSurface::Fft(f) => SeaField::Fft(f),
-        }
+        Self { sea: world.sea.traced() }
     }
 
-    /// Traces a primary (`footprint = true`: waves fade with the pixel footprint) or secondary ray.
-    fn trace(&self, ray: &Ray, footprint: bool, world: &World, stats: &mut TraceStats) -> Option<Hit> {
-        match self {
-            SeaField::Traced(t) => {
-                let angle = if footprint { world.filtering_angle() } else { 0.0 };
-                let options = TraceOptions { method: Method::Tiered, footprint_angle: angle, ..world.trace };
-                trace(*t, ray, &options, stats)
-            }
-            // Gerstner and sine seas fade their waves with the pixel footprint as the others do
-            // (primary rays only); secondary rays keep every wave.
-            SeaField::Gerstner(f) if footprint => trace(f, ray, &Self::faded_options(world), stats),
-            SeaField::Sine(f) if footprint => trace(f, ray, &Self::faded_options(world), stats),
-            SeaField::Gerstner(f) => trace(f, ray, &world.trace, stats),
-            SeaField::Sine(f) => trace(f, ray, &world.trace, stats),
-            SeaField::Fft(f) => {
-                let angle = if footprint { world.filtering_angle() } else { 0.0 };
-                let options = TraceOptions { method: Method::Tiered, footprint_angle: angle, ..world.trace };
-                trace(*f, ray, &options, stats)
-            }
-        }
-    }
-
-    /// The options of a primary ray with footprint fading: the tiered method, the pixel's angle.
-    fn faded_options(world: &World) -> TraceOptions {
+    /// The options of a primary ray: the tiered method, the waves faded by the pixel's angle.
+    fn primary_options(world: &World) -> TraceOptions {
         TraceOptions { method: Method::Tiered, footprint_angle: world.filtering_angle(), ..world.trace }
     }
 
+    /// Traces a primary ray (the waves fade with the pixel footprint).
+    #[cfg(test)]
+    fn trace_primary(&self, ray: &Ray, world: &World, stats: &mut TraceStats) -> Option<Hit> {
+        self.sea.trace(ray, &Self::primary_options(world), stats)
+    }
+
+    /// Traces a secondary ray (every wave).
+    #[cfg(test)]
+    fn trace_secondary(&self, ray: &Ray, world: &World, stats: &mut TraceStats) -> Option<Hit> {
+        self.sea.trace(ray, &world.trace, stats)
+    }
+
     /// Traces the primary rays of a tile (`width` per row) from the camera, with footprint fading;
-    /// the trochoid and FFT seas share cones among the rays (image coherence, `trace_tile`), the
-    /// others trace ray by ray.
+    /// the trochoid and FFT seas share cones among the rays (image coherence), the others trace
+    /// ray by ray.
     fn trace_tile(&self, world: &World, tile: &mut TileRays, width: usize, stats: &mut TraceStats) {
         let n = tile.directions.len();
         tile.hits.clear();
         tile.hits.resize(n, None);
         tile.costs.clear();
         tile.costs.resize(n, 0.0);
+        let options = Self::primary_options(world);
         let origin = world.camera.position;
-        let options = TraceOptions { method: Method::Tiered, footprint_angle: world.filtering_angle(), ..world.trace };
-        let (dirs, hits, costs) = (&tile.directions, &mut tile.hits[..], Some(&mut tile.costs[..]));
-        match self {
-            SeaField::Traced(t) => trace_tile(*t, origin, dirs, width, &options, stats, hits, costs),
-            SeaField::Fft(f) => trace_tile(*f, origin, dirs, width, &options, stats, hits, costs),
-            _ => {
-                for (i, d) in dirs.iter().enumerate() {
-                    let ray = Ray::new(origin, *d).expect("camera rays are finite and normalised");
-                    let before = stats.evaluations;
-                    hits[i] = self.trace(&ray, true, world, stats);
-                    tile.costs[i] = (stats.evaluations - before) as f64;
-                }
-            }
-        }
+        self.sea.trace_tile(origin, &tile.directions, width, &options, stats, &mut tile.hits, &mut tile.costs);
     }
 
     /// Traces a secondary ray up to `t_max` metres.
     fn trace_within(&self, ray: &Ray, t_max: f64, world: &World, stats: &mut TraceStats) -> Option<Hit> {
-        let options = TraceOptions { t_max, ..world.trace };
-        match self {
-            SeaField::Traced(t) => trace(*t, ray, &TraceOptions { method: Method::Tiered, ..options }, stats),
-            SeaField::Gerstner(f) => trace(f, ray, &options, stats),
-            SeaField::Sine(f) => trace(f, ray, &options, stats),
-            SeaField::Fft(f) => trace(*f, ray, &TraceOptions { method: Method::Tiered, ..options }, stats),
-        }
+        self.sea.trace(ray, &TraceOptions { t_max, ..world.trace }, stats)
     }
 
     /// Upward unit normal of the surface as drawn at `p`, hit `t` metres along `d` (the faded
     /// waves of a primary ray are left out; `t = 0` keeps every wave).
     fn normal(&self, p: DVec3, d: DVec3, t: f64, world: &World) -> DVec3 {
-        let g = match self {
-            SeaField::Traced(s) => {
-                let angle = if t > 0.0 { world.filtering_angle() } else { 0.0 };
-                s.faded_gradient(p.x, p.z, d, angle, t)
-            }
-            SeaField::Gerstner(f) => {
-                let angle = if t > 0.0 { world.filtering_angle() } else { 0.0 };
-                f.faded_gradient(p.x, p.z, d, angle, t)
-            }
-            SeaField::Sine(f) => {
-                let angle = if t > 0.0 { world.filtering_angle() } else { 0.0 };
-                f.faded_gradient(p.x, p.z, d, angle, t)
-            }
-            SeaField::Fft(f) => {
-                let angle = if t > 0.0 { world.filtering_angle() } else { 0.0 };
-                f.faded_gradient(p.x, p.z, d, angle, t)
-            }
-        };
+        let angle = if t > 0.0 { world.filtering_angle() } else { 0.0 };
+        let g = self.sea.faded_gradient(p.x, p.z, d, angle, t);
         DVec3::new(-g.x, 1.0, -g.y).normalize()
     }
 
@@ -903,22 +816,13 @@ impl<'a> SeaField<'a> {
         let angle = world.filtering_angle();
         // The pixel's side on the sea, the geometric mean of its two axes (as the fading's).
         let footprint = angle * t / d.y.abs().max(MIN_FOOTPRINT_GRAZING).sqrt();
-        let (mut g, mut c) = match self {
-            SeaField::Traced(s) => s.faded_gradient_and_covariance(p.x, p.z, d, angle, t),
-            SeaField::Gerstner(f) => (f.faded_gradient(p.x, p.z, d, angle, t), f.faded_slope_covariance(d, angle, t)),
-            SeaField::Sine(f) => {
-                // Chen et al.'s bump-mapped waves, faded as the geometric ones.
-                let (gd, cd) = f.faded_detail(p.x, p.z, d, angle, t);
-                (f.faded_gradient(p.x, p.z, d, angle, t) + gd, f.faded_slope_covariance(d, angle, t) + cd)
-            }
+        let (mut g, mut c) = match (&self.sea, &world.fft_slopes) {
             // The FFT cascades read through the footprint (LEAN mapping) rather than faded whole.
-            SeaField::Fft(f) => match &world.fft_slopes {
-                Some(lean) => {
-                    let l = lean.filtered(p.x, p.z, footprint / brine_waves::BOX_WIDTH_PER_SIGMA);
-                    (l.gradient, l.covariance)
-                }
-                None => (f.faded_gradient(p.x, p.z, d, angle, t), f.faded_slope_covariance(d, angle, t)),
-            },
+            (TracedSea::Fft(_), Some(lean)) => {
+                let l = lean.filtered(p.x, p.z, footprint / brine_waves::BOX_WIDTH_PER_SIGMA);
+                (l.gradient, l.covariance)
+            }
+            _ => self.sea.faded_gradient_and_covariance(p.x, p.z, d, angle, t),
         };
         if let Some(detail) = &world.detail {
             let f = detail.filtered(p.x, p.z, footprint / brine_waves::BOX_WIDTH_PER_SIGMA);
@@ -1002,7 +906,7 @@ mod tests {
             field.trace_tile(&world, &mut tile, TILE, &mut TraceStats::default());
             for (d, tiled) in tile.directions.iter().zip(&tile.hits) {
                 let ray = Ray::new(world.camera.position, *d).expect("unit direction");
-                let alone = field.trace(&ray, true, &world, &mut TraceStats::default());
+                let alone = field.trace_primary(&ray, &world, &mut TraceStats::default());
                 match (tiled, alone) {
                     (Some(a), Some(b)) => {
                         let tol = HITS_AGREE_TOLERANCES * world.trace.tolerance_at(b.t);
@@ -1039,13 +943,13 @@ mod tests {
                 for x in (0..160).step_by(8) {
                     let d = world.camera.direction(f64::from(x) + 0.5, f64::from(y) + 0.5);
                     let ray = Ray::new(world.camera.position, d).expect("unit direction");
-                    if let Some(h) = field.trace(&ray, true, &world, &mut faded) {
+                    if let Some(h) = field.trace_primary(&ray, &world, &mut faded) {
                         let v = field.hit_geometry(h.point, d, h.t, &world).1;
                         lost += v.sigma_x2() + v.sigma_y2()
                             - world.variance_unresolved.sigma_x2()
                             - world.variance_unresolved.sigma_y2();
                     }
-                    field.trace(&ray, false, &world, &mut whole);
+                    field.trace_secondary(&ray, &world, &mut whole);
                 }
             }
             assert!(
@@ -1081,7 +985,7 @@ mod tests {
             for x in (0..320).step_by(8) {
                 let d = with.camera.direction(f64::from(x) + 0.5, f64::from(y) + 0.5);
                 let ray = Ray::new(with.camera.position, d).expect("unit direction");
-                let Some(h) = field.trace(&ray, true, &with, &mut TraceStats::default()) else { continue };
+                let Some(h) = field.trace_primary(&ray, &with, &mut TraceStats::default()) else { continue };
                 let slope = |n: DVec3| DVec2::new(-n.x / n.y, -n.z / n.y);
                 let (n1, v1) = field.hit_geometry(h.point, d, h.t, &with);
                 let (n0, v0) = field.hit_geometry(h.point, d, h.t, &without);

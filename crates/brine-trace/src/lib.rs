@@ -104,6 +104,7 @@ mod bounds;
 mod coherence;
 mod darles;
 mod footprint;
+mod lowered;
 mod options;
 mod ray;
 mod refine;
@@ -122,6 +123,7 @@ pub use footprint::{
     FADE_CURVATURE, FADE_SLOPE, FadedComponents, component_weights, faded_components, footprint_weight,
     footprint_weight_slope,
 };
+pub use lowered::Lowered;
 pub use options::{Hit, Method, Step, StepKind, TraceOptions, TraceOptionsError};
 pub use ray::{Ray, RayError};
 pub use refine::{bisect_crossing, refine_crossing};
