@@ -11,6 +11,29 @@ use glam::DVec3;
 use crate::error::{OpticsError, check};
 use crate::{WATER_IOR, fresnel_dielectric};
 
+/// Roughness length of the sea for the wind profile of [`u12_5_from_u10`] (m): a typical open-sea
+/// Charnock value at moderate wind.
+pub const SEA_ROUGHNESS_LENGTH_M: f64 = 2e-4;
+
+/// The wind 12.5 m above the sea from the wind `U₁₀` at 10 m, by the neutral logarithmic profile
+/// `U(z) ∝ ln(z/z₀)`: `U₁₂.₅ = U₁₀ ln(12.5/z₀)/ln(10/z₀)`, a factor 1.0206 for
+/// `z₀ =` [`SEA_ROUGHNESS_LENGTH_M`].
+///
+/// # Arguments
+/// - `u10`: wind speed at 10 m (m s⁻¹), `[0, ∞)`.
+///
+/// # Returns
+/// `U₁₂.₅` (m s⁻¹).
+///
+/// # References
+/// Cox & Munk 1954 (their anemometer at 12.5 m); the neutral log profile of the surface layer
+/// (e.g. Stull 1988, *An Introduction to Boundary Layer Meteorology*, §9.7).
+pub fn u12_5_from_u10(u10: f64) -> f64 {
+    debug_assert!(u10 >= 0.0);
+    let z0 = SEA_ROUGHNESS_LENGTH_M;
+    u10 * (12.5 / z0).ln() / (10.0 / z0).ln()
+}
+
 /// Smallest slope variance used, `2×10⁻⁵` (Bruneton et al. 2010 clamp; keeps the lobe finite).
 pub const MIN_SLOPE_VARIANCE: f64 = 2e-5;
 
@@ -45,6 +68,23 @@ impl SlopeVariance {
 
     pub(crate) fn clamped(sigma_x2: f64, sigma_y2: f64) -> Self {
         Self { sigma_x2: sigma_x2.max(MIN_SLOPE_VARIANCE), sigma_y2: sigma_y2.max(MIN_SLOPE_VARIANCE) }
+    }
+
+    /// [`SlopeVariance::cox_munk_clean`] for the wind `U₁₀` 10 m above the sea (the height the
+    /// scenes and the wave spectra use), carried to Cox & Munk's 12.5 m by [`u12_5_from_u10`]
+    /// and capped at 60 m s⁻¹.
+    ///
+    /// # Arguments
+    /// - `u10`: wind speed at 10 m (m s⁻¹), `[0, 60]`.
+    ///
+    /// # Errors
+    /// [`OpticsError::OutOfRange`] outside `[0, 60]`.
+    ///
+    /// # References
+    /// Cox & Munk 1954 (as [`SlopeVariance::cox_munk_clean`]).
+    pub fn cox_munk_clean_from_u10(u10: f64) -> Result<Self, OpticsError> {
+        check("u10_m_s", u10, (0.0..=60.0).contains(&u10), "[0, 60] m/s")?;
+        Self::cox_munk_clean(u12_5_from_u10(u10).min(60.0))
     }
 
     /// Cox & Munk (1954) slope variances of a clean sea for the wind speed `U₁₂.₅` 12.5 m above
@@ -499,6 +539,16 @@ pub fn mean_fresnel(cos_theta_v: f64, sigma_v: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The profile's factor `ln(62 500)/ln(50 000)` = 1.020 62.
+    #[test]
+    fn the_wind_profile_raises_u10_by_two_percent() {
+        assert!((u12_5_from_u10(10.0) - 10.206_2).abs() < 1e-3);
+        let a = SlopeVariance::cox_munk_clean_from_u10(7.0).unwrap();
+        let b = SlopeVariance::cox_munk_clean(7.0 * 1.020_62).unwrap();
+        assert!((a.sigma_x2() - b.sigma_x2()).abs() < 1e-6);
+        assert!(SlopeVariance::cox_munk_clean_from_u10(61.0).is_err());
+    }
     use approx::assert_relative_eq;
 
     /// Oracle values of the equation sheet are given to 5 significant digits.

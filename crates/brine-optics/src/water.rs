@@ -26,6 +26,29 @@ pub struct WaterBody {
     chl: Chlorophyll,
 }
 
+impl std::str::FromStr for WaterBody {
+    type Err = OpticsError;
+
+    /// A water body by name: a Jerlov type (`I`, `IA`, `IB`, `II`, `III`, `1C`, `3C`, `5C`, `7C`,
+    /// `9C`, case-insensitive, see [`JerlovType`]) or one of Darles et al.'s classes (`clear`,
+    /// `turbid`, `very-turbid`, see [`DarlesWater`]).
+    ///
+    /// # Errors
+    /// [`OpticsError::UnknownName`] listing the accepted names.
+    fn from_str(name: &str) -> Result<Self, OpticsError> {
+        Ok(match name.trim().to_ascii_lowercase().as_str() {
+            "clear" => Self::darles(DarlesWater::Clear),
+            "turbid" => Self::darles(DarlesWater::Turbid),
+            "very-turbid" => Self::darles(DarlesWater::VeryTurbid),
+            _ => Self::jerlov(name.parse::<JerlovType>().map_err(|_| OpticsError::UnknownName {
+                name: "water_type",
+                value: name.to_owned(),
+                expected: "I, IA, IB, II, III, 1C, 3C, 5C, 7C, 9C, clear, turbid or very-turbid",
+            })?),
+        })
+    }
+}
+
 impl WaterBody {
     /// Case-1 water of chlorophyll `c_mg_m3` (mg m⁻³, `[0, 100]`).
     ///
@@ -201,5 +224,19 @@ impl WaterRgb {
             lambertian_floor_radiance(albedo.y, e_d_below.y, self.k_d.y, depth_m),
             lambertian_floor_radiance(albedo.z, e_d_below.z, self.k_d.z, depth_m),
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn water_bodies_parse_by_name() {
+        assert_eq!("ib".parse::<WaterBody>().unwrap(), WaterBody::jerlov(JerlovType::IB));
+        assert_eq!("Very-Turbid".parse::<WaterBody>().unwrap(), WaterBody::darles(DarlesWater::VeryTurbid));
+        assert_eq!("3C".parse::<WaterBody>().unwrap(), WaterBody::jerlov(JerlovType::Coastal3));
+        let e = "muddy".parse::<WaterBody>().unwrap_err().to_string();
+        assert!(e.contains("water_type") && e.contains("very-turbid"), "{e}");
     }
 }

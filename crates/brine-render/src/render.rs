@@ -7,7 +7,7 @@ use brine_optics::{
 };
 use brine_trace::{Hit, Method};
 use brine_trace::{Lowered, Ray, TraceOptions, TraceStats, trace};
-use brine_waves::TracedSea;
+use brine_waves::{RayTile, TracedSea};
 use brine_whitecap::WHITECAP_REFLECTANCE;
 use glam::DVec3;
 use rand::{Rng, SeedableRng};
@@ -789,8 +789,8 @@ impl<'a> SeaField<'a> {
         tile.costs.clear();
         tile.costs.resize(n, 0.0);
         let options = Self::primary_options(world);
-        let origin = world.camera.position;
-        self.sea.trace_tile(origin, &tile.directions, width, &options, stats, &mut tile.hits, &mut tile.costs);
+        let rays = RayTile { origin: world.camera.position, directions: &tile.directions, width };
+        self.sea.trace_tile(&rays, &options, stats, &mut tile.hits, &mut tile.costs);
     }
 
     /// Traces a secondary ray up to `t_max` metres.

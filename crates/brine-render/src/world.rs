@@ -6,8 +6,8 @@ use brine_foam::{
     KoepkeFoam, SprayMedium, SprayParams, SurfaceStatistics, WhiteWater, WhitecapLaw,
 };
 use brine_optics::{
-    DarlesWater, DipoleMaterial, JerlovType, RgbBands, RoughReflectance, SlopeVariance, SunDisc, WATER_IOR, WaterBody,
-    WaterRgb, fresnel_dielectric, hemispherical_fresnel_reflectance,
+    DipoleMaterial, RgbBands, RoughReflectance, SlopeVariance, SunDisc, WATER_IOR, WaterBody, WaterRgb,
+    fresnel_dielectric, hemispherical_fresnel_reflectance,
 };
 use brine_sky::{CloudParams, DaylightModel, FilteredSky, MoonParams, Sky, SkyParams};
 use brine_trace::{Method, TraceOptions};
@@ -32,12 +32,30 @@ use crate::scene::{
     SwellConfig,
 };
 
-/// Why a scene could not be turned into models.
+/// Why a scene could not be turned into models: the model that refused, with its message.
 #[derive(Debug, thiserror::Error)]
 pub enum WorldError {
-    /// A model rejected a parameter.
+    /// The waves (spectra, fit, surfaces, FFT sea).
+    #[error(transparent)]
+    Waves(#[from] brine_waves::WaveError),
+    /// Foam, spray and the foam memory.
+    #[error(transparent)]
+    Foam(#[from] brine_foam::FoamError),
+    /// Whitecaps and white water.
+    #[error(transparent)]
+    Whitecap(#[from] brine_whitecap::WhitecapError),
+    /// Water optics, the BRDF and the crest dipole.
+    #[error(transparent)]
+    Optics(#[from] brine_optics::OpticsError),
+    /// The sky, sun and clouds.
+    #[error(transparent)]
+    Sky(#[from] brine_sky::SkyError),
+    /// The sun's and moon's positions.
+    #[error(transparent)]
+    Ephem(#[from] brine_ephem::EphemError),
+    /// A scene value the models accept but cannot use here (with the key it came from).
     #[error("{0}")]
-    Model(String),
+    Scene(String),
 }
 
 /// Everything the per-pixel shading needs, built once per frame.
@@ -364,7 +382,7 @@ impl Floor {
             let (dir, phase): (f64, f64) =
                 (rng.random::<f64>() * std::f64::consts::TAU, rng.random::<f64>() * std::f64::consts::TAU);
             let q = (k * amplitude).min(0.5);
-            waves.push(Trochoid::new(amplitude, k, dir, 0.0, phase, q).map_err(|e| WorldError::Model(e.to_string()))?);
+            waves.push(Trochoid::new(amplitude, k, dir, 0.0, phase, q)?);
         }
         Ok(Self {
             shape: TrochoidSum::new(&TrochoidSet::new(waves)),
@@ -380,24 +398,16 @@ impl Floor {
 /// # Errors
 /// A message naming the unknown type.
 pub fn water_body_of(water_type: Option<&str>, chlorophyll_mg_m3: Option<f64>) -> Result<WaterBody, String> {
-    if let Some(c) = chlorophyll_mg_m3 {
-        return WaterBody::case1(c).map_err(|e| e.to_string());
+    match chlorophyll_mg_m3 {
+        Some(c) => WaterBody::case1(c),
+        None => water_type.unwrap_or("IB").parse::<WaterBody>(),
     }
-    let name = water_type.unwrap_or("IB");
-    Ok(match name.to_ascii_lowercase().as_str() {
-        "clear" => WaterBody::darles(DarlesWater::Clear),
-        "turbid" => WaterBody::darles(DarlesWater::Turbid),
-        "very-turbid" => WaterBody::darles(DarlesWater::VeryTurbid),
-        _ => WaterBody::jerlov(name.parse::<JerlovType>().map_err(|_| {
-            format!("water.type = {name:?} is unknown: expected I, IA, IB, II, III, 1C, 3C, 5C, 7C, 9C, clear, turbid or very-turbid")
-        })?),
-    })
+    .map_err(|e| e.to_string().replacen("water_type", "water.type", 1))
 }
 
 /// The sun's direction and distance (AU) and the moon of a scene: from brine-ephem for `[place]`
 /// (the moon included), else from `[sky]`'s angles (no moon).
 fn sun_and_moon(scene: &Scene) -> Result<(DVec3, f64, Option<MoonParams>), WorldError> {
-    let err = |e: &dyn std::fmt::Display| WorldError::Model(e.to_string());
     let Some(p) = &scene.place else {
         let k = &scene.sky;
         let dir = direction_from_bearing(
@@ -406,18 +416,18 @@ fn sun_and_moon(scene: &Scene) -> Result<(DVec3, f64, Option<MoonParams>), World
         );
         return Ok((dir, 1.0, None));
     };
-    let t0 = parse_utc(&p.time_utc).map_err(|e| err(&e))?;
+    let t0 = parse_utc(&p.time_utc)?;
     let t = t0
         .checked_add(jiff::SignedDuration::from_secs_f64(scene.elapsed_s))
-        .map_err(|e| WorldError::Model(format!("place.time_utc + {} s: {e}", scene.elapsed_s)))?;
-    let observer = Observer::from_degrees(p.latitude_deg, p.longitude_deg, 0.0).map_err(|e| err(&e))?;
+        .map_err(|e| WorldError::Scene(format!("place.time_utc + {} s: {e}", scene.elapsed_s)))?;
+    let observer = Observer::from_degrees(p.latitude_deg, p.longitude_deg, 0.0)?;
     let options = EphemOptions { refraction: p.refraction.then(Atmosphere::standard), delta_t_s: None };
     let model = match p.sun_model {
         SunModelKind::Spa => SunModel::Spa,
         SunModelKind::Schlyter => SunModel::Schlyter,
     };
-    let sun = sun_position(t, &observer, model, &options).map_err(|e| err(&e))?;
-    let moon = moon_position(t, &observer, &options).map_err(|e| err(&e))?;
+    let sun = sun_position(t, &observer, model, &options)?;
+    let moon = moon_position(t, &observer, &options)?;
     let moon = MoonParams {
         direction: DVec3::from_array(moon.horizontal().direction()),
         phase_angle: moon.phase_angle,
@@ -471,8 +481,7 @@ const SHORTEST_WAVE_M: f64 = 1e-3;
 /// would give the sea more slope than Cox & Munk measured (1.4× at 2 m/s for the trochoid band
 /// `[0.5, 12] ω_p` of Pierson–Moskowitz), where real seas carry few capillaries.
 fn slope_cutoff(spectrum: &dyn Spectrum, u10: f64) -> Result<f64, WorldError> {
-    let total =
-        SlopeVariance::cox_munk_clean(u12_5_from_u10(u10).min(60.0)).map_err(|e| WorldError::Model(e.to_string()))?;
+    let total = SlopeVariance::cox_munk_clean_from_u10(u10.min(60.0))?;
     let k_lo = spectrum.dispersion().wavenumber(0.5 * spectrum.peak_omega());
     let k_cap = std::f64::consts::TAU / SHORTEST_WAVE_M;
     if !(k_lo < k_cap) {
@@ -483,7 +492,6 @@ fn slope_cutoff(spectrum: &dyn Spectrum, u10: f64) -> Result<f64, WorldError> {
 
 /// `any_count`: include the wind sea whatever its wave count (the FFT ocean has no count).
 fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, WorldError> {
-    let err = |e: brine_waves::WaveError| WorldError::Model(e.to_string());
     let wind_angle = s.wind_direction_deg.to_radians();
     let mut sea_options = FitOptions { wind_direction: wind_angle, choppiness: s.choppiness, ..FitOptions::default() };
     let mut k_cox_munk = f64::INFINITY;
@@ -492,7 +500,7 @@ fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, WorldError>
     let mut counts = Vec::new();
     let mut options = Vec::new();
     if s.wind_speed_m_s > 0.0 && (any_count || s.waves > 0) {
-        let spectrum = sea_spectrum(s).map_err(err)?;
+        let spectrum = sea_spectrum(s)?;
         let wp = spectrum.peak_omega();
         k_cox_munk = slope_cutoff(spectrum.as_ref(), s.wind_speed_m_s)?;
         // The fitted band ends at 12 ω_p, or sooner where the spectrum reaches Cox & Munk's total.
@@ -503,13 +511,12 @@ fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, WorldError>
                 let e = match s.fetch_km {
                     Some(f) => Elfouhaily::from_fetch(s.wind_speed_m_s, f * 1000.0),
                     None => Elfouhaily::new(s.wind_speed_m_s, 0.84),
-                }
-                .map_err(err)?;
+                }?;
                 Box::new(e.spreading(Directions::Downwind))
             }
-            (SpreadingKind::Auto | SpreadingKind::Cos2s, _) => Box::new(CosineTwoS::hasselmann(wp).map_err(err)?),
-            (SpreadingKind::Mitsuyasu, _) => Box::new(CosineTwoS::mitsuyasu(wp, s.wind_speed_m_s).map_err(err)?),
-            (SpreadingKind::DonelanBanner, _) => Box::new(DonelanBanner::new(wp).map_err(err)?),
+            (SpreadingKind::Auto | SpreadingKind::Cos2s, _) => Box::new(CosineTwoS::hasselmann(wp)?),
+            (SpreadingKind::Mitsuyasu, _) => Box::new(CosineTwoS::mitsuyasu(wp, s.wind_speed_m_s)?),
+            (SpreadingKind::DonelanBanner, _) => Box::new(DonelanBanner::new(wp)?),
             (SpreadingKind::CosSquared, _) => Box::new(CosineSquared::downwind()),
         };
         spectra.push(spectrum);
@@ -518,7 +525,7 @@ fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, WorldError>
         options.push(sea_options);
     }
     if let Some(w) = &s.swell {
-        let (spectrum, spreading) = swell_spectrum(w).map_err(err)?;
+        let (spectrum, spreading) = swell_spectrum(w)?;
         spectra.push(Box::new(spectrum));
         spreadings.push(Box::new(spreading));
         counts.push(w.waves as usize);
@@ -534,7 +541,6 @@ fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, WorldError>
 /// The wind sea (and swell) of `[sea]` as one trochoid set, fitted under one steepness cap
 /// (Thon & Ghazanfarpour 2002 as in Darles et al. 2007 §3; brine-waves `fit_sea_state`).
 fn fit_sea(s: &SeaConfig) -> Result<TrochoidSet, WorldError> {
-    let err = |e: brine_waves::WaveError| WorldError::Model(e.to_string());
     let SeaSpectra { spectra, spreadings, counts, options, .. } = sea_spectra(s, false)?;
     if spectra.is_empty() {
         return Ok(TrochoidSet::default());
@@ -548,7 +554,7 @@ fn fit_sea(s: &SeaConfig) -> Result<TrochoidSet, WorldError> {
             options: options[i],
         })
         .collect();
-    fit_sea_state(&components, s.seed, sea_options.max_total_steepness, SteepnessLimit::ScaleAll).map_err(err)
+    Ok(fit_sea_state(&components, s.seed, sea_options.max_total_steepness, SteepnessLimit::ScaleAll)?)
 }
 
 /// The directional spectrum of a wind sea and a swell as one spectrum and one spreading, for the
@@ -596,7 +602,6 @@ impl Spreading for SummedSpectrum<'_> {
 /// The sea (and swell) of `[sea]` as Tessendorf's FFT cascades and their frame at the frame's
 /// time, or `None` for a flat calm (brine-waves `FftOcean`).
 fn fft_sea(s: &SeaConfig, lattice: Option<&TileLattice>) -> Result<Option<FftOcean>, WorldError> {
-    let err = |e: brine_waves::WaveError| WorldError::Model(e.to_string());
     let SeaSpectra { spectra, spreadings, options, k_cox_munk, .. } = sea_spectra(s, true)?;
     if spectra.is_empty() {
         return Ok(None);
@@ -623,7 +628,7 @@ fn fft_sea(s: &SeaConfig, lattice: Option<&TileLattice>) -> Result<Option<FftOce
     }
     // No cascade draws waves beyond the one where the wind sea reaches Cox & Munk's total.
     let drawn = BandLimited::between_wavenumbers(&summed, 0.0, k_cox_munk);
-    Ok(Some(FftOcean::new(&drawn, &summed, &fft_options).map_err(err)?))
+    Ok(Some(FftOcean::new(&drawn, &summed, &fft_options)?))
 }
 
 /// A swell: JONSWAP of peak `ω_p = 2π/T_p` and enhancement `γ`, with the Phillips constant
@@ -696,7 +701,6 @@ fn detail_slopes(
     stats: &SeaStatistics,
     total: &SlopeVariance,
 ) -> Result<Option<DetailSlopes>, WorldError> {
-    let err = |e: brine_waves::WaveError| WorldError::Model(e.to_string());
     if stats.flat || s.wind_speed_m_s <= 0.0 || s.waves == 0 {
         return Ok(None);
     }
@@ -708,15 +712,8 @@ fn detail_slopes(
         return Ok(None);
     };
     let band = DetailOptions { seed: s.seed, wind_direction: o.wind_direction, ..band };
-    let detail = DetailWaves::new(spectrum, spreading, &band).map_err(err)?;
+    let detail = DetailWaves::new(spectrum, spreading, &band)?;
     Ok(Some(detail.at_time(s.time_s)))
-}
-
-/// Wind speed 12.5 m above the sea from `U₁₀` by the neutral logarithmic profile with roughness
-/// length `z₀ = 2×10⁻⁴ m`: `U₁₂.₅ = U₁₀ ln(12.5/z₀)/ln(10/z₀)` (factor 1.0206).
-fn u12_5_from_u10(u10: f64) -> f64 {
-    let z0: f64 = 2e-4;
-    u10 * (12.5 / z0).ln() / (10.0 / z0).ln()
 }
 
 impl World {
@@ -736,7 +733,6 @@ impl World {
     /// # Errors
     /// [`WorldError`] if a model rejects a parameter.
     pub fn on_lattice(scene: &Scene, lattice: Option<&TileLattice>) -> Result<Self, WorldError> {
-        let model = |e: &dyn std::fmt::Display| WorldError::Model(e.to_string());
         let s = &scene.sea;
         let wind_angle = s.wind_direction_deg.to_radians();
         let wind = DVec3::new(wind_angle.cos(), 0.0, wind_angle.sin());
@@ -746,13 +742,13 @@ impl World {
         } else {
             let fitted = fit_sea(s)?;
             match lattice {
-                Some(l) => l.snap(&fitted).map_err(|e| model(&e))?,
+                Some(l) => l.snap(&fitted)?,
                 None => fitted,
             }
         };
         let ocean = match s.surface {
             SurfaceKind::Trochoids => Ocean::trochoids(set.clone()),
-            SurfaceKind::Gerstner => Ocean::gerstner(set.clone()).map_err(|e| model(&e))?,
+            SurfaceKind::Gerstner => Ocean::gerstner(set.clone())?,
             SurfaceKind::Sine => Ocean::sine(&set),
             SurfaceKind::Fft => match fft_sea(s, lattice)? {
                 Some(ocean) => Ocean::fft(ocean),
@@ -789,13 +785,11 @@ impl World {
                 SkyModelKind::Preetham => DaylightModel::Preetham,
                 SkyModelKind::HosekWilkie => DaylightModel::HosekWilkie,
             },
-        })
-        .map_err(|e| model(&e))?;
+        })?;
 
         let filtered_sky = FilteredSky::new(FILTERED_SKY_WIDTH, FILTERED_SKY_HEIGHT, |d| sky.radiance_rgb(d));
 
-        let variance_total =
-            SlopeVariance::cox_munk_clean(u12_5_from_u10(s.wind_speed_m_s).min(60.0)).map_err(|e| model(&e))?;
+        let variance_total = SlopeVariance::cox_munk_clean_from_u10(s.wind_speed_m_s.min(60.0))?;
         let detail = match s.surface {
             SurfaceKind::Fft => None,
             _ => detail_slopes(s, &stats, &variance_total)?,
@@ -826,19 +820,18 @@ impl World {
             .filter(|_| sky.sun().direction.y > 0.0)
             .unwrap_or(DVec3::NEG_Y);
         let body = water_body_of(scene.water.water_type.as_deref(), scene.water.chlorophyll_mg_m3)
-            .map_err(WorldError::Model)?;
+            .map_err(WorldError::Scene)?;
         let water = WaterRgb::new(&body, RgbBands::SrgbAverage);
         let floor = scene.water.floor.as_ref().map(Floor::new).transpose()?;
         // Whitecap coverage of the wind (Monahan & Ó Muircheartaigh 1980, or 1986 with the
         // water–air temperature difference), shared between foam and active whitecaps.
         let ph = &scene.phenomena;
         let law = match (scene.water.temperature_c, scene.water.air_temperature_c) {
-            (Some(tw), Some(ta)) => WhitecapLaw::monahan_1986_from_temperatures(tw, ta).map_err(|e| model(&e))?,
+            (Some(tw), Some(ta)) => WhitecapLaw::monahan_1986_from_temperatures(tw, ta)?,
             _ => WhitecapLaw::Monahan1980,
         };
-        let monahan = brine_foam::whitecap_coverage(
-            &CoverageParams::new(s.wind_speed_m_s, law, DARLES_ONSET_WIND_M_S).map_err(|e| model(&e))?,
-        );
+        let monahan =
+            brine_foam::whitecap_coverage(&CoverageParams::new(s.wind_speed_m_s, law, DARLES_ONSET_WIND_M_S)?);
         let (foam_share, whitecap_share) = match (ph.foam, ph.whitecaps) {
             (true, true) => (1.0 - ACTIVE_WHITECAP_SHARE, ACTIVE_WHITECAP_SHARE),
             (f, w) => (f64::from(u8::from(f)), f64::from(u8::from(w))),
@@ -857,7 +850,7 @@ impl World {
                 tile_m: lattice.map(TileLattice::tile_m),
                 ..FoamMemoryParams::for_wind(s.wind_speed_m_s, wind_angle, s.seed)
             };
-            let memory = FoamMemory::new(&params, KoepkeFoam::default().efficiency()).map_err(|e| model(&e))?;
+            let memory = FoamMemory::new(&params, KoepkeFoam::default().efficiency())?;
             Some(match (sea.surface(), fft_ocean) {
                 (FrameSurface::Fft(_), Some(ocean)) => {
                     // The long waves' Jacobian on the rest grids, now and at the memory's instants.
@@ -885,17 +878,15 @@ impl World {
                         ..WhiteWaterOptions::default()
                     };
                     let now = breaking_at(s.time_s);
-                    let calibrated = WhiteWaterModel::new(reference, memory, s_b, EDGE_SHARE, monahan, &options)
-                        .map_err(|e| model(&e))?;
+                    let calibrated = WhiteWaterModel::new(reference, memory, s_b, EDGE_SHARE, monahan, &options)?;
                     WhiteWaterSea::Fft(calibrated.with_source(now).with_forward_face(forward))
                 }
                 _ => {
-                    let stats = JacobianStatistics::new(&set).map_err(|e| model(&e))?;
+                    let stats = JacobianStatistics::new(&set)?;
                     let stats = TrochoidBreaking::new(stats, memory.step(), DVec2::from_array(memory.drift()));
                     let options = WhiteWaterOptions { seed: s.seed, ..WhiteWaterOptions::default() };
                     WhiteWaterSea::Trochoids(
-                        WhiteWaterModel::new(stats, memory, s_b, EDGE_SHARE, monahan, &options)
-                            .map_err(|e| model(&e))?
+                        WhiteWaterModel::new(stats, memory, s_b, EDGE_SHARE, monahan, &options)?
                             .with_forward_face(forward),
                     )
                 }
@@ -907,8 +898,7 @@ impl World {
             let extension = FoamExtension::new(
                 &FoamExtensionParams { seed: s.seed, ..FoamExtensionParams::default() },
                 &stats.surface,
-            )
-            .map_err(|e| model(&e))?;
+            )?;
             Some(Foam {
                 extension,
                 coverage: monahan * foam_share,
@@ -926,16 +916,14 @@ impl World {
                     let stats = Box::new(FftJacobianStatistics::new(frame));
                     let calibration = calibrate
                         .then(|| FftCalibration::new(&stats, target, &CalibrationOptions::default()))
-                        .transpose()
-                        .map_err(|e| model(&e))?;
+                        .transpose()?;
                     Whitecaps::Fft { stats, calibration, alpha }
                 }
                 _ => {
-                    let stats = JacobianStatistics::new(&set).map_err(|e| model(&e))?;
+                    let stats = JacobianStatistics::new(&set)?;
                     let calibration = calibrate
                         .then(|| Calibration::new(&stats, target, &CalibrationOptions::default()))
-                        .transpose()
-                        .map_err(|e| model(&e))?;
+                        .transpose()?;
                     Whitecaps::Trochoids { stats, calibration, alpha }
                 }
             })
@@ -943,25 +931,19 @@ impl World {
             None
         };
         let spray = if ph.spray && s.wind_speed_m_s > 0.0 {
-            Some(
-                SprayMedium::new(&SprayParams { u10: s.wind_speed_m_s, ..SprayParams::default() })
-                    .map_err(|e| model(&e))?,
-            )
+            Some(SprayMedium::new(&SprayParams { u10: s.wind_speed_m_s, ..SprayParams::default() })?)
         } else {
             None
         };
         let crest = if scene.phenomena.subsurface {
-            let m =
-                |i: usize| DipoleMaterial::new(water.a[i], water.b[i], CREST_PHASE_G, WATER_IOR).map_err(|e| model(&e));
+            let m = |i: usize| DipoleMaterial::new(water.a[i], water.b[i], CREST_PHASE_G, WATER_IOR);
             Some([m(0)?, m(1)?, m(2)?])
         } else {
             None
         };
 
-        let discs = (
-            SunDisc::new(sky.sun().angular_radius).map_err(|e| model(&e))?,
-            sky.moon().map(|m| SunDisc::new(m.angular_radius)).transpose().map_err(|e| model(&e))?,
-        );
+        let discs =
+            (SunDisc::new(sky.sun().angular_radius)?, sky.moon().map(|m| SunDisc::new(m.angular_radius)).transpose()?);
         let camera = Camera::from_config(&scene.camera);
         let exposure_ev = scene.output.exposure_ev;
         let trace = TraceOptions {

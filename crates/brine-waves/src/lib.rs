@@ -159,7 +159,9 @@ pub use gerstner::{
 };
 pub use jonswap::Jonswap;
 pub use phillips::Phillips;
-pub use sea::{FrameSurface, Ocean, SINE_DETAIL_WAVELENGTH_M, SeaFrame, SurfaceSample, TileLattice, TracedSea};
+pub use sea::{
+    FrameSurface, Ocean, RayTile, SINE_DETAIL_WAVELENGTH_M, SeaFrame, SurfaceSample, TileLattice, TracedSea,
+};
 pub use set::TrochoidSet;
 pub use sine::{SineField, SineSet};
 pub use spectrum::{PiersonMoskowitz, Spectrum};

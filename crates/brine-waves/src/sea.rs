@@ -402,6 +402,18 @@ pub enum TracedSea<'a> {
     Fft(&'a FftFrame),
 }
 
+/// The primary rays of an image tile: from `origin` (m), unit `directions` row by row, `width`
+/// per row (dividing `directions.len()`).
+#[derive(Debug, Clone, Copy)]
+pub struct RayTile<'a> {
+    /// The eye (m).
+    pub origin: DVec3,
+    /// Unit directions, row-major.
+    pub directions: &'a [DVec3],
+    /// Rays per row.
+    pub width: usize,
+}
+
 impl SeaFrame {
     /// The frame ready to trace ([`TracedSea`]); cheap (the Gerstner and sine sums' phase offsets).
     pub fn traced(&self) -> TracedSea<'_> {
@@ -444,32 +456,28 @@ impl TracedSea<'_> {
         }
     }
 
-    /// The primary rays of an image tile from `origin` (`width` per row, row-major): the
-    /// trochoid and FFT seas share cones among neighbouring rays (brine-trace `trace_tile`), the
-    /// others trace ray by ray; `costs[i]` receives each ray's evaluations.
+    /// The primary rays of an image tile: the trochoid and FFT seas share cones among
+    /// neighbouring rays (brine-trace `trace_tile`), the others trace ray by ray; `costs[i]`
+    /// receives each ray's evaluations.
     ///
     /// # Arguments
-    /// - `origin`: the eye (m); `directions`: unit directions; `width`: rays per row, dividing
-    ///   `directions.len()`; `options`, `stats`: as [`TracedSea::trace`]; `hits`, `costs`: one per
-    ///   direction.
+    /// - `tile`: the rays ([`RayTile`]); `options`, `stats`: as [`TracedSea::trace`]; `hits`,
+    ///   `costs`: one per direction.
     pub fn trace_tile(
         &self,
-        origin: DVec3,
-        directions: &[DVec3],
-        width: usize,
+        tile: &RayTile<'_>,
         options: &TraceOptions,
         stats: &mut TraceStats,
         hits: &mut [Option<Hit>],
         costs: &mut [f64],
     ) {
         let o = self.options_for(options);
+        let (origin, dirs, width) = (tile.origin, tile.directions, tile.width);
         match self {
-            TracedSea::Trochoids(t) => {
-                brine_trace::trace_tile(*t, origin, directions, width, &o, stats, hits, Some(costs))
-            }
-            TracedSea::Fft(f) => brine_trace::trace_tile(*f, origin, directions, width, &o, stats, hits, Some(costs)),
+            TracedSea::Trochoids(t) => brine_trace::trace_tile(*t, origin, dirs, width, &o, stats, hits, Some(costs)),
+            TracedSea::Fft(f) => brine_trace::trace_tile(*f, origin, dirs, width, &o, stats, hits, Some(costs)),
             _ => {
-                for (i, d) in directions.iter().enumerate() {
+                for (i, d) in dirs.iter().enumerate() {
                     let before = stats.evaluations;
                     hits[i] = Ray::new(origin, *d).ok().and_then(|ray| self.trace(&ray, options, stats));
                     costs[i] = (stats.evaluations - before) as f64;
