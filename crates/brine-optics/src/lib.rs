@@ -92,11 +92,12 @@ pub use iop::{
 };
 pub use jerlov::{DarlesWater, JERLOV_LAMBDA_RANGE_NM, JerlovType};
 pub use ocean_brdf::{
-    MIN_SLOPE_VARIANCE, SEA_ROUGHNESS_LENGTH_M, SlopeVariance, SunDisc, glitter_slope_density, mean_fresnel,
-    ocean_brdf, reflected_disc_radiance, reflected_sun_radiance, slope_pdf, smith_lambda, u12_5_from_u10,
+    MIN_SLOPE_VARIANCE, POINT_DISC_Q, POINT_DISC_TAIL, SEA_ROUGHNESS_LENGTH_M, SlopeVariance, SunDisc,
+    glitter_slope_density, mean_fresnel, ocean_brdf, reflected_disc_radiance, reflected_source_radiance,
+    reflected_sun_radiance, slope_pdf, smith_lambda, u12_5_from_u10,
 };
 pub use quadrature::{GaussHermite, MAX_HERMITE_ORDER, gauss_legendre};
-pub use refraction::{reflect, refract};
+pub use refraction::{SnellWindow, reflect, refract};
 pub use sky_reflection::{RoughReflectance, SkyReflection, reflected_sky_radiance_filtered};
 pub use subsurface::{
     diffuse_upwelling_radiance, irradiance_reflectance, irradiance_reflectance_morel, lambertian_floor_radiance,

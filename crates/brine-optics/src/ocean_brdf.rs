@@ -423,6 +423,22 @@ impl SunDisc {
         (self.min_rings, self.min_rings + self.rules.len().saturating_sub(1))
     }
 
+    /// The disc's image in slope space over the lobe's narrower standard deviation,
+    /// `q = r/(2 (v·h) h_z² σ_min)` (`h` the half vector, `v·h ≥ 0.01`, `h_z² ≥ 0.01`): how far the
+    /// disc is from a point source for this glint.
+    ///
+    /// # Arguments
+    /// - `v`, `l`: unit view and disc directions, local wind frame.
+    /// - `variance`: slope variances.
+    ///
+    /// # Returns
+    /// `q` (dimensionless, `≥ 0`).
+    pub fn image_size(&self, v: DVec3, l: DVec3, variance: &SlopeVariance) -> f64 {
+        let h = (v + l).normalize_or(DVec3::Z);
+        let sigma = variance.sigma_x2.min(variance.sigma_y2).sqrt();
+        self.angular_radius / (2.0 * v.dot(h).max(0.01) * (h.z * h.z).max(0.01) * sigma)
+    }
+
     /// Rings needed for the glint toward `v` of the disc at `l` on slopes of `variance`:
     /// `n = 1` if `q ≤ 0.1`, else `⌈1.25 q + ½⌉`, clamped to [`Self::ring_range`], with
     /// `q = r/(2 (v·h) h_z² σ_min)` the disc's image in slope space over the lobe's narrower
@@ -439,9 +455,7 @@ impl SunDisc {
     /// Brine's error model of the rule, fitted to the measurements quoted above.
     pub fn rings_for(&self, v: DVec3, l: DVec3, variance: &SlopeVariance) -> usize {
         let (lo, hi) = self.ring_range();
-        let h = (v + l).normalize_or(DVec3::Z);
-        let sigma = variance.sigma_x2.min(variance.sigma_y2).sqrt();
-        let q = self.angular_radius / (2.0 * v.dot(h).max(0.01) * (h.z * h.z).max(0.01) * sigma);
+        let q = self.image_size(v, l, variance);
         let n = if q <= 0.1 { 1 } else { (1.25 * q + 0.5).ceil().min(Self::MAX_RINGS as f64) as usize };
         n.clamp(lo, hi)
     }
@@ -518,6 +532,47 @@ pub fn reflected_disc_radiance(
     sun_irradiance / disc.solid_angle * sum
 }
 
+/// Disc image in slope space ([`SunDisc::image_size`]) below which [`reflected_source_radiance`]
+/// treats the disc as a point (relative error `O(q²)`, under 10⁻³).
+pub const POINT_DISC_Q: f64 = 0.03;
+
+/// Mahalanobis distance of the mirroring slope beyond which (plus the disc image `q`) a glint is
+/// in the far tail of the lobe (below `e^{−12.5}` of the peak) and [`reflected_source_radiance`]
+/// treats the disc as a point whatever its size.
+pub const POINT_DISC_TAIL: f64 = 5.0;
+
+/// The glint of a sun or moon disc toward `v`: [`reflected_sun_radiance`] (a point source) where
+/// the disc's image in slope space is small (`q ≤` [`POINT_DISC_Q`], the point form errs by
+/// `O(q²) ≤ 10⁻³`) or the mirroring slope lies in the lobe's far tail (beyond
+/// [`POINT_DISC_TAIL`]` + q` standard deviations), else [`reflected_disc_radiance`] (the BRDF
+/// integrated over the disc, for calmer water).
+///
+/// # Arguments
+/// As [`reflected_disc_radiance`].
+///
+/// # Returns
+/// The reflected radiance, in the unit of `sun_irradiance` per steradian; `≥ 0`, finite.
+///
+/// # References
+/// As [`reflected_disc_radiance`].
+pub fn reflected_source_radiance(
+    v: DVec3,
+    l: DVec3,
+    variance: &SlopeVariance,
+    sun_irradiance: f64,
+    disc: &SunDisc,
+) -> f64 {
+    let q = disc.image_size(v, l, variance);
+    let h = (v + l).normalize_or(DVec3::Z);
+    let hz = h.z.max(1e-3);
+    let tail = ((h.x / hz).powi(2) / variance.sigma_x2() + (h.y / hz).powi(2) / variance.sigma_y2()).sqrt();
+    if q <= POINT_DISC_Q || tail > POINT_DISC_TAIL + q {
+        reflected_sun_radiance(v, l, variance, sun_irradiance)
+    } else {
+        reflected_disc_radiance(v, l, variance, sun_irradiance, disc)
+    }
+}
+
 /// The authors' fit of the Fresnel reflectance averaged over the facet slopes seen from `v`:
 /// `F̄(v) = 0.02 + 0.98 (1 − v_z)^{5 exp(−2.69 σ_v)} / (1 + 22.7 σ_v^{1.5})`.
 ///
@@ -539,6 +594,23 @@ pub fn mean_fresnel(cos_theta_v: f64, sigma_v: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The choice: the point form for a disc much smaller than the lobe, the disc's integral on
+    /// a sea as smooth as the disc is wide.
+    #[test]
+    fn the_source_is_a_point_or_a_disc_as_its_image_needs() {
+        let sun = SunDisc::sun();
+        let (v, l) = (DVec3::new(0.3, 0.0, 1.0).normalize(), DVec3::new(-0.3, 0.0, 1.0).normalize());
+        let rough = SlopeVariance::new(0.04, 0.03).unwrap();
+        assert!(sun.image_size(v, l, &rough) <= POINT_DISC_Q);
+        assert_eq!(reflected_source_radiance(v, l, &rough, 1.0, &sun), reflected_sun_radiance(v, l, &rough, 1.0));
+        let calm = SlopeVariance::new(1e-5, 1e-5).unwrap();
+        assert!(sun.image_size(v, l, &calm) > POINT_DISC_Q);
+        assert_eq!(reflected_source_radiance(v, l, &calm, 1.0, &sun), reflected_disc_radiance(v, l, &calm, 1.0, &sun));
+        // Far in the tail, the point form again.
+        let away = DVec3::new(0.9, 0.0, 0.2).normalize();
+        assert_eq!(reflected_source_radiance(v, away, &calm, 1.0, &sun), reflected_sun_radiance(v, away, &calm, 1.0));
+    }
 
     /// The profile's factor `ln(62 500)/ln(50 000)` = 1.020 62.
     #[test]

@@ -46,9 +46,59 @@ pub fn refract(d: DVec3, n: DVec3, n_i: f64, n_t: f64) -> Option<DVec3> {
     Some((eta * d + (eta * cos_i - cos_t) * n).normalize())
 }
 
+/// What a viewer under water sees through a facet of the surface (Snell's window): inside the
+/// critical angle `asin(1/n_w)` (48.6° for sea water) the sky refracted into the water, its
+/// radiance raised by `n_w²` (the same flux in a smaller solid angle) and weighted by the Fresnel
+/// transmittance; outside it total internal reflection of the water below.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SnellWindow {
+    /// Fresnel reflectance `F` of the facet seen from the water, `[0, 1]` (1 beyond the critical
+    /// angle).
+    pub reflectance: f64,
+    /// Direction above the surface the ray leaves along (unit), `None` under total internal
+    /// reflection.
+    pub refracted: Option<DVec3>,
+}
+
+impl SnellWindow {
+    /// The window of the ray `d` (unit, from the water toward the surface) through a facet of unit
+    /// normal `n` (either side).
+    ///
+    /// # References
+    /// Snell–Descartes law and Fresnel's equations ([`crate::fresnel_dielectric`]); the `n²`
+    /// radiance law (Nicodemus 1963, "Radiance", Am. J. Phys. 31:368).
+    pub fn new(d: DVec3, n: DVec3) -> Self {
+        let cos_i = d.dot(n).abs();
+        let reflectance = crate::fresnel_dielectric(cos_i, crate::WATER_IOR, 1.0);
+        Self { reflectance, refracted: refract(d, n, crate::WATER_IOR, 1.0) }
+    }
+
+    /// Radiance under the surface along the ray: `(1 − F) L_above n_w² + F L_below` (in the unit
+    /// of the radiances given), `L_above` the radiance arriving along [`Self::refracted`] (0 under
+    /// total internal reflection) and `L_below` the water's radiance reflected by the facet.
+    pub fn radiance(&self, above: DVec3, below: DVec3) -> DVec3 {
+        let n = crate::WATER_IOR;
+        (1.0 - self.reflectance) * above * n * n + self.reflectance * below
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Inside the critical angle the sky shows through; beyond it the water is a mirror.
+    #[test]
+    fn snells_window_has_its_critical_angle() {
+        let up = DVec3::Y;
+        let straight = SnellWindow::new(up, up);
+        assert!(straight.refracted.is_some() && straight.reflectance < 0.03);
+        let critical = (1.0 / crate::WATER_IOR).asin();
+        let steep = |a: f64| DVec3::new(a.sin(), a.cos(), 0.0);
+        assert!(SnellWindow::new(steep(critical - 0.01), up).refracted.is_some());
+        let outside = SnellWindow::new(steep(critical + 0.01), up);
+        assert!(outside.refracted.is_none() && (outside.reflectance - 1.0).abs() < 1e-12);
+        assert_eq!(outside.radiance(DVec3::ONE, DVec3::splat(0.2)), DVec3::splat(0.2));
+    }
 
     #[test]
     fn refraction_obeys_snell_and_total_internal_reflection() {

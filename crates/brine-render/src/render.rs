@@ -2,8 +2,7 @@
 
 use brine_foam::{FRESH_FOAM_REFLECTANCE, SprayLighting, SprayRay, SprayScattering};
 use brine_optics::{
-    SlopeVariance, SunDisc, WATER_IOR, fresnel_dielectric, reflect, reflected_disc_radiance, reflected_sun_radiance,
-    refract,
+    SlopeVariance, SunDisc, WATER_IOR, fresnel_dielectric, reflect, reflected_source_radiance, refract,
 };
 use brine_trace::{Hit, Method};
 use brine_trace::{Lowered, Ray, TraceOptions, TraceStats, trace};
@@ -470,14 +469,6 @@ impl DirectLight {
     }
 }
 
-/// Disc image in slope space below which a glint is computed for a point source (relative error
-/// `O(q²)`, under 10⁻³).
-const POINT_DISC_Q: f64 = 0.03;
-
-/// Mahalanobis distance of the mirroring slope beyond which (plus the disc image `q`) a glint is
-/// in the far tail of the lobe and computed for a point source (below `e^{−12.5}` of the peak).
-const POINT_DISC_TAIL: f64 = 5.0;
-
 /// The shading of a surface point.
 struct SurfaceShade {
     radiance: DVec3,
@@ -582,26 +573,12 @@ fn shade_surface(
     }
     let lobe = 2.0 * (0.5 * (variance.sigma_x2() + variance.sigma_y2())).sqrt();
     let sky = world.filtered_sky.radiance(r, lobe, |r| world.sky.radiance_rgb(r));
-    // Sun glint and moon glitter through the BRDF of the unresolved slopes: a point source where
-    // the disc's image in slope space, q = r/(2 (v·h) h_z² σ_min), is small (the point form errs
-    // by O(q²) ≤ 10⁻³), the BRDF integrated over the disc on calmer water.
+    // Sun glint and moon glitter through the BRDF of the unresolved slopes (brine-optics
+    // `reflected_source_radiance`: a point source or the disc's integral, as the disc's image needs).
     let glint = |disc: &brine_sky::Disc, rules: &SunDisc| {
         let l = disc.direction;
         if l.dot(n) > 0.0 && disc.irradiance_rgb != DVec3::ZERO {
-            let (vl, ll) = (to_local(v), to_local(l));
-            let h = (vl + ll).normalize_or(DVec3::Z);
-            let sigma = variance.sigma_x2().min(variance.sigma_y2()).sqrt();
-            let q = disc.angular_radius / (2.0 * vl.dot(h).max(0.01) * (h.z * h.z).max(0.01) * sigma);
-            // The facet slope that mirrors the disc's centre, in standard deviations of the lobe:
-            // beyond 5 + q the whole disc image lies in the tail (below e^{−12.5} of the peak),
-            // where the point form is used whatever its relative error.
-            let hz = h.z.max(1e-3);
-            let tail = ((h.x / hz).powi(2) / variance.sigma_x2() + (h.y / hz).powi(2) / variance.sigma_y2()).sqrt();
-            let r = if q <= POINT_DISC_Q || tail > POINT_DISC_TAIL + q {
-                reflected_sun_radiance(vl, ll, variance, 1.0)
-            } else {
-                reflected_disc_radiance(vl, ll, variance, 1.0, rules)
-            };
+            let r = reflected_source_radiance(to_local(v), to_local(l), variance, 1.0, rules);
             disc.irradiance_rgb * r
         } else {
             DVec3::ZERO
@@ -725,14 +702,12 @@ fn underwater_radiance(
     let background = water_background(world, z_cam);
     let (s, source, aov) = if let Some((t, p)) = surface {
         let n = field.normal(p, d, t, world);
-        let cos_i = d.dot(n).abs();
-        let fw = fresnel_dielectric(cos_i, WATER_IOR, 1.0);
-        let above = match refract(d, n, WATER_IOR, 1.0) {
+        let window = brine_optics::SnellWindow::new(d, n);
+        let above = match window.refracted {
             Some(tr) => sky_radiance(world, if tr.y > 1e-3 { tr } else { DVec3::new(tr.x, 1e-3, tr.z).normalize() }),
             None => DVec3::ZERO,
         };
-        // Radiance entering the water is compressed into a smaller solid angle: × n².
-        let l = (1.0 - fw) * above * WATER_IOR * WATER_IOR + fw * water_background(world, 0.0);
+        let l = window.radiance(above, water_background(world, 0.0));
         (t, l, Aov { depth: t as f32, normal: (-n).as_vec3().to_array(), ..Aov::default() })
     } else if let Some((t, q)) = floor_hit(world, origin, d, cx) {
         (

@@ -12,9 +12,9 @@ use brine_optics::{
 use brine_sky::{CloudParams, DaylightModel, FilteredSky, MoonParams, Sky, SkyParams};
 use brine_trace::{Method, TraceOptions};
 use brine_waves::{
-    BandLimited, CosineSquared, CosineTwoS, DetailOptions, DetailSlopes, DetailWaves, Directions, Dispersion,
-    DonelanBanner, Elfouhaily, FftOcean, FftOptions, FftSlopeFilter, FitOptions, FrameSurface, Jonswap, Ocean,
-    Phillips, PiersonMoskowitz, SeaComponent, SeaFrame, Spectrum, Spreading, SteepnessLimit, TileLattice, Tma,
+    BandLimited, CosineSquared, CosineTwoS, DetailOptions, DetailSlopes, DetailWaves, Directions, DonelanBanner,
+    Elfouhaily, FftOcean, FftOptions, FftSlopeFilter, FitOptions, FrameSurface, Jonswap, Ocean, Phillips,
+    PiersonMoskowitz, SeaComponent, SeaFrame, Spectrum, Spreading, SteepnessLimit, SummedSpectrum, TileLattice, Tma,
     Trochoid, TrochoidSet, TrochoidSum, fit_sea_state,
 };
 use brine_whitecap::{
@@ -557,48 +557,6 @@ fn fit_sea(s: &SeaConfig) -> Result<TrochoidSet, WorldError> {
     Ok(fit_sea_state(&components, s.seed, sea_options.max_total_steepness, SteepnessLimit::ScaleAll)?)
 }
 
-/// The directional spectrum of a wind sea and a swell as one spectrum and one spreading, for the
-/// FFT ocean: `S(ω) = Σᵢ Sᵢ(ω)` and `D(θ; ω) = Σᵢ Sᵢ(ω) Dᵢ(θ − Δᵢ; ω) / S(ω)`, `Δᵢ` the direction of
-/// component `i` relative to the first (the wind), so that `S(ω) D(θ; ω)` is the sum of the
-/// components' directional spectra exactly. The dispersion relation is the first component's.
-struct SummedSpectrum<'a> {
-    spectra: &'a [Box<dyn Spectrum>],
-    spreadings: &'a [Box<dyn Spreading>],
-    offsets: Vec<f64>,
-}
-
-impl Spectrum for SummedSpectrum<'_> {
-    fn s_omega(&self, omega: f64) -> f64 {
-        self.spectra.iter().map(|s| s.s_omega(omega)).sum()
-    }
-
-    /// The lowest peak (the swell's, usually): the largest FFT tile is sized on it.
-    fn peak_omega(&self) -> f64 {
-        self.spectra.iter().map(|s| s.peak_omega()).fold(f64::INFINITY, f64::min)
-    }
-
-    fn dispersion(&self) -> Dispersion {
-        self.spectra[0].dispersion()
-    }
-}
-
-impl Spreading for SummedSpectrum<'_> {
-    fn density(&self, theta: f64, omega: f64) -> f64 {
-        let (mut num, mut den) = (0.0, 0.0);
-        for ((s, d), off) in self.spectra.iter().zip(self.spreadings).zip(&self.offsets) {
-            let si = s.s_omega(omega);
-            if si > 0.0 {
-                // θ − Δ wrapped to (−π, π].
-                let rel =
-                    std::f64::consts::PI - (std::f64::consts::PI - (theta - off)).rem_euclid(std::f64::consts::TAU);
-                num += si * d.density(rel, omega);
-                den += si;
-            }
-        }
-        if den > 0.0 { num / den } else { self.spreadings[0].density(theta, omega) }
-    }
-}
-
 /// The sea (and swell) of `[sea]` as Tessendorf's FFT cascades and their frame at the frame's
 /// time, or `None` for a flat calm (brine-waves `FftOcean`).
 fn fft_sea(s: &SeaConfig, lattice: Option<&TileLattice>) -> Result<Option<FftOcean>, WorldError> {
@@ -607,11 +565,8 @@ fn fft_sea(s: &SeaConfig, lattice: Option<&TileLattice>) -> Result<Option<FftOce
         return Ok(None);
     }
     let wind = options[0].wind_direction;
-    let summed = SummedSpectrum {
-        spectra: &spectra,
-        spreadings: &spreadings,
-        offsets: options.iter().map(|o| o.wind_direction - wind).collect(),
-    };
+    let directions: Vec<f64> = options.iter().map(|o| o.wind_direction).collect();
+    let summed = SummedSpectrum::new(&spectra, &spreadings, &directions);
     let f = &s.fft;
     let mut fft_options = FftOptions {
         resolution: f.resolution as usize,
@@ -631,15 +586,10 @@ fn fft_sea(s: &SeaConfig, lattice: Option<&TileLattice>) -> Result<Option<FftOce
     Ok(Some(FftOcean::new(&drawn, &summed, &fft_options)?))
 }
 
-/// A swell: JONSWAP of peak `ω_p = 2π/T_p` and enhancement `γ`, with the Phillips constant
-/// chosen so that `4√m₀ = H_s`, and a constant-`s` cos-2s spreading.
+/// A swell: brine-waves `Jonswap::swell` (its significant height and peak period) with a
+/// constant-`s` cos-2s spreading.
 fn swell_spectrum(w: &SwellConfig) -> Result<(Jonswap, CosineTwoS), brine_waves::WaveError> {
-    let omega_p = std::f64::consts::TAU / w.peak_period_s;
-    let unit = Jonswap::new(1e-3, omega_p)?.with_peak_shape(w.gamma, 0.07, 0.09)?;
-    let target_m0 = (w.significant_height_m / 4.0).powi(2);
-    let alpha = (1e-3 * target_m0 / unit.m0()).clamp(1e-9, 0.99);
-    let spectrum = Jonswap::new(alpha, omega_p)?.with_peak_shape(w.gamma, 0.07, 0.09)?;
-    Ok((spectrum, CosineTwoS::constant(w.spreading_s)?))
+    Ok((Jonswap::swell(w.significant_height_m, w.peak_period_s, w.gamma)?, CosineTwoS::constant(w.spreading_s)?))
 }
 
 /// Height and slope statistics of the traced sea, for the BRDF's unresolved variance and the foam.

@@ -100,6 +100,36 @@ impl Jonswap {
         Ok(Self { gamma, sigma_a, sigma_b, ..self })
     }
 
+    /// A swell of significant height `H_s`: the spectrum of peak `ω_p = 2π/T_p` and enhancement `γ`
+    /// (peak widths 0.07 / 0.09) with the Phillips constant that makes `4√m₀ = H_s` (`m₀` is linear
+    /// in `α`), `α` kept within `[10⁻⁹, 0.99]`.
+    ///
+    /// # Arguments
+    /// - `significant_height_m`: `H_s` (m), `(0, 30]`.
+    /// - `peak_period_s`: `T_p` (s), `[1, 30]`.
+    /// - `gamma`: `γ`, `[1, 20]` (swells are narrow: 3.3 to 10).
+    ///
+    /// # Errors
+    /// [`WaveError::OutOfRange`] naming the first parameter outside its range.
+    ///
+    /// # References
+    /// Hasselmann et al. 1973 (JONSWAP); `H_s = 4√m₀` (Holthuijsen 2007, *Waves in Oceanic and
+    /// Coastal Waters*, §4.2).
+    pub fn swell(significant_height_m: f64, peak_period_s: f64, gamma: f64) -> Result<Self, WaveError> {
+        let hs = check(
+            "significant_height_m",
+            significant_height_m,
+            significant_height_m > 0.0 && significant_height_m <= 30.0,
+            "(0, 30] m",
+        )?;
+        let tp = check("peak_period_s", peak_period_s, (1.0..=30.0).contains(&peak_period_s), "[1, 30] s")?;
+        let omega_p = std::f64::consts::TAU / tp;
+        let unit = Self::new(1e-3, omega_p)?.with_peak_shape(gamma, 0.07, 0.09)?;
+        let target_m0 = (hs / 4.0).powi(2);
+        let alpha = (1e-3 * target_m0 / unit.m0()).clamp(1e-9, 0.99);
+        Self::new(alpha, omega_p)?.with_peak_shape(gamma, 0.07, 0.09)
+    }
+
     /// Phillips constant `α` (dimensionless).
     pub fn alpha(&self) -> f64 {
         self.alpha
@@ -154,6 +184,17 @@ impl Spectrum for Jonswap {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `4√m₀` of the swell is its significant height (to the quadrature of `m0`).
+    #[test]
+    fn a_swell_has_its_significant_height() {
+        for (hs, tp, gamma) in [(1.5, 10.0, 3.3), (4.0, 14.0, 7.0)] {
+            let s = Jonswap::swell(hs, tp, gamma).unwrap();
+            assert!((4.0 * s.m0().sqrt() / hs - 1.0).abs() < 1e-6, "{hs} {tp}");
+            assert!((s.peak_omega() - std::f64::consts::TAU / tp).abs() < 1e-12);
+        }
+        assert!(Jonswap::swell(0.0, 10.0, 3.3).is_err() && Jonswap::swell(2.0, 0.5, 3.3).is_err());
+    }
 
     /// `γ^r` with `r = 1` (peak) or `r = e^{−200}` (far): rounding of `pow` and `exp`; the clamped
     /// fetch reproduces PM's `ω_p` through the same constants, to rounding.
