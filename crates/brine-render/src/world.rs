@@ -14,16 +14,14 @@ use brine_trace::{Method, TraceOptions};
 use brine_waves::{
     BandLimited, CosineSquared, CosineTwoS, DetailOptions, DetailSlopes, DetailWaves, Directions, DonelanBanner,
     Elfouhaily, FftOcean, FftOptions, FftSlopeFilter, FitOptions, FrameSurface, Jonswap, Ocean, Phillips,
-    PiersonMoskowitz, SeaComponent, SeaFrame, Spectrum, Spreading, SteepnessLimit, SummedSpectrum, TileLattice, Tma,
-    Trochoid, TrochoidSet, TrochoidSum, fit_sea_state,
+    PiersonMoskowitz, SeaComponent, SeaFrame, SeabedRelief, Spectrum, Spreading, SteepnessLimit, SummedSpectrum,
+    TileLattice, Tma, TrochoidSet, TrochoidSum, fit_sea_state, seabed_relief,
 };
 use brine_whitecap::{
     Calibration, CalibrationOptions, ErfMethod, FftBreaking, FftCalibration, FftJacobianStatistics, FootprintFilter,
     JacobianStatistics, TrochoidBreaking, WhiteWaterModel, WhiteWaterOptions, whitecap_coverage,
 };
 use glam::{DVec2, DVec3};
-use rand::{Rng, SeedableRng};
-use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
 
 use crate::camera::{Camera, direction_from_bearing};
@@ -365,30 +363,16 @@ pub struct Floor {
 }
 
 impl Floor {
-    /// The floor of a (validated) `[water.floor]` section: `waves` trochoids with wavelengths
-    /// log-spaced over the range, amplitudes proportional to wavelength (equal slopes) summing to
-    /// `amplitude_m`, steepness `kA`, directions and phases from the seed.
+    /// The floor of a (validated) `[water.floor]` section: brine-waves `seabed_relief`.
     fn new(c: &FloorConfig) -> Result<Self, WorldError> {
-        let mut rng = ChaCha8Rng::seed_from_u64(c.seed);
-        let n = c.waves as usize;
-        let [lo, hi] = c.wavelength_range_m;
-        let lambdas: Vec<f64> =
-            (0..n).map(|i| lo * (hi / lo).powf(if n > 1 { i as f64 / (n - 1) as f64 } else { 0.0 })).collect();
-        let total: f64 = lambdas.iter().sum();
-        let mut waves = Vec::with_capacity(n);
-        for lambda in lambdas {
-            let amplitude = c.amplitude_m * lambda / total;
-            let k = std::f64::consts::TAU / lambda;
-            let (dir, phase): (f64, f64) =
-                (rng.random::<f64>() * std::f64::consts::TAU, rng.random::<f64>() * std::f64::consts::TAU);
-            let q = (k * amplitude).min(0.5);
-            waves.push(Trochoid::new(amplitude, k, dir, 0.0, phase, q)?);
-        }
-        Ok(Self {
-            shape: TrochoidSum::new(&TrochoidSet::new(waves)),
-            depth: c.depth_m,
-            albedo: DVec3::from_array(c.albedo),
-        })
+        let relief = SeabedRelief {
+            amplitude_m: c.amplitude_m,
+            wavelength_range_m: c.wavelength_range_m,
+            waves: c.waves,
+            seed: c.seed,
+        };
+        let waves = seabed_relief(&relief)?;
+        Ok(Self { shape: TrochoidSum::new(&waves), depth: c.depth_m, albedo: DVec3::from_array(c.albedo) })
     }
 }
 

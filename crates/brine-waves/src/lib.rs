@@ -126,6 +126,7 @@ mod lipschitz;
 mod phillips;
 mod pierson_moskowitz;
 mod sea;
+mod seabed;
 mod set;
 mod sine;
 mod sine_lipschitz;
@@ -163,6 +164,7 @@ pub use phillips::Phillips;
 pub use sea::{
     FrameSurface, Ocean, RayTile, SINE_DETAIL_WAVELENGTH_M, SeaFrame, SurfaceSample, TileLattice, TracedSea,
 };
+pub use seabed::{SeabedRelief, seabed_relief};
 pub use set::TrochoidSet;
 pub use sine::{SineField, SineSet};
 pub use spectrum::{PiersonMoskowitz, Spectrum};
