@@ -2,7 +2,7 @@
 //! perturbations and the local sidereal time.
 //!
 //! All formulas: Schlyter P., "How to compute planetary positions" (stjarnhimlen.se/comp/ppcomp.html),
-//! §4–§9 and §5b; equation sheet §13. Angles in radians here (his tables are in degrees).
+//! §4–§9 and §5b; docs/equations.md §13. Angles in radians here (his tables are in degrees).
 
 use crate::coords::{ecliptic_to_equatorial, rectangular, rev, spherical};
 
@@ -77,7 +77,7 @@ pub struct SunOrbit {
 /// # References
 /// Schlyter P., "How to compute planetary positions" §4–5, and his worked example
 /// ("Computing planetary positions – a tutorial with worked examples", §5, 1990-04-19);
-/// equation sheet §13.
+/// docs/equations.md §13.
 pub fn sun_orbit(d: f64) -> SunOrbit {
     let w = (282.9404 + 4.70935e-5 * d).to_radians();
     let e = 0.016709 - 1.151e-9 * d;
@@ -194,7 +194,7 @@ impl MoonOrbit {
 ///
 /// # References
 /// Schlyter, "How to compute planetary positions" §4, §6–7, §9, and the tutorial's worked
-/// example §7–8 (1990-04-19); equation sheet §13.
+/// example §7–8 (1990-04-19); docs/equations.md §13.
 pub fn moon_orbit(d: f64) -> MoonOrbit {
     let n = rev((125.1228 - 0.052_953_808_3 * d).to_radians());
     let i = 5.1454_f64.to_radians();
@@ -267,7 +267,7 @@ pub fn moon_orbit(d: f64) -> MoonOrbit {
 /// The [`MoonEcliptic`] position (radians; distance in Earth equatorial radii).
 ///
 /// # References
-/// Schlyter §4, §6–7, §9; equation sheet §13.
+/// Schlyter §4, §6–7, §9; docs/equations.md §13.
 pub fn moon_ecliptic(d: f64) -> MoonEcliptic {
     moon_orbit(d).ecliptic()
 }

@@ -151,7 +151,7 @@ mod tests {
 
     #[test]
     fn greenwich_noon_of_j2000() {
-        // Equation sheet oracle: 2000-01-01 12h UT at 0° N 0° E: altitude 66.95°, azimuth 178.06°
+        // Reference value (docs/equations.md): 2000-01-01 12h UT at 0° N 0° E: altitude 66.95°, azimuth 178.06°
         // (2 printed decimals). Tolerances: half a unit, plus for the azimuth the Schlyter Sun's
         // 0.01° error seen 23° from the zenith (0.01°/sin 23° = 0.026°).
         const ALTITUDE_DEG: f64 = 0.005 + 0.005;

@@ -92,7 +92,7 @@ pub fn julian_date(t: Timestamp) -> f64 {
 /// `d` (days); 0 at 1999-12-31 00:00 UT, −3543 at 1990-04-19 00:00 UT.
 ///
 /// # References
-/// Schlyter P., "How to compute planetary positions", §3 (equation sheet §13).
+/// Schlyter P., "How to compute planetary positions", §3 (docs/equations.md §13).
 pub fn schlyter_day(t: Timestamp) -> f64 {
     julian_date(t) - JD_SCHLYTER_EPOCH
 }

@@ -53,13 +53,13 @@ fn rows() -> Vec<Row> {
         .collect()
 }
 
-/// Largest angular error of the SPA Sun: the target, 0.01°. SPA is good to 0.0003°;
+/// Largest angular error of the SPA Sun: the target, 0.01°. SPA is good to 0.0003°;
 /// ΔT estimates differ by < 30 s (0.0002° of solar motion).
 const SPA_SUN_DEG: f64 = 0.01;
 /// Largest angular error of the Schlyter Sun: 0.02°. No nutation (≤ 17″) nor aberration (20.5″),
 /// and the elements' own error (Schlyter: "a fraction of an arc minute").
 const SCHLYTER_SUN_DEG: f64 = 0.02;
-/// Largest angular error of the Schlyter Moon, topocentric: the target, 0.1°.
+/// Largest angular error of the Schlyter Moon, topocentric: the target, 0.1°.
 const SCHLYTER_MOON_DEG: f64 = 0.1;
 /// Earth–Sun distance from Schlyter's elements: 2×10⁻⁴ AU (no planetary perturbations).
 const SUN_AU: f64 = 2e-4;
@@ -128,7 +128,7 @@ fn against_erfa_over_1950_2050() {
         worst[3], worst[4], worst[5]
     );
     assert_eq!(rows.len(), N_REFERENCE);
-    // The targets.
+    // The targets.
     assert!(worst[0] < SPA_SUN_DEG, "SPA sun {}", worst[0]);
     assert!(worst[1] < SCHLYTER_SUN_DEG, "Schlyter sun {}", worst[1]);
     assert!(worst[2] < SCHLYTER_MOON_DEG, "Schlyter moon {}", worst[2]);

@@ -15,7 +15,7 @@ pub const MAX_WIND_M_S: f64 = 60.0;
 /// Largest air–sea temperature difference `|ΔT| = |T_w − T_a|` (°C) accepted by the stability
 /// forms: 30 °C.
 ///
-/// This is Brine's envelope, not a published bound: the equation sheet (§5) gives no range of
+/// This is Brine's envelope, not a published bound: docs/equations.md (§5) gives no range of
 /// `ΔT` for the 1986 fit, which was made on open-ocean observations, where the air–sea
 /// difference rarely exceeds a few degrees (the marine boundary layer is close to neutral). At
 /// ±30 °C the factor `exp(0.0861 ΔT)` is already 13.2 (or 1/13.2), an
@@ -88,7 +88,7 @@ impl WhitecapLaw {
     /// # References
     /// Monahan E., Ó Muircheartaigh I. 1986, "Whitecaps and the passive remote sensing of the
     /// ocean surface", Int. J. Remote Sens. 7(5):627–642 (stability-dependent fit); Darles et al.
-    /// 2007 Eq. 3; equation sheet §5.
+    /// 2007 Eq. 3; docs/equations.md §5.
     pub fn monahan_1986_from_temperatures(t_water_c: f64, t_air_c: f64) -> Result<Self, FoamError> {
         let t_water_c = check("t_water_c", t_water_c, (-2.0..=40.0).contains(&t_water_c), "[-2, 40] °C")?;
         let t_air_c = check("t_air_c", t_air_c, (-60.0..=60.0).contains(&t_air_c), "[-60, 60] °C")?;
@@ -142,7 +142,7 @@ impl CoverageParams {
     ///
     /// # References
     /// Monahan & Ó Muircheartaigh 1980, 1986 (laws fitted on ~4–20 m s⁻¹); Darles et al. 2007 §4.1
-    /// (onset 13 km/h); equation sheet §5.
+    /// (onset 13 km/h); docs/equations.md §5.
     pub fn new(u10: f64, law: WhitecapLaw, onset_m_s: f64) -> Result<Self, FoamError> {
         let u10 = check("u10_m_s", u10, (0.0..=MAX_WIND_M_S).contains(&u10), "[0, 60] m/s")?;
         let onset = check("onset_m_s", onset_m_s, (0.0..=10.0).contains(&onset_m_s), "[0, 10] m/s")?;
@@ -183,7 +183,7 @@ impl CoverageParams {
 /// Monahan E., Ó Muircheartaigh I. 1980, "Optimal power-law description of oceanic whitecap
 /// coverage dependence on wind speed", JPO 10:2094–2099; Monahan E., Ó Muircheartaigh I. 1986,
 /// "Whitecaps and the passive remote sensing of the ocean surface", Int. J. Remote Sens.
-/// 7(5):627–642; Darles et al. 2007 Eq. 3 (with its coefficient erratum); equation sheet §5.
+/// 7(5):627–642; Darles et al. 2007 Eq. 3 (with its coefficient erratum); docs/equations.md §5.
 pub fn whitecap_coverage(params: &CoverageParams) -> f64 {
     let u = params.u10;
     if u < params.onset || u <= 0.0 {

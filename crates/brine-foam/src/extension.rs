@@ -65,7 +65,7 @@ pub struct SurfaceStatistics {
 ///
 /// # References
 /// Darles E., Crespin B., Ghazanfarpour D. 2007, "Accelerating and enhancing rendering of
-/// realistic ocean scenes", WSCG, §4.1.1 Eq. 4; equation sheet §5 (the printed
+/// realistic ocean scenes", WSCG, §4.1.1 Eq. 4; docs/equations.md §5 (the printed
 /// `(y − y_min)/(y − y_max)` is ≤ 0, diverges at the crest, and `s′` is not normalised).
 #[derive(Debug, Clone, PartialEq)]
 pub struct FoamExtension {
@@ -98,7 +98,7 @@ impl FoamExtension {
     /// [`FoamError::OutOfRange`] naming the first parameter outside its range.
     ///
     /// # References
-    /// Darles et al. 2007 §4.1.1 Eq. 4; equation sheet §5 (`⟨w⟩` normalisation).
+    /// Darles et al. 2007 §4.1.1 Eq. 4; docs/equations.md §5 (`⟨w⟩` normalisation).
     pub fn new(params: &FoamExtensionParams, surface: &SurfaceStatistics) -> Result<Self, FoamError> {
         let n = check("exponent", params.exponent, (1.0..=20.0).contains(&params.exponent), "[1, 20]")?;
         let nmax = check(
@@ -148,7 +148,7 @@ impl FoamExtension {
     /// `w` (dimensionless), in `[0, N_max]`.
     ///
     /// # References
-    /// Darles et al. 2007 Eq. 4, corrected in the equation sheet §5.
+    /// Darles et al. 2007 Eq. 4, corrected in the docs/equations.md §5.
     pub fn weight(&self, height: f64, slope_x: f64, slope_z: f64) -> f64 {
         debug_assert!(height.is_finite() && slope_x.is_finite() && slope_z.is_finite());
         let t = ((height - self.y_min) * self.inv_range).clamp(0.0, 1.0);
@@ -170,7 +170,7 @@ impl FoamExtension {
     /// `s′`, the fraction of the pixel covered by foam, in `[0, 1]`.
     ///
     /// # References
-    /// Darles et al. 2007 §4.1.1 Eq. 3–4; equation sheet §5.
+    /// Darles et al. 2007 §4.1.1 Eq. 3–4; docs/equations.md §5.
     #[allow(clippy::too_many_arguments)]
     pub fn foam_amount(
         &self,

@@ -102,7 +102,7 @@ pub struct FoamState {
 ///
 /// # References
 /// Darles et al. 2007 §4.1.2 (foam positions and ages kept between frames; its age term
-/// `0.4 − 0.2 t·10⁻²` is replaced by this explicit model, equation sheet §5); Koepke 1984
+/// `0.4 − 0.2 t·10⁻²` is replaced by this explicit model, docs/equations.md §5); Koepke 1984
 /// (`f_ef`); Callaghan A., Deane G., Stokes M. 2012, "Observed variation in the decay time of
 /// oceanic whitecap foam", JGR 117, C09015 (`τ` from 0.5 to 8 s).
 #[derive(Debug, Clone, PartialEq)]
@@ -135,7 +135,7 @@ impl FoamHistory {
     ///
     /// # References
     /// Callaghan, Deane & Stokes 2012 (`τ` from 0.5 to 8 s); Koepke 1984 (`f_ef`); Darles et al.
-    /// 2007 §4.1.2; equation sheet §5 (explicit age model instead of `0.4 − 0.2 t·10⁻²`).
+    /// 2007 §4.1.2; docs/equations.md §5 (explicit age model instead of `0.4 − 0.2 t·10⁻²`).
     pub fn new(params: &FoamHistoryParams, koepke: &KoepkeFoam) -> Result<Self, FoamError> {
         let (tau, step, ratio) = check_lattice(
             params.decay_time_s,

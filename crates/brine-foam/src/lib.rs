@@ -2,7 +2,7 @@
 //!
 //! Whitecap coverage after Monahan & Ó Muircheartaigh (1980, 1986), the foam that breaking crests
 //! leave and that decays with Monahan's (1971) time constant ([`FoamMemory`]), the foam extension of
-//! Darles, Crespin & Ghazanfarpour (2007, §4.1, Eq. 3–4, corrected in the equation sheet §5),
+//! Darles, Crespin & Ghazanfarpour (2007, §4.1, Eq. 3–4, corrected in the docs/equations.md §5),
 //! foam radiance after Koepke (1984), foam that moves with the water and ages between frames,
 //! and the sea-spray source function of Monahan, Spiel & Davidson (1986) with its vertical
 //! profile, extinction, optical depth and in-scattering (Darles et al. 2007, §4.2, equation

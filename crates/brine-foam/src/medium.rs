@@ -109,7 +109,7 @@ const RADIUS_PANELS: usize = 512;
 ///
 /// # References
 /// Monahan, Spiel & Davidson 1986 (source); Shettle E., Fenn R. 1979, AFGL-TR-79-0214 (profile);
-/// Darles et al. 2007 §4.2 and its errata in the equation sheet §6 (the printed `k_e` integrates
+/// Darles et al. 2007 §4.2 and its errata in the docs/equations.md §6 (the printed `k_e` integrates
 /// the flux without `dr`; it must be a concentration; Eq. 7, Beer–Lambert, is missing).
 #[derive(Debug, Clone, PartialEq)]
 pub struct SprayMedium {
@@ -139,7 +139,7 @@ impl SprayMedium {
     ///
     /// # References
     /// Monahan, Spiel & Davidson 1986 (`dF/dr`); Darles et al. 2007 §4.2 (`k_e`, `Q_e ≈ 2`);
-    /// equation sheet §6 ("concentration from flux", "extinction and optical depth").
+    /// docs/equations.md §6 ("concentration from flux", "extinction and optical depth").
     pub fn new(params: &SprayParams) -> Result<Self, FoamError> {
         let p = *params;
         check("u10_m_s", p.u10, (0.0..=60.0).contains(&p.u10), "[0, 60] m/s")?;
@@ -179,7 +179,7 @@ impl SprayMedium {
 
     /// Deposition velocity `v_d(r) = v_s(r) + H/t_res` (m s⁻¹): Stokes settling plus the
     /// removal of a boundary layer of depth `H` every residence time. Settling alone (the lower
-    /// bound of the equation sheet) would let sub-5-µm drops pile up for weeks; Hoppel et al.
+    /// bound of docs/equations.md) would let sub-5-µm drops pile up for weeks; Hoppel et al.
     /// (2002) show small drops never reach the settling equilibrium because other sinks
     /// (precipitation, mixing out of the boundary layer) act in days.
     ///
@@ -190,7 +190,7 @@ impl SprayMedium {
     /// `v_d` (m s⁻¹).
     ///
     /// # References
-    /// Equation sheet §6 (`v_d ≥ v_s`); Hoppel W., Frick G., Fitzgerald J. 2002, "Surface source
+    /// docs/equations.md §6 (`v_d ≥ v_s`); Hoppel W., Frick G., Fitzgerald J. 2002, "Surface source
     /// function for sea-salt aerosol and aerosol dry deposition to the ocean surface", JGR
     /// 107(D19), 4382.
     pub fn deposition_velocity(&self, r_um: f64) -> f64 {
@@ -207,7 +207,7 @@ impl SprayMedium {
     /// `n` (drops m⁻³ µm⁻¹).
     ///
     /// # References
-    /// Equation sheet §6 ("concentration from flux", "vertical profile").
+    /// docs/equations.md §6 ("concentration from flux", "vertical profile").
     pub fn concentration(&self, r_um: f64, z: f64) -> f64 {
         self.profile(z) * msd86_flux(r_um, self.params.u10) / self.deposition_velocity(r_um)
     }
@@ -227,7 +227,7 @@ impl SprayMedium {
     /// `k_e` (m⁻¹).
     ///
     /// # References
-    /// Darles et al. 2007 §4.2 (`k_e`, `k(r) = Q_e π r²`); equation sheet §6.
+    /// Darles et al. 2007 §4.2 (`k_e`, `k(r) = Q_e π r²`); docs/equations.md §6.
     pub fn extinction(&self, z: f64, foam_factor: f64) -> f64 {
         debug_assert!(foam_factor >= 0.0);
         self.extinction_0 * foam_factor * self.profile(z)
@@ -241,7 +241,7 @@ impl SprayMedium {
     /// `τ` (dimensionless, `≥ 0`).
     ///
     /// # References
-    /// Darles et al. 2007 §4.2 (`τ_aod`); equation sheet §6.
+    /// Darles et al. 2007 §4.2 (`τ_aod`); docs/equations.md §6.
     pub fn optical_depth(&self) -> f64 {
         let h = self.params.scale_height_m;
         self.extinction_0 * h * (1.0 - libm::exp(-self.params.max_height_m / h))
@@ -258,7 +258,7 @@ impl SprayMedium {
     /// `z_max`.
     ///
     /// # References
-    /// Darles et al. 2007 §4.2 (`τ_aod`); equation sheet §6.
+    /// Darles et al. 2007 §4.2 (`τ_aod`); docs/equations.md §6.
     pub fn optical_depth_above(&self, z: f64, foam_factor: f64) -> f64 {
         let (h, zmax) = (self.params.scale_height_m, self.params.max_height_m);
         let z = z.clamp(0.0, zmax);
@@ -277,7 +277,7 @@ impl SprayMedium {
     /// The optical depth (dimensionless, `≥ 0`).
     ///
     /// # References
-    /// Beer–Lambert law; equation sheet §6 (the attenuation equation missing from Darles et al.).
+    /// Beer–Lambert law; docs/equations.md §6 (the attenuation equation missing from Darles et al.).
     pub fn segment_optical_depth(&self, z0: f64, z1: f64, length_m: f64, foam_factor: f64) -> f64 {
         debug_assert!(length_m >= 0.0 && foam_factor >= 0.0 && z0.is_finite() && z1.is_finite());
         if length_m <= 0.0 || foam_factor <= 0.0 {
@@ -311,7 +311,7 @@ impl SprayMedium {
     /// `T` (dimensionless), in `(0, 1]` (it underflows to 0 only beyond an optical depth of ~745).
     ///
     /// # References
-    /// Beer–Lambert law; equation sheet §6 (the attenuation equation, Darles' missing Eq. 7).
+    /// Beer–Lambert law; docs/equations.md §6 (the attenuation equation, Darles' missing Eq. 7).
     pub fn transmittance(&self, z0: f64, z1: f64, length_m: f64, foam_factor: f64) -> f64 {
         libm::exp(-self.segment_optical_depth(z0, z1, length_m, foam_factor))
     }

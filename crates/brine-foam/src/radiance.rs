@@ -20,7 +20,7 @@ pub const KOEPKE_EFFICIENCY: f64 = 0.4;
 ///
 /// # References
 /// Koepke P. 1984, "Effective reflectance of oceanic whitecaps", Appl. Opt. 23(11):1816–1824;
-/// equation sheet §5 (Darles et al. print `f_ef = 0.4 + 0.2` for `0.4 ± 0.2` and call the
+/// docs/equations.md §5 (Darles et al. print `f_ef = 0.4 + 0.2` for `0.4 ± 0.2` and call the
 /// reflectance `R_f` a radiance).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct KoepkeFoam {
@@ -51,7 +51,7 @@ impl KoepkeFoam {
     ///
     /// # References
     /// Koepke P. 1984, "Effective reflectance of oceanic whitecaps", Appl. Opt. 23(11):1816–1824
-    /// (`R_f` ≈ 0.55, `f_ef` = 0.4 ± 0.2); equation sheet §5.
+    /// (`R_f` ≈ 0.55, `f_ef` = 0.4 ± 0.2); docs/equations.md §5.
     pub fn new(fresh_reflectance: f64, efficiency: f64) -> Result<Self, FoamError> {
         check("fresh_reflectance", fresh_reflectance, fresh_reflectance > 0.0 && fresh_reflectance <= 1.0, "(0, 1]")?;
         check("efficiency", efficiency, efficiency > 0.0 && efficiency < 1.0, "(0, 1)")?;
@@ -74,7 +74,7 @@ impl KoepkeFoam {
     /// `R_ef` (dimensionless), `0.22` with Koepke's values.
     ///
     /// # References
-    /// Koepke 1984, §V (effective reflectance); equation sheet §5.
+    /// Koepke 1984, §V (effective reflectance); docs/equations.md §5.
     pub fn effective_reflectance(&self) -> f64 {
         self.efficiency * self.fresh_reflectance
     }
@@ -95,7 +95,7 @@ impl KoepkeFoam {
 /// `L_foam` in the irradiance unit per steradian (e.g. kcd m⁻² from klx).
 ///
 /// # References
-/// Koepke 1984 (Lambertian foam with reflectance `R_ef`); equation sheet §5 (`L_foam = R_ef E_d/π`,
+/// Koepke 1984 (Lambertian foam with reflectance `R_ef`); docs/equations.md §5 (`L_foam = R_ef E_d/π`,
 /// the `E_d/π` missing from Darles et al.).
 pub fn foam_radiance(reflectance: f64, sun_irradiance: f64, cos_sun_normal: f64, sky_irradiance: f64) -> f64 {
     debug_assert!((0.0..=1.0).contains(&reflectance) && sun_irradiance >= 0.0 && sky_irradiance >= 0.0);
@@ -118,7 +118,7 @@ pub fn foam_radiance(reflectance: f64, sun_irradiance: f64, cos_sun_normal: f64,
 /// `L` in the same unit.
 ///
 /// # References
-/// Darles et al. 2007 §4.1.2 (corrected in the equation sheet §5); Koepke 1984.
+/// Darles et al. 2007 §4.1.2 (corrected in the docs/equations.md §5); Koepke 1984.
 pub fn surface_radiance(foam_cover: f64, water_radiance: f64, foam_radiance: f64) -> f64 {
     debug_assert!((0.0..=1.0).contains(&foam_cover));
     (1.0 - foam_cover) * water_radiance + foam_cover * foam_radiance

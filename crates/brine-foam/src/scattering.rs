@@ -18,7 +18,7 @@ use crate::medium::SprayMedium;
 /// `p` (sr⁻¹).
 ///
 /// # References
-/// Henyey L., Greenstein J. 1941, Astrophys. J. 93:70–83; equation sheet §8 (Hoffman–Preetham
+/// Henyey L., Greenstein J. 1941, Astrophys. J. 93:70–83; docs/equations.md §8 (Hoffman–Preetham
 /// Mie phase).
 pub fn henyey_greenstein(cos_theta: f64, g: f64) -> f64 {
     debug_assert!(g > -1.0 && g < 1.0);
@@ -87,9 +87,9 @@ impl SprayScattering {
 /// the camera is `T L_surface + L_in` ([`SprayRay::radiance`]).
 ///
 /// # References
-/// Darles et al. 2007 §4.2 (per-sphere integration; errata in the equation sheet §6: a product of
+/// Darles et al. 2007 §4.2 (per-sphere integration; errata in the docs/equations.md §6: a product of
 /// transmittances, not a sum); Preetham, Shirley & Smits 1999 and Hoffman & Preetham 2002
-/// (extinction plus in-scattering, equation sheet §8).
+/// (extinction plus in-scattering, docs/equations.md §8).
 #[derive(Debug, Clone, Copy)]
 pub struct SprayRay<'a> {
     medium: &'a SprayMedium,

@@ -38,7 +38,7 @@ pub const G: f64 = 9.81;
 /// Monahan E., Spiel D., Davidson K. 1986, "A model of marine aerosol generation via whitecaps
 /// and wave disruption", in *Oceanic Whitecaps*, Reidel, pp. 167–174; Darles et al. 2007 Eq. 5
 /// (garbled: 0.0057 for 0.057, `10^1.19 e^{−B²}` for `10^{1.19 e^{−B²}}`, `B` misprinted);
-/// equation sheet §6.
+/// docs/equations.md §6.
 pub fn msd86_flux(r80_um: f64, u10: f64) -> f64 {
     debug_assert!(r80_um > 0.0 && (0.0..=60.0).contains(&u10), "r = {r80_um} µm, U10 = {u10} m/s");
     let b = (0.380 - libm::log10(r80_um)) / 0.650;
@@ -59,7 +59,7 @@ pub fn msd86_flux(r80_um: f64, u10: f64) -> f64 {
 /// `v_s` (m s⁻¹): 3.1 mm s⁻¹ at 5 µm.
 ///
 /// # References
-/// Stokes' law; equation sheet §6 (`v_s(5 µm) ≈ 3 mm/s`).
+/// Stokes' law; docs/equations.md §6 (`v_s(5 µm) ≈ 3 mm/s`).
 pub fn stokes_settling_velocity(r_um: f64) -> f64 {
     debug_assert!(r_um > 0.0);
     let r = r_um * 1e-6;
@@ -80,7 +80,7 @@ pub fn stokes_settling_velocity(r_um: f64) -> f64 {
 /// `s′/W` (dimensionless, `≥ 0`, mean 1 over the sea), 0 when `W = 0`.
 ///
 /// # References
-/// Darles et al. 2007 Eq. 6; equation sheet §6 (errata).
+/// Darles et al. 2007 Eq. 6; docs/equations.md §6 (errata).
 pub fn spray_foam_factor(foam_amount: f64, coverage: f64) -> f64 {
     debug_assert!((0.0..=1.0).contains(&foam_amount) && (0.0..=1.0).contains(&coverage));
     if coverage > 0.0 { foam_amount / coverage } else { 0.0 }

@@ -22,7 +22,7 @@ use crate::fresnel_dielectric;
 /// # References
 /// Jensen et al. 2001, "A practical model for subsurface light transport", SIGGRAPH 511–518,
 /// §2.3 (the `η ≥ 1` branch); Egan W., Hilgeman T. 1973 (both branches, as quoted by Donner &
-/// Jensen 2005, "Light diffusion in multi-layered translucent materials"); equation sheet §12.
+/// Jensen 2005, "Light diffusion in multi-layered translucent materials"); docs/equations.md §12.
 pub fn diffuse_fresnel_reflectance(eta: f64) -> f64 {
     if eta >= 1.0 {
         -1.440 / (eta * eta) + 0.710 / eta + 0.668 + 0.0636 * eta
@@ -68,7 +68,7 @@ impl DipoleMaterial {
     /// [`OpticsError::OutOfRange`] naming the parameter.
     ///
     /// # References
-    /// Jensen et al. 2001, Eq. 4–5 and §2.3–2.4; equation sheet §12 (with the Li Ying et al. 2018
+    /// Jensen et al. 2001, Eq. 4–5 and §2.3–2.4; docs/equations.md §12 (with the Li Ying et al. 2018
     /// errata: `z_r = 1/σ′_t`, not 1; `A` a quotient).
     pub fn new(sigma_a: f64, sigma_s: f64, g: f64, eta: f64) -> Result<Self, OpticsError> {
         check("sigma_a", sigma_a, sigma_a >= 0.0, "[0, ∞) per unit length")?;
@@ -148,7 +148,7 @@ impl DipoleMaterial {
     /// `R_d` (length⁻²), finite and `≥ 0`.
     ///
     /// # References
-    /// Jensen et al. 2001, Eq. 4; Li Ying et al. 2018 Eq. 9; equation sheet §12.
+    /// Jensen et al. 2001, Eq. 4; Li Ying et al. 2018 Eq. 9; docs/equations.md §12.
     pub fn diffuse_reflectance(&self, r: f64) -> f64 {
         let r2 = r * r;
         let term = |z: f64| {
@@ -165,7 +165,7 @@ impl DipoleMaterial {
     /// `R` (dimensionless), `[0, 1]`.
     ///
     /// # References
-    /// Jensen et al. 2001, Eq. 7 (the paper's `R_d` integral); equation sheet §12.
+    /// Jensen et al. 2001, Eq. 7 (the paper's `R_d` integral); docs/equations.md §12.
     pub fn total_diffuse_reflectance(&self) -> f64 {
         let s = (3.0 * (1.0 - self.alpha_prime)).sqrt();
         0.5 * self.alpha_prime * (1.0 + (-(4.0 / 3.0) * self.a * s).exp()) * (-s).exp()
@@ -206,7 +206,7 @@ impl DipoleMaterial {
     /// `S_d` (length⁻² sr⁻¹).
     ///
     /// # References
-    /// Jensen et al. 2001, Eq. 5; Li Ying et al. 2018 Eq. 10; equation sheet §12.
+    /// Jensen et al. 2001, Eq. 5; Li Ying et al. 2018 Eq. 10; docs/equations.md §12.
     pub fn bssrdf(&self, r: f64, cos_theta_i: f64, cos_theta_o: f64) -> f64 {
         let t_i = 1.0 - fresnel_dielectric(cos_theta_i, 1.0, self.eta);
         let t_o = 1.0 - fresnel_dielectric(cos_theta_o, 1.0, self.eta);
@@ -293,7 +293,7 @@ impl LiYingParameters {
     ///
     /// # References
     /// Li Ying et al. 2018, "Real-time rendering of large-scale realistic ocean scenes driven by
-    /// time and space" (in Chinese), Table 3; equation sheet §12.
+    /// time and space" (in Chinese), Table 3; docs/equations.md §12.
     pub fn table3(set: u8) -> Result<Self, OpticsError> {
         let sigma_s = [0.2, 0.38, 1.0];
         match set {
@@ -333,7 +333,7 @@ mod tests {
     use super::*;
     use approx::assert_relative_eq;
 
-    /// Oracle values of the equation sheet are printed to 5 significant digits.
+    /// Oracle values of docs/equations.md are printed to 5 significant digits.
     const ORACLE: f64 = 1e-4;
 
     #[test]

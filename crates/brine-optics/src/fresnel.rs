@@ -19,7 +19,7 @@ pub const WATER_IOR: f64 = 1.333;
 ///
 /// # References
 /// Cook R., Torrance K. 1982, "A reflectance model for computer graphics", ACM TOG 1(1), Eq. (the
-/// unpolarised form); Chen et al. 2007 §3.4 (with the erratum of equation sheet §9: `g` is
+/// unpolarised form); Chen et al. 2007 §3.4 (with the erratum of docs/equations.md §9: `g` is
 /// `√((n_b/n_a)² + k² − 1)`).
 #[inline]
 pub fn fresnel_dielectric(cos_theta_i: f64, n_i: f64, n_t: f64) -> f64 {
@@ -48,7 +48,7 @@ pub fn fresnel_dielectric(cos_theta_i: f64, n_i: f64, n_t: f64) -> f64 {
 /// `F₀` in `[0, 1)`; `0.0204` for air–water at `n = 1.333`.
 ///
 /// # References
-/// Fresnel equations at `θ = 0`; equation sheet §9.
+/// Fresnel equations at `θ = 0`; docs/equations.md §9.
 #[inline]
 pub fn fresnel_normal(n_i: f64, n_t: f64) -> f64 {
     let r = (n_i - n_t) / (n_i + n_t);
@@ -94,7 +94,7 @@ pub fn fresnel_schlick(cos_theta_i: f64, n_i: f64, n_t: f64) -> f64 {
 /// T(θ_t; n_t → n_i)` for the Snell pair `(θᵢ, θ_t)`.
 ///
 /// # References
-/// Energy conservation at a non-absorbing interface; equation sheet §9.
+/// Energy conservation at a non-absorbing interface; docs/equations.md §9.
 #[inline]
 pub fn fresnel_transmittance(cos_theta_i: f64, n_i: f64, n_t: f64) -> f64 {
     1.0 - fresnel_dielectric(cos_theta_i, n_i, n_t)
@@ -109,7 +109,7 @@ pub fn fresnel_transmittance(cos_theta_i: f64, n_i: f64, n_t: f64) -> f64 {
 /// `θ_c` (rad); `None` if `n_i ≤ n_t` (no total internal reflection). 48.607° from water (1.333).
 ///
 /// # References
-/// Snell's law at `θ_t = 90°`; equation sheet §9.
+/// Snell's law at `θ_t = 90°`; docs/equations.md §9.
 pub fn critical_angle(n_i: f64, n_t: f64) -> Option<f64> {
     (n_i > n_t).then(|| (n_t / n_i).asin())
 }
@@ -152,7 +152,7 @@ mod tests {
     use super::*;
     use approx::assert_relative_eq;
 
-    /// The oracle values of the equation sheet are printed with 6 significant digits.
+    /// The oracle values of docs/equations.md are printed with 6 significant digits.
     const ORACLE: f64 = 2e-5;
 
     fn cos_deg(d: f64) -> f64 {

@@ -88,7 +88,7 @@ impl Chlorophyll {
 ///
 /// # References
 /// Pope R., Fry E. 1997, "Absorption spectrum (380–700 nm) of pure water. II. Integrating cavity
-/// measurements", Applied Optics 36(33):8710–8723, Table 3; equation sheet §7.
+/// measurements", Applied Optics 36(33):8710–8723, Table 3; docs/equations.md §7.
 pub fn pure_water_absorption(lambda_nm: f64) -> f64 {
     tables::pope_fry().at(0, lambda_nm)
 }
@@ -104,7 +104,7 @@ pub fn pure_water_absorption(lambda_nm: f64) -> f64 {
 ///
 /// # References
 /// Morel A. 1974, "Optical properties of pure water and pure sea water"; Morel 1988, JGR
-/// 93(C9):10749–10768; equation sheet §7.
+/// 93(C9):10749–10768; docs/equations.md §7.
 pub fn pure_seawater_scattering(lambda_nm: f64) -> f64 {
     let t = tables::morel();
     t.at(t.column("b_w_per_m"), lambda_nm)
@@ -119,7 +119,7 @@ pub fn pure_seawater_scattering(lambda_nm: f64) -> f64 {
 /// `b_w` (m⁻¹); `0.0029` at 500 nm.
 ///
 /// # References
-/// Morel 1974 (`b_w ∝ λ^{−4.32}`); equation sheet §7.
+/// Morel 1974 (`b_w ∝ λ^{−4.32}`); docs/equations.md §7.
 pub fn pure_seawater_scattering_power_law(lambda_nm: f64) -> f64 {
     0.00758 * (400.0 / lambda_nm).powf(4.32)
 }
@@ -134,7 +134,7 @@ pub fn pure_seawater_scattering_power_law(lambda_nm: f64) -> f64 {
 ///
 /// # References
 /// Prieur L., Sathyendranath S. 1981, Limnol. Oceanogr. 26(4):671–689, Table 2; used by Morel
-/// 1991 and Premoze & Ashikhmin 2001; equation sheet §7.
+/// 1991 and Premoze & Ashikhmin 2001; docs/equations.md §7.
 pub fn chlorophyll_specific_absorption(lambda_nm: f64) -> f64 {
     tables::prieur_sathyendranath().at(0, lambda_nm)
 }
@@ -149,7 +149,7 @@ pub fn chlorophyll_specific_absorption(lambda_nm: f64) -> f64 {
 ///
 /// # References
 /// Morel A. 1988, "Optical modeling of the upper ocean in relation to its biogenous matter
-/// content (case I waters)", JGR 93(C9):10749–10768, Table 2; equation sheet §7.
+/// content (case I waters)", JGR 93(C9):10749–10768, Table 2; docs/equations.md §7.
 pub fn morel_kd_coefficients(lambda_nm: f64) -> (f64, f64, f64) {
     let t = tables::morel();
     (t.at(0, lambda_nm), t.at(1, lambda_nm), t.at(2, lambda_nm))
@@ -165,7 +165,7 @@ pub fn morel_kd_coefficients(lambda_nm: f64) -> (f64, f64, f64) {
 /// `K_d` (m⁻¹); e.g. 0.1139 m⁻¹ at 450 nm for `C = 1`.
 ///
 /// # References
-/// Morel 1988, Eq. 7 and Table 2; equation sheet §7.
+/// Morel 1988, Eq. 7 and Table 2; docs/equations.md §7.
 pub fn morel_kd(lambda_nm: f64, chl: Chlorophyll) -> f64 {
     let (k_w, chi, e) = morel_kd_coefficients(lambda_nm);
     if chl.0 == 0.0 { k_w } else { k_w + chi * chl.0.powf(e) }
@@ -190,7 +190,7 @@ pub fn morel_kd(lambda_nm: f64, chl: Chlorophyll) -> f64 {
 /// # References
 /// Premoze S., Ashikhmin M. 2001, "Rendering natural waters", CGF 20(4):189–200, §3; Morel A.
 /// 1988, JGR 93(C9), Eq. 3, 7, 12 and Table 2; Morel A. 1991, Prog. Oceanogr. 26:263–306;
-/// Gordon H., Morel A. 1983; equation sheet §7.
+/// Gordon H., Morel A. 1983; docs/equations.md §7.
 pub fn case1_iops(lambda_nm: f64, chl: Chlorophyll) -> Iops {
     let lambda = lambda_nm.clamp(LAMBDA_MIN_NM, LAMBDA_MAX_NM);
     let c = chl.0;

@@ -82,7 +82,7 @@ impl JerlovType {
     /// `K_d` (m⁻¹); the published value at each tabulated wavelength.
     ///
     /// # References
-    /// Jerlov N. G. 1976, *Marine Optics* (2nd ed., Elsevier), Table XXVII; equation sheet §7.
+    /// Jerlov N. G. 1976, *Marine Optics* (2nd ed., Elsevier), Table XXVII; docs/equations.md §7.
     pub fn kd(self, lambda_nm: f64) -> f64 {
         tables::jerlov().at(self.column(), lambda_nm)
     }
@@ -228,7 +228,7 @@ mod tests {
 
     #[test]
     fn type_ii_kd_at_480_is_about_0_064() {
-        // Equation sheet §7: Jerlov II K_d(480) ≈ 0.064 m⁻¹; linear between 0.062 (475) and
+        // docs/equations.md §7: Jerlov II K_d(480) ≈ 0.064 m⁻¹; linear between 0.062 (475) and
         // 0.070 (500): 0.062 + 0.2 × 0.008 = 0.0636.
         /// Rounding only (the interpolation is exact in decimal to 4 places).
         const ROUNDING: f64 = 1e-15;

@@ -59,7 +59,7 @@ impl SlopeVariance {
     /// [`OpticsError::OutOfRange`] if either is negative, NaN or infinite.
     ///
     /// # References
-    /// Bruneton, Neyret & Holzschuch 2010, §4 (the clamp) and Eq. 4; equation sheet §11.
+    /// Bruneton, Neyret & Holzschuch 2010, §4 (the clamp) and Eq. 4; docs/equations.md §11.
     pub fn new(sigma_x2: f64, sigma_y2: f64) -> Result<Self, OpticsError> {
         check("sigma_x2", sigma_x2, sigma_x2 >= 0.0, "[0, ∞)")?;
         check("sigma_y2", sigma_y2, sigma_y2 >= 0.0, "[0, ∞)")?;
@@ -103,7 +103,7 @@ impl SlopeVariance {
     /// # References
     /// Cox C., Munk W. 1954, "Measurement of the roughness of the sea surface from photographs of
     /// the sun's glitter", JOSA 44(11):838–850, Eq. 4 and Table 1 (clean surface, `U` at 12.5 m);
-    /// equation sheet §11.
+    /// docs/equations.md §11.
     pub fn cox_munk_clean(u12_5: f64) -> Result<Self, OpticsError> {
         let u = check("u12_5_m_s", u12_5, (0.0..=60.0).contains(&u12_5), "[0, 60] m/s")?;
         Ok(Self::clamped(3.16e-3 * u, 0.003 + 1.92e-3 * u))
@@ -135,14 +135,14 @@ impl SlopeVariance {
     /// `max(σ² − σ²_resolved, 2×10⁻⁵)` per axis.
     ///
     /// # References
-    /// Bruneton, Neyret & Holzschuch 2010, §4 ("seamless transition"); equation sheet §11.
+    /// Bruneton, Neyret & Holzschuch 2010, §4 ("seamless transition"); docs/equations.md §11.
     pub fn minus(&self, resolved_x2: f64, resolved_y2: f64) -> Self {
         Self::clamped(self.sigma_x2 - resolved_x2, self.sigma_y2 - resolved_y2)
     }
 
     /// Slope variance in the azimuth plane of the direction `s` (local frame):
     /// `σ_s² = σx² cos²φ + σy² sin²φ`, `cos²φ = s_x²/(s_x² + s_y²)` (the tangent form; the
-    /// published shader's angle form is an erratum, equation sheet §11).
+    /// published shader's angle form is an erratum, docs/equations.md §11).
     ///
     /// # Arguments
     /// - `s`: a direction in the local wind frame (need not be unit; only its azimuth is used).
@@ -153,7 +153,7 @@ impl SlopeVariance {
     ///
     /// # References
     /// Bruneton, Neyret & Holzschuch 2010, Eq. 6 (the variance of the slope along a direction of a
-    /// Gaussian with diagonal covariance); equation sheet §11.
+    /// Gaussian with diagonal covariance); docs/equations.md §11.
     pub fn along(&self, s: DVec3) -> f64 {
         let h2 = s.x * s.x + s.y * s.y;
         if h2 <= 0.0 {
@@ -175,7 +175,7 @@ impl SlopeVariance {
 ///
 /// # References
 /// Bruneton, Neyret & Holzschuch 2010, "Real-time realistic ocean lighting using seamless
-/// transitions from geometry to BRDF", CGF 29(2), Eq. 4; equation sheet §11.
+/// transitions from geometry to BRDF", CGF 29(2), Eq. 4; docs/equations.md §11.
 pub fn slope_pdf(zeta_x: f64, zeta_y: f64, variance: &SlopeVariance) -> f64 {
     let (sx2, sy2) = (variance.sigma_x2, variance.sigma_y2);
     (-0.5 * (zeta_x * zeta_x / sx2 + zeta_y * zeta_y / sy2)).exp() / (2.0 * PI * (sx2 * sy2).sqrt())
@@ -192,7 +192,7 @@ pub fn slope_pdf(zeta_x: f64, zeta_y: f64, variance: &SlopeVariance) -> f64 {
 /// `Λ ≥ 0` (dimensionless); `0` at normal incidence. Uses `libm::erfc` (full precision).
 ///
 /// # References
-/// Smith 1967; Bruneton et al. 2010, Eq. 6; equation sheet §11.
+/// Smith 1967; Bruneton et al. 2010, Eq. 6; docs/equations.md §11.
 pub fn smith_lambda(cos_theta: f64, sigma_s2: f64) -> f64 {
     debug_assert!(sigma_s2 > 0.0);
     let mu = cos_theta.clamp(1e-6, 1.0);
@@ -218,7 +218,7 @@ pub fn smith_lambda(cos_theta: f64, sigma_s2: f64) -> f64 {
 /// the horizon are clamped to `z = 0.01` as in the authors' shader.
 ///
 /// # References
-/// Bruneton et al. 2010, Eq. 7–8; equation sheet §11 (with the visibility-weighted density of the
+/// Bruneton et al. 2010, Eq. 7–8; docs/equations.md §11 (with the visibility-weighted density of the
 /// Li Ying et al. 2018 erratum).
 pub fn ocean_brdf(v: DVec3, l: DVec3, variance: &SlopeVariance, n_water: f64) -> f64 {
     if v.z <= 0.0 || l.z <= 0.0 {
@@ -246,7 +246,7 @@ pub fn ocean_brdf(v: DVec3, l: DVec3, variance: &SlopeVariance, n_water: f64) ->
 /// The reflected radiance, in that unit per steradian.
 ///
 /// # References
-/// Bruneton et al. 2010, Eq. 9 ("reflectedSunRadiance" in the authors' shader); equation sheet §11.
+/// Bruneton et al. 2010, Eq. 9 ("reflectedSunRadiance" in the authors' shader); docs/equations.md §11.
 pub fn reflected_sun_radiance(v: DVec3, l: DVec3, variance: &SlopeVariance, sun_irradiance: f64) -> f64 {
     ocean_brdf(v, l, variance, WATER_IOR) * sun_irradiance * l.z.max(0.0)
 }
@@ -513,7 +513,7 @@ impl SunDisc {
 /// The reflected radiance, in the unit of `sun_irradiance` per steradian; `≥ 0`, finite.
 ///
 /// # References
-/// Bruneton, Neyret & Holzschuch 2010, Eq. 7–9 (the BRDF and the reflected sun); equation sheet
+/// Bruneton, Neyret & Holzschuch 2010, Eq. 7–9 (the BRDF and the reflected sun); docs/equations.md
 /// §11; the disc integral is the definition of reflected radiance, `L_r = ∫ ρ L_i cos θ_i dω_i`
 /// (Nicodemus et al. 1977, "Geometrical considerations and nomenclature for reflectance", NBS
 /// Monograph 160).
@@ -584,7 +584,7 @@ pub fn reflected_source_radiance(
 /// `F̄` in `[0.02, 1]`.
 ///
 /// # References
-/// Bruneton et al. 2010, §5.2 (`meanFresnel` in the authors' shader); equation sheet §11.
+/// Bruneton et al. 2010, §5.2 (`meanFresnel` in the authors' shader); docs/equations.md §11.
 pub fn mean_fresnel(cos_theta_v: f64, sigma_v: f64) -> f64 {
     let vz = cos_theta_v.clamp(0.0, 1.0);
     let s = sigma_v.max(0.0);
@@ -603,13 +603,22 @@ mod tests {
         let (v, l) = (DVec3::new(0.3, 0.0, 1.0).normalize(), DVec3::new(-0.3, 0.0, 1.0).normalize());
         let rough = SlopeVariance::new(0.04, 0.03).unwrap();
         assert!(sun.image_size(v, l, &rough) <= POINT_DISC_Q);
-        assert_eq!(reflected_source_radiance(v, l, &rough, 1.0, &sun), reflected_sun_radiance(v, l, &rough, 1.0));
+        assert_eq!(
+            reflected_source_radiance(v, l, &rough, 1.0, &sun).to_bits(),
+            reflected_sun_radiance(v, l, &rough, 1.0).to_bits()
+        );
         let calm = SlopeVariance::new(1e-5, 1e-5).unwrap();
         assert!(sun.image_size(v, l, &calm) > POINT_DISC_Q);
-        assert_eq!(reflected_source_radiance(v, l, &calm, 1.0, &sun), reflected_disc_radiance(v, l, &calm, 1.0, &sun));
+        assert_eq!(
+            reflected_source_radiance(v, l, &calm, 1.0, &sun).to_bits(),
+            reflected_disc_radiance(v, l, &calm, 1.0, &sun).to_bits()
+        );
         // Far in the tail, the point form again.
         let away = DVec3::new(0.9, 0.0, 0.2).normalize();
-        assert_eq!(reflected_source_radiance(v, away, &calm, 1.0, &sun), reflected_sun_radiance(v, away, &calm, 1.0));
+        assert_eq!(
+            reflected_source_radiance(v, away, &calm, 1.0, &sun).to_bits(),
+            reflected_sun_radiance(v, away, &calm, 1.0).to_bits()
+        );
     }
 
     /// The profile's factor `ln(62 500)/ln(50 000)` = 1.020 62.
@@ -623,7 +632,7 @@ mod tests {
     }
     use approx::assert_relative_eq;
 
-    /// Oracle values of the equation sheet are given to 5 significant digits.
+    /// Oracle values of docs/equations.md are given to 5 significant digits.
     const ORACLE: f64 = 1e-4;
 
     /// The glitter equation inverts the BRDF's sun reflection: the density it returns is the

@@ -12,7 +12,7 @@ use glam::DVec3;
 /// The reflected direction.
 ///
 /// # References
-/// Law of reflection; equation sheet §9.
+/// Law of reflection; docs/equations.md §9.
 #[inline]
 pub fn reflect(d: DVec3, n: DVec3) -> DVec3 {
     d - 2.0 * d.dot(n) * n

@@ -94,7 +94,7 @@ impl SkyReflection {
     ///
     /// # References
     /// Bruneton, Neyret & Holzschuch 2010, Eq. 7–8 and §5.2 (the filtered sky, which their
-    /// real-time version approximates by [`reflected_sky_radiance_filtered`]); equation sheet §11.
+    /// real-time version approximates by [`reflected_sky_radiance_filtered`]); docs/equations.md §11.
     pub fn reflected_radiance(&self, v: DVec3, variance: &SlopeVariance, sky: impl FnMut(DVec3) -> DVec3) -> DVec3 {
         let n = self.n_water;
         self.integrate(v, variance, |c| fresnel_dielectric(c, 1.0, n), sky)
@@ -188,7 +188,7 @@ impl RoughReflectance {
     ///
     /// # References
     /// Bruneton, Neyret & Holzschuch 2010, Eq. 7–8 (the integrand) and §5.2 (`F̄(v)`, the role the
-    /// table plays); equation sheet §11.
+    /// table plays); docs/equations.md §11.
     pub fn new(n_water: f64) -> Result<Self, OpticsError> {
         let rule = SkyReflection::new(8, n_water)?;
         let mut table = Vec::with_capacity(Self::U * Self::S);

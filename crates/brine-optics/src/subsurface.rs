@@ -1,5 +1,5 @@
 //! The radiance of the water body seen along a refracted ray: Darles et al. 2007 §4.3 after
-//! Premoze & Ashikhmin 2001, with the corrections of equation sheet §7.
+//! Premoze & Ashikhmin 2001, with the corrections of docs/equations.md §7.
 
 use std::f64::consts::PI;
 
@@ -16,7 +16,7 @@ use crate::fresnel_dielectric;
 ///
 /// # References
 /// Morel A., Prieur L. 1977, "Analysis of variations in ocean color", Limnol. Oceanogr. 22;
-/// Darles et al. 2007 Eq. 9; Premoze & Ashikhmin 2001; equation sheet §7.
+/// Darles et al. 2007 Eq. 9; Premoze & Ashikhmin 2001; docs/equations.md §7.
 #[inline]
 pub fn irradiance_reflectance(b_b: f64, a: f64) -> f64 {
     debug_assert!(a > 0.0 && b_b >= 0.0);
@@ -34,7 +34,7 @@ pub fn irradiance_reflectance(b_b: f64, a: f64) -> f64 {
 /// `R` (dimensionless).
 ///
 /// # References
-/// Morel A. 1988, JGR 93(C9), Eq. 12–13 (as coded in 6S `morcasiwat`); equation sheet §7.
+/// Morel A. 1988, JGR 93(C9), Eq. 12–13 (as coded in 6S `morcasiwat`); docs/equations.md §7.
 pub fn irradiance_reflectance_morel(b_b: f64, k_d: f64) -> f64 {
     debug_assert!(k_d > 0.0 && b_b >= 0.0);
     let mut r = 0.33 * b_b / (0.75 * k_d);
@@ -61,7 +61,7 @@ pub fn irradiance_reflectance_morel(b_b: f64, k_d: f64) -> f64 {
 ///
 /// # References
 /// Darles et al. 2007 Eq. 9 (corrected: an irradiance `E_d`, not the radiance `L(0)` of their
-/// second form); equation sheet §7.
+/// second form); docs/equations.md §7.
 #[inline]
 pub fn diffuse_upwelling_radiance(reflectance: f64, e_d_below: f64) -> f64 {
     reflectance * e_d_below / PI
@@ -84,7 +84,7 @@ pub fn diffuse_upwelling_radiance(reflectance: f64, e_d_below: f64) -> f64 {
 ///
 /// # References
 /// Darles et al. 2007 Eq. 8 and 11 (corrected: `cos θ` kept in the exponent, path length not
-/// depth, the floor term restored); Premoze & Ashikhmin 2001; equation sheet §7.
+/// depth, the floor term restored); Premoze & Ashikhmin 2001; docs/equations.md §7.
 #[inline]
 pub fn refracted_ray_radiance(l_df0: f64, c: f64, k_d: f64, cos_theta: f64, path_m: f64, floor_radiance: f64) -> f64 {
     debug_assert!(c > 0.0 && k_d >= 0.0 && path_m >= 0.0);
@@ -107,7 +107,7 @@ pub fn refracted_ray_radiance(l_df0: f64, c: f64, k_d: f64, cos_theta: f64, path
 /// The radiance in the unit of `l_df0`.
 ///
 /// # References
-/// Darles et al. 2007 Eq. 10–11; equation sheet §7.
+/// Darles et al. 2007 Eq. 10–11; docs/equations.md §7.
 pub fn refracted_ray_radiance_sum(
     l_df0: f64,
     c: f64,
@@ -143,7 +143,7 @@ pub fn refracted_ray_radiance_sum(
 ///
 /// # References
 /// Lambert's law with `E_d(z) = E_d(0⁻) e^{−K_d z}` (definition of `K_d`); Premoze & Ashikhmin
-/// 2001 (sea-floor term); equation sheet §7.
+/// 2001 (sea-floor term); docs/equations.md §7.
 #[inline]
 pub fn lambertian_floor_radiance(albedo: f64, e_d_below: f64, k_d: f64, depth_m: f64) -> f64 {
     albedo * e_d_below * (-k_d * depth_m.max(0.0)).exp() / PI
@@ -162,7 +162,7 @@ pub fn lambertian_floor_radiance(albedo: f64, e_d_below: f64, k_d: f64, depth_m:
 ///
 /// # References
 /// The `n²` law of radiance across a refracting interface (e.g. Mobley 1994, *Light and Water*,
-/// §4.3); Fresnel transmittance `1 − F`; equation sheet §7 and §9.
+/// §4.3); Fresnel transmittance `1 − F`; docs/equations.md §7 and §9.
 #[inline]
 pub fn radiance_out_of_water(radiance_below: f64, cos_theta_water: f64, n_water: f64) -> f64 {
     let f = fresnel_dielectric(cos_theta_water, n_water, 1.0);

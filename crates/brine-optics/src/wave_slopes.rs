@@ -21,7 +21,7 @@ pub struct WaveComponent {
 /// `(σx², σy²)` (dimensionless), downwind and crosswind.
 ///
 /// # References
-/// Bruneton, Neyret & Holzschuch 2010, §4 (`σ² = Σ A_i² k_i²/2` per axis); equation sheet §11.
+/// Bruneton, Neyret & Holzschuch 2010, §4 (`σ² = Σ A_i² k_i²/2` per axis); docs/equations.md §11.
 pub fn slope_variance_sines(waves: &[WaveComponent]) -> (f64, f64) {
     waves.iter().fold((0.0, 0.0), |(x, y), w| {
         let m = 0.5 * (w.amplitude_m * w.wavenumber).powi(2);
@@ -41,7 +41,7 @@ pub fn slope_variance_sines(waves: &[WaveComponent]) -> (f64, f64) {
 /// small `Q` (the sine-wave value).
 ///
 /// # References
-/// Equation sheet §1 and §11 (derived: the area-weighted mean of `tan²` of the trochoid profile).
+/// docs/equations.md §1 and §11 (derived: the area-weighted mean of `tan²` of the trochoid profile).
 pub fn trochoid_mean_square_slope(steepness: f64) -> f64 {
     let q = steepness.clamp(0.0, 1.0);
     // 1 − √(1 − q²) = q²/(1 + √(1 − q²)), without cancellation for small q.
@@ -58,7 +58,7 @@ pub fn trochoid_mean_square_slope(steepness: f64) -> f64 {
 /// `(σx², σy²)` (dimensionless).
 ///
 /// # References
-/// Equation sheet §11 (trochoid set); Bruneton et al. 2010 §4 for the split by direction.
+/// docs/equations.md §11 (trochoid set); Bruneton et al. 2010 §4 for the split by direction.
 pub fn slope_variance_trochoids(waves: &[WaveComponent]) -> (f64, f64) {
     waves.iter().fold((0.0, 0.0), |(x, y), w| {
         let m = trochoid_mean_square_slope(w.amplitude_m * w.wavenumber);

@@ -278,7 +278,7 @@ proptest! {
     ) {
         // ∫₀^∞ R_d(r) 2πr dr by composite Gauss–Legendre on geometric panels, against Jensen's
         // closed form, for any phase-function asymmetry g (which enters through σ′_s = σ_s(1 − g)).
-        /// The criterion; the panels resolve `R_d` to about 10⁻¹⁰.
+        /// The acceptance criterion; the panels resolve `R_d` to about 10⁻¹⁰.
         const CLOSED_FORM: f64 = 1e-6;
         let m = DipoleMaterial::new(sigma_a, sigma_s, g, eta).unwrap();
         let end = 60.0 / m.sigma_tr() + 60.0 * m.z_v();

@@ -18,7 +18,7 @@ const MOREL: &str = include_str!("../data/morel_1988_kd.csv");
 const PRIEUR: &str = include_str!("../data/prieur_sathyendranath_1981_chl_absorption.csv");
 const JERLOV: &str = include_str!("../data/jerlov_1976_kd.csv");
 
-/// Values printed in the equation sheet (3–4 significant digits): half a unit in the last digit.
+/// Values printed in docs/equations.md (3–4 significant digits): half a unit in the last digit.
 const SHEET_ROUNDING: f64 = 5e-3;
 
 #[test]
@@ -29,7 +29,7 @@ fn pope_fry_1997_table_is_returned_exactly() {
     for row in &r {
         assert_eq!(pure_water_absorption(row[0]), row[1], "λ = {}", row[0]);
     }
-    // Spot values of the equation sheet §7 (Pope & Fry 1997).
+    // Spot values of the docs/equations.md §7 (Pope & Fry 1997).
     for (l, a) in [(450.0, 0.0092), (500.0, 0.0204), (550.0, 0.0565), (600.0, 0.222), (650.0, 0.340)] {
         assert_relative_eq!(pure_water_absorption(l), a, max_relative = SHEET_ROUNDING);
     }

@@ -106,7 +106,7 @@ proptest! {
         // r = 10⁻⁷ rad: the image of the disc in slope space, a ≈ r/(2 v·h), is below 10⁻⁵ σ
         // for these angles, and the cap average of ρ l_z differs from its centre value by
         // O((ζ a/σ²)²) ≲ 10⁻⁸ even ten standard deviations into the lobe's tail.
-        /// The criterion for the limit r → 0.
+        /// The acceptance criterion for the limit r → 0.
         const POINT_LIMIT: f64 = 1e-6;
         let var = SlopeVariance::new(sx, sy).unwrap();
         let (v, l) = (dir(tv, pv), dir(tl, pl));

@@ -82,7 +82,7 @@ fn main() {
         "frame benchmark: 640×480, every phenomenon on, 1 spp, {} threads, median of {RUNS}",
         rayon::current_num_threads()
     );
-    let trochoids = measure("trochoids, N = 100 (the issue's frame)", &scene);
+    let trochoids = measure("trochoids, N = 100 (the reference frame)", &scene);
     scene.sea.surface = SurfaceKind::Fft;
     let fft = measure("FFT ocean, 4 cascades × 256² (same scene, surface = \"fft\")", &scene);
     println!("\nFFT / trochoids frame time: {:.2}×", fft / trochoids);

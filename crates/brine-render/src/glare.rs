@@ -31,7 +31,7 @@ use rustfft::{Fft, FftPlanner};
 ///
 /// # References
 /// Spencer G., Shirley P., Zimmerman K., Greenberg D. 1995, "Physically-based glare effects for
-/// digital images", SIGGRAPH 325–334, Eq. 5–8 (photopic); equation sheet §15.
+/// digital images", SIGGRAPH 325–334, Eq. 5–8 (photopic); docs/equations.md §15.
 pub fn spencer_photopic_psf(theta_deg: f64) -> f64 {
     let t = theta_deg.max(0.0);
     let f0 = 2.61e6 * (-(t / 0.02).powi(2)).exp();
@@ -229,7 +229,7 @@ mod tests {
 
     #[test]
     fn psf_oracles() {
-        // Equation sheet "Test oracles": P(0, 0.1°, 1°, 10°) = 2.2766e6, 6.4777e3, 19.018, 0.10941.
+        // docs/equations.md "Test oracles": P(0, 0.1°, 1°, 10°) = 2.2766e6, 6.4777e3, 19.018, 0.10941.
         assert_relative_eq!(spencer_photopic_psf(0.0), 2.2766e6, max_relative = ORACLE);
         assert_relative_eq!(spencer_photopic_psf(0.1), 6.4777e3, max_relative = ORACLE);
         assert_relative_eq!(spencer_photopic_psf(1.0), 19.018, max_relative = ORACLE);

@@ -518,7 +518,7 @@ fn floor_radiance(world: &World, point: DVec3, light: DirectLight) -> DVec3 {
 }
 
 /// Upwelling radiance just below the surface along the downward refracted ray `t` from the
-/// surface point `p`: Darles et al. 2007 Eq. 8–11 (corrected, equation sheet §7) with the floor
+/// surface point `p`: Darles et al. 2007 Eq. 8–11 (corrected, docs/equations.md §7) with the floor
 /// traced by the same sphere tracer.
 fn water_column_radiance(world: &World, p: DVec3, t: DVec3, light: DirectLight, cx: &mut Counters) -> DVec3 {
     let cos_theta = (-t.y).clamp(0.0, 1.0);
@@ -680,7 +680,7 @@ fn crest_radiance(world: &World, field: &SeaField<'_>, p: DVec3, v: DVec3, n: DV
 }
 
 /// Diffuse radiance of the water body at depth `z` (m), `L_df(0) e^{−K_d z}`, toward a camera
-/// under water: the in-water "background" (equation sheet §7, isotropic approximation).
+/// under water: the in-water "background" (docs/equations.md §7, isotropic approximation).
 fn water_background(world: &World, z: f64) -> DVec3 {
     let l0 = world.water.diffuse_upwelling_radiance(world.e_below);
     l0 * (-world.water.k_d * z.max(0.0)).exp()

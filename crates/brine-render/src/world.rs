@@ -349,7 +349,7 @@ pub fn rough_reflectance() -> &'static RoughReflectance {
 }
 
 /// Mean cosine `g` of the scattering phase function of sea water used by the crest dipole: the
-/// particle phase function's 0.92 (Petzold; equation sheet §12 "physically based defaults").
+/// particle phase function's 0.92 (Petzold; docs/equations.md §12 "physically based defaults").
 pub const CREST_PHASE_G: f64 = 0.92;
 
 /// A Lambertian sea floor `y = −depth + h(x, z)` shaped by a static trochoid set.

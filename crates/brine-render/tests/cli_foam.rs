@@ -10,7 +10,7 @@ use serde_json::Value;
 /// printed by `serde_json` with round-trip precision.
 const FORMULA_ROUNDING: f64 = 1e-12;
 
-/// Relative tolerance on values printed with 4 significant digits (the equation sheet's oracles).
+/// Relative tolerance on values printed with 4 significant digits (the reference's (docs/equations.md) oracles).
 const FOUR_DIGITS: f64 = 6e-4;
 
 /// `½(1 + erf(0))` is exactly ½; only the last ulp may differ.
@@ -19,7 +19,7 @@ const HALF_ROUNDING: f64 = 1e-15;
 /// Rounding of the log-spaced radii `a (b/a)^{i/(n−1)}` against the ends of their range (µm).
 const RADIUS_ROUNDING_UM: f64 = 1e-9;
 
-/// The acceptance tolerance for the calibrated whitecap coverage against Monahan's.
+/// The acceptance tolerance for the calibrated whitecap coverage against Monahan's.
 const CALIBRATION_REL: f64 = 0.10;
 
 fn brine(args: &[&str]) -> Output {

@@ -36,7 +36,7 @@ fn fresnel_reflectance_matches_an_independent_computation() {
     /// roundings of order-one terms.
     const ROUNDING: f64 = 1e-14;
     assert!((r - amplitude_reflectance(1.0, 1.333, 0.5)).abs() < ROUNDING, "{r}");
-    // And the equation sheet's oracle F(60°) = 0.059691, printed to 6 significant digits.
+    // And the reference's (docs/equations.md) oracle F(60°) = 0.059691, printed to 6 significant digits.
     /// Half a unit in the 6th digit, relative.
     const SIX_DIGITS: f64 = 1e-5;
     assert!((r / 0.059691 - 1.0).abs() < SIX_DIGITS, "{r}");

@@ -63,12 +63,12 @@ fn separation_deg(alt1: f64, az1: f64, alt2: f64, az2: f64) -> f64 {
 
 const PLACE: [&str; 6] = ["--lat", "43.6", "--lon", "1.44", "--time", "2024-06-21T12:00:00Z"];
 
-/// The target for the SPA Sun: 0.01° from a high-precision ephemeris.
+/// The target for the SPA Sun: 0.01° from a high-precision ephemeris.
 const SUN_DEG: f64 = 0.01;
 /// The Earth–Sun distance comes from Schlyter's elements: 7.6×10⁻⁵ AU measured over 1950–2050
 /// (`brine-ephem/tests/reference_values.rs`), bounded by 10⁻⁴ AU.
 const SUN_AU: f64 = 1e-4;
-/// The target for the Schlyter Moon: 0.1° from a high-precision ephemeris.
+/// The target for the Schlyter Moon: 0.1° from a high-precision ephemeris.
 const MOON_DEG: f64 = 0.1;
 /// Moon distance: Schlyter's two distance terms, 0.34 % measured over 1950–2050.
 const MOON_KM_REL: f64 = 3.4e-3;

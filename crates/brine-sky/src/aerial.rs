@@ -36,7 +36,7 @@ const MIE_K_RGB: [f64; 3] = [0.686, 0.678, 0.666];
 /// `β_R` (m⁻¹): 1.3563×10⁻⁵ at 550 nm.
 ///
 /// # References
-/// Preetham et al. 1999, Appendix A.3; equation sheet §8.
+/// Preetham et al. 1999, Appendix A.3; docs/equations.md §8.
 pub fn rayleigh_beta(wavelength_nm: f64) -> f64 {
     let n2m1 = AIR_REFRACTIVE_INDEX * AIR_REFRACTIVE_INDEX - 1.0;
     let lambda = wavelength_nm * 1e-9;
@@ -57,7 +57,7 @@ pub fn rayleigh_beta(wavelength_nm: f64) -> f64 {
 /// `β_M` (m⁻¹): 7.936×10⁻⁵ at 550 nm for `T = 2`, `K = 0.678`.
 ///
 /// # References
-/// Preetham et al. 1999, Appendix A.3; the authors' `RiAtmConstants.C`; equation sheet §8.
+/// Preetham et al. 1999, Appendix A.3; the authors' `RiAtmConstants.C`; docs/equations.md §8.
 pub fn mie_beta(wavelength_nm: f64, turbidity: f64, k: f64) -> f64 {
     let c = (0.6544 * turbidity - 0.6510) * 1e-16;
     let lambda = wavelength_nm * 1e-9;
@@ -75,7 +75,7 @@ pub fn mie_beta(wavelength_nm: f64, turbidity: f64, k: f64) -> f64 {
 /// `Φ_R` (sr⁻¹), `[3/(16π), 3/(8π)]` = `[0.0597, 0.119]`; `∫ Φ_R dω = 1`.
 ///
 /// # References
-/// Hoffman & Preetham 2002; equation sheet §8 (Chen et al.'s `3/π` is an erratum).
+/// Hoffman & Preetham 2002; docs/equations.md §8 (Chen et al.'s `3/π` is an erratum).
 pub fn rayleigh_phase(cos_theta: f64) -> f64 {
     3.0 / (16.0 * PI) * (1.0 + cos_theta * cos_theta)
 }
@@ -91,7 +91,7 @@ pub fn rayleigh_phase(cos_theta: f64) -> f64 {
 /// `Φ_HG` (sr⁻¹), `> 0`: `1/(4π)` for `g = 0`, `(1 + g)/(4π(1 − g)²)` forward; `∫ Φ_HG dω = 1`.
 ///
 /// # References
-/// Henyey & Greenstein 1941, Astrophys. J. 93:70; equation sheet §8 (Hoffman & Preetham and Chen et al.
+/// Henyey & Greenstein 1941, Astrophys. J. 93:70; docs/equations.md §8 (Hoffman & Preetham and Chen et al.
 /// print `(1 − g)²`, which integrates to `(1 − g)/(1 + g)`, not 1).
 pub fn henyey_greenstein(cos_theta: f64, g: f64) -> f64 {
     (1.0 - g * g) / (4.0 * PI * (1.0 + g * g - 2.0 * g * cos_theta).powf(1.5))
@@ -111,7 +111,7 @@ pub fn henyey_greenstein(cos_theta: f64, g: f64) -> f64 {
 /// `τ ≥ 0` (dimensionless).
 ///
 /// # References
-/// Preetham et al. 1999, Appendix A.3 (flat exponential atmosphere); equation sheet §8.
+/// Preetham et al. 1999, Appendix A.3 (flat exponential atmosphere); docs/equations.md §8.
 pub fn optical_depth(beta0: f64, scale_height_m: f64, height_m: f64, cos_theta: f64, length_m: f64) -> f64 {
     let x = length_m * cos_theta / scale_height_m;
     let above = -height_m / scale_height_m;

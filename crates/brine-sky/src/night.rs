@@ -64,7 +64,7 @@ pub fn night_sky_luminance(cos_z: f64) -> f64 {
 /// `Φ ∈ [0, 1]`: 1 at full moon, 0.377 at quarter, 0 at new moon.
 ///
 /// # References
-/// Jensen H.W. et al. 2001, "A physically-based night sky model", SIGGRAPH, §4 (equation sheet
+/// Jensen H.W. et al. 2001, "A physically-based night sky model", SIGGRAPH, §4 (docs/equations.md
 /// §13).
 pub fn lommel_seeliger_phase(phase_angle: f64) -> f64 {
     let phi = phase_angle.clamp(0.0, PI);
@@ -113,7 +113,7 @@ pub fn moon_to_sun_illuminance(phase_angle: f64, distance_km: f64) -> f64 {
 /// for comparison, [`moon_to_sun_illuminance`] is the default.
 ///
 /// # References
-/// Jensen et al. 2001, §4.1; equation sheet §13.
+/// Jensen et al. 2001, §4.1; docs/equations.md §13.
 pub fn moon_to_sun_illuminance_jensen(phase_angle: f64, distance_km: f64, albedo: f64) -> f64 {
     let earthshine = 0.095 / 1361.0;
     let phi = phase_angle.clamp(0.0, PI);

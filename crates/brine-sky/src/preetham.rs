@@ -100,7 +100,7 @@ impl PerezCoefficients {
 ///
 /// # References
 /// Perez R., Seals R., Michalsky J. 1993, "All-weather model for sky luminance distribution",
-/// Solar Energy 50(3); Preetham et al. 1999, Eq. 3; equation sheet §8.
+/// Solar Energy 50(3); Preetham et al. 1999, Eq. 3; docs/equations.md §8.
 pub fn perez(cos_theta: f64, gamma: f64, k: &PerezCoefficients) -> f64 {
     debug_assert!(cos_theta > 0.0, "cos θ must be positive, got {cos_theta}");
     let cg = gamma.cos();
@@ -118,7 +118,7 @@ pub fn perez(cos_theta: f64, gamma: f64, k: &PerezCoefficients) -> f64 {
 /// `Y_z` in kcd m⁻².
 ///
 /// # References
-/// Preetham et al. 1999, Appendix A.2; equation sheet §8.
+/// Preetham et al. 1999, Appendix A.2; docs/equations.md §8.
 pub fn zenith_luminance(turbidity: f64, theta_s: f64) -> f64 {
     let chi = (4.0 / 9.0 - turbidity / 120.0) * (std::f64::consts::PI - 2.0 * theta_s);
     (4.0453 * turbidity - 4.9710) * chi.tan() - 0.2155 * turbidity + 2.4192
@@ -141,7 +141,7 @@ fn zenith_chromaticity(m: &[[f64; 4]; 3], t: f64, theta_s: f64) -> f64 {
 /// CIE `(x, y)` chromaticity of the zenith.
 ///
 /// # References
-/// Preetham et al. 1999, Appendix A.2; equation sheet §8.
+/// Preetham et al. 1999, Appendix A.2; docs/equations.md §8.
 pub fn zenith_chromaticity_xy(turbidity: f64, theta_s: f64) -> (f64, f64) {
     const MX: [[f64; 4]; 3] = [
         [0.00166, -0.00375, 0.00209, 0.0],
@@ -325,7 +325,7 @@ mod tests {
 
     /// Oracle values are computed from 4-digit coefficients and printed with 4–5 digits.
     const ORACLE: f64 = 1e-4;
-    /// Chromaticity tolerance of the equation sheet (5-digit vs 4-digit matrices).
+    /// Chromaticity tolerance of docs/equations.md (5-digit vs 4-digit matrices).
     const CHROMA: f64 = 5e-4;
     /// The Perez ratios of the sheet are printed with 4 digits: 2×10⁻⁴ relative.
     const PEREZ_RATIO: f64 = 2e-4;

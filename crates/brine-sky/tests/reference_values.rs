@@ -1,4 +1,4 @@
-//! brine-sky against the equation sheet's oracles (`tests/data/sheet_oracles.csv`, see its header):
+//! brine-sky against the reference's (docs/equations.md) oracles (`tests/data/sheet_oracles.csv`, see its header):
 //! values of Preetham's formulas evaluated independently from their printed coefficients, each
 //! with the tolerance of its printed digits. These check the transcription of the formulas, not
 //! the model against the sky. The published, measured figures are tested next to the models:

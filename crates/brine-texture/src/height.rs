@@ -21,7 +21,7 @@ pub const MIN_INTENSITY_RANGE: f64 = 1e-6;
 ///
 /// # References
 /// Lai & Wu, "Ocean surface rendering using temporal texture synthesis", Eq. 1, after Fang &
-/// Hart 2004, "Textureshop", ACM TOG 23(3); equation sheet §14.
+/// Hart 2004, "Textureshop", ACM TOG 23(3); docs/equations.md §14.
 #[inline]
 pub fn height_from_intensity(i: f64, i_min: f64, i_max: f64, hf: f64) -> f64 {
     debug_assert!(i_max - i_min > 0.0 && hf > 0.0);
@@ -40,7 +40,7 @@ pub fn height_from_intensity(i: f64, i_min: f64, i_max: f64, hf: f64) -> f64 {
 /// `I` (levels).
 ///
 /// # References
-/// Lai & Wu Eq. 4; equation sheet §14.
+/// Lai & Wu Eq. 4; docs/equations.md §14.
 #[inline]
 pub fn intensity_from_height(height: f64, i_min: f64, i_max: f64, hf: f64) -> f64 {
     debug_assert!(hf > 0.0);
@@ -60,7 +60,7 @@ pub fn intensity_from_height(height: f64, i_min: f64, i_max: f64, hf: f64) -> f6
 /// `ΔI` (levels).
 ///
 /// # References
-/// Lai & Wu Eq. 5; equation sheet §14.
+/// Lai & Wu Eq. 5; docs/equations.md §14.
 #[inline]
 pub fn intensity_change(delta_height: f64, i_min: f64, i_max: f64, hf: f64) -> f64 {
     debug_assert!(hf > 0.0);
@@ -184,7 +184,7 @@ impl HeightField {
     /// The Lipschitz constant of the interpolant in metres per texel, `≥ 0`.
     ///
     /// # References
-    /// Hart 1996 (Lipschitz bounds for sphere tracing); equation sheet §3.
+    /// Hart 1996 (Lipschitz bounds for sphere tracing); docs/equations.md §3.
     pub fn max_gradient(&self) -> f64 {
         self.max_gradient
     }

@@ -87,7 +87,7 @@
 //! - Fang H., Hart J.C. 2004, "Textureshop: texture synthesis as a photograph editing tool",
 //!   ACM TOG 23(3):354–359 (Eq. 1's heuristic).
 //! - Schödl A., Szeliski R., Salesin D., Essa I. 2000, "Video textures", SIGGRAPH 489–498.
-//! - Equation sheet §14 (errata: the stray "+," of Eq. 10, "relighting(x, y)" of Eq. 11 is ΔI of
+//! - docs/equations.md §14 (errata: the stray "+," of Eq. 10, "relighting(x, y)" of Eq. 11 is ΔI of
 //!   Eq. 7–9, the sign of the shift, the range of Eq. 9).
 
 mod camera;

@@ -458,7 +458,7 @@ impl PhotoOcean {
     }
 }
 
-/// The ocean surface of one animation frame (Lai & Wu Eq. 10–11 with the equation sheet's sign:
+/// The ocean surface of one animation frame (Lai & Wu Eq. 10–11 with the reference's (docs/equations.md) sign:
 /// sampling at `x − t·v` moves a pattern along `v`). World `(x, z)` in metres maps to small-wave
 /// texels `u = x/texel_m`, `v = z/texel_m` (x east along a row, z south down the columns).
 #[derive(Debug, Clone)]
@@ -504,7 +504,7 @@ impl<'a> OceanFrame<'a> {
     /// Texel coordinates (texels; the frame wraps).
     ///
     /// # References
-    /// Lai & Wu Eq. 10–11; equation sheet §14 (the sign of the shift).
+    /// Lai & Wu Eq. 10–11; docs/equations.md §14 (the sign of the shift).
     #[inline]
     pub fn small_uv(&self, x: f64, z: f64) -> DVec2 {
         DVec2::new(x, z) * self.inv_texel + self.small_offset
@@ -626,7 +626,7 @@ impl<'a> OceanFrame<'a> {
     /// The colour (levels), every channel in `[0, 255]`.
     ///
     /// # References
-    /// Lai & Wu Eq. 6–9 and 11; equation sheet §14 (errata of Eq. 11, range of Eq. 9).
+    /// Lai & Wu Eq. 6–9 and 11; docs/equations.md §14 (errata of Eq. 11, range of Eq. 9).
     #[inline]
     pub fn colour(&self, x: f64, z: f64) -> [f32; 3] {
         self.ocean.relighting.apply(self.unrelit_colour(x, z), self.delta_height(x, z))

@@ -8,7 +8,7 @@ pub enum RelightRule {
     /// `Δh_max ≤ 255 − I` (resp. `≤ I`), so the clamp is needed.
     #[default]
     Paper,
-    /// The equation sheet's bounded form, `I' = I + (255 − I)(Δh/Δh_max)^{3/4}` (`Δh ≥ 0`),
+    /// The docs/equations.md's bounded form, `I' = I + (255 − I)(Δh/Δh_max)^{3/4}` (`Δh ≥ 0`),
     /// `I' = I − I(|Δh|/Δh_max)^{3/4}` (`Δh < 0`): in range by construction, independent of
     /// the unit of the heights.
     Bounded,
@@ -49,7 +49,7 @@ pub fn pow_three_quarters(x: f64) -> f64 {
 ///
 /// # References
 /// Lai & Wu, "Ocean surface rendering using temporal texture synthesis", Eq. 6–9 (exponent ¾ set
-/// experimentally by the authors); equation sheet §14 (range note and bounded form).
+/// experimentally by the authors); docs/equations.md §14 (range note and bounded form).
 #[inline]
 pub fn relight_intensity(i: f64, delta_height: f64, delta_height_max: f64, rule: RelightRule) -> f64 {
     if !(delta_height_max > 0.0) || !delta_height.is_finite() {

@@ -4,7 +4,7 @@ use crate::options::log_step;
 use crate::sphere::Along;
 use crate::{Hit, LipschitzSum, Ray, Step, StepKind, TraceOptions, TraceStats};
 
-/// Traces with the efficient bound of Darles et al. (equation sheet §2) on `[t0, t1]`.
+/// Traces with the efficient bound of Darles et al. (docs/equations.md §2) on `[t0, t1]`.
 ///
 /// At each point `p` the components are sorted by decreasing `(eᵢ − mᵢ)/Lᵢ(d̂)`, where `eᵢ` is
 /// the value of component `i` at the last point where it was evaluated (spatial coherence, §3.3:

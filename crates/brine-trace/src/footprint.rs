@@ -25,7 +25,7 @@ pub const FADE_CURVATURE: f64 = 63.0;
 /// The weight, `[0, 1]`.
 ///
 /// # References
-/// Equation sheet §1 "Antialiasing" and §11 (Bruneton, Neyret & Holzschuch 2010, `nyquistMin` =
+/// docs/equations.md §1 "Antialiasing" and §11 (Bruneton, Neyret & Holzschuch 2010, `nyquistMin` =
 /// 1, `nyquistMax` = 1.5); Darles et al. 2007 §3.2 (amplitudes reduced with the pixel footprint).
 #[inline]
 pub fn footprint_weight(fade_distance: f64, t: f64) -> f64 {
@@ -67,7 +67,7 @@ pub fn footprint_weight_slope(fade_distance: f64, t: f64) -> f64 {
 /// `wᵢ ∈ [0, 1]` for each component, non-increasing in `t`.
 ///
 /// # References
-/// Equation sheet §1 "Antialiasing" and §11; Bruneton, Neyret & Holzschuch 2010 (§4: the
+/// docs/equations.md §1 "Antialiasing" and §11; Bruneton, Neyret & Holzschuch 2010 (§4: the
 /// geometry's lost slopes move into the BRDF).
 pub fn component_weights<S: LipschitzSum + ?Sized>(
     surface: &S,
@@ -110,7 +110,7 @@ pub struct FadedComponents {
 /// The indices with `wᵢ(t) = 0` and those with `0 < wᵢ(t) < 1`.
 ///
 /// # References
-/// Bruneton, Neyret & Holzschuch 2010 (seamless transition from geometry to BRDF); equation sheet
+/// Bruneton, Neyret & Holzschuch 2010 (seamless transition from geometry to BRDF); docs/equations.md
 /// §11.
 pub fn faded_components<S: LipschitzSum + ?Sized>(
     surface: &S,

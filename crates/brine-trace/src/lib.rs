@@ -18,7 +18,7 @@
 //! | [`Method::GlobalLipschitz`] | `|F|/Σ Lᵢ` | Hart 1996 |
 //! | [`Method::Directional`] | `|F|/Σ Lᵢ(d̂)` | Hart 1996 along the ray |
 //! | [`Method::Relaxed`] | `ω|F|/Σ Lᵢ(d̂)`, undone if the spheres do not overlap | Keinert et al. 2014 |
-//! | [`Method::Darles`] | [`efficient_lipschitz_step`] over components sorted by stale estimates | Darles et al. 2007 Alg. 1, equation sheet §2 |
+//! | [`Method::Darles`] | [`efficient_lipschitz_step`] over components sorted by stale estimates | Darles et al. 2007 Alg. 1, docs/equations.md §2 |
 //! | [`Method::Segment`] | `min(s, |F|/λ_s)`, `λ_s = Σⱼ min(Lⱼ, |dⱼ| + Kⱼ s)` local to the candidate segment, next `s` = κ·step | Galin et al. 2020 Alg. 2 ([`trace_segments`]) |
 //! | [`Method::Tiered`] | first root of the certified bound [`StepBound`] over tiers of decreasing scale, the short ones pruned; over-relaxed steps checked backward, Newton probes on certified-monotone stretches | Brine ([`trace_tiers`]) |
 //!

@@ -19,7 +19,7 @@ pub enum Method {
     /// Directional sphere tracing over-relaxed by `ω` (Keinert et al. 2014): step `ω|F|/L(d̂)`,
     /// undone whenever the unbounding intervals of the two ends do not overlap.
     Relaxed,
-    /// Darles et al. 2007 Algorithm 1 as corrected in the equation sheet §2: the efficient step
+    /// Darles et al. 2007 Algorithm 1 as corrected in the docs/equations.md §2: the efficient step
     /// `max_S (M + Σ_{i∈S}(vᵢ − mᵢ))/Σ_{i∈S} Lᵢ(d̂)` over prefixes sorted by `(vᵢ − mᵢ)/Lᵢ`
     /// estimated from the previous point (spatial coherence); only the visited components are
     /// evaluated.

@@ -1,6 +1,6 @@
 //! Safe step lengths: Darles' efficient bound (corrected) and the certified second-order step.
 
-/// Darles' efficient step, Algorithm 1 as corrected in the equation sheet §2.
+/// Darles' efficient step, Algorithm 1 as corrected in the docs/equations.md §2.
 ///
 /// Along the ray each component obeys `nᵢ(p + s d̂) ≥ max(mᵢ, vᵢ − Lᵢ s)`, so for any subset `S`
 /// `F ≥ Σ_{i∈S}(vᵢ − Lᵢ s) + Σ_{i∉S} mᵢ`, whose root
@@ -18,7 +18,7 @@
 /// `0` when `F(p) ≤ 0`.
 ///
 /// # References
-/// Darles, Crespin & Ghazanfarpour 2007, §3.1 Algorithm 1; equation sheet §2 (corrected form and
+/// Darles, Crespin & Ghazanfarpour 2007, §3.1 Algorithm 1; docs/equations.md §2 (corrected form and
 /// its two test oracles).
 pub fn efficient_lipschitz_step(values: &[f64], minima: &[f64], lipschitz: &[f64]) -> f64 {
     debug_assert!(values.len() == minima.len() && values.len() == lipschitz.len());
@@ -59,7 +59,7 @@ pub fn efficient_lipschitz_step(values: &[f64], minima: &[f64], lipschitz: &[f64
 /// Algorithm 1 exactly as printed by Darles et al. (2007): sorted by `nᵢ/Lᵢ`, `L_e` starts at 0
 /// and is returned at the first candidate that does not exceed it.
 ///
-/// Kept only to document the erratum of the equation sheet §2: it returns 0 whenever the first
+/// Kept only to document the erratum of the docs/equations.md §2: it returns 0 whenever the first
 /// candidate is negative (the ray stalls near the surface). Never used to trace.
 ///
 /// # Arguments
@@ -69,7 +69,7 @@ pub fn efficient_lipschitz_step(values: &[f64], minima: &[f64], lipschitz: &[f64
 /// The printed algorithm's `L_e` (m).
 ///
 /// # References
-/// Darles et al. 2007, Algorithm 1 (as printed); equation sheet §2, "Is the printed algorithm
+/// Darles et al. 2007, Algorithm 1 (as printed); docs/equations.md §2, "Is the printed algorithm
 /// correct? No".
 pub fn printed_darles_step(values: &[f64], minima: &[f64], lipschitz: &[f64]) -> f64 {
     let mut order: Vec<usize> = (0..values.len()).collect();
@@ -155,7 +155,7 @@ impl StepBound {
     /// The step (m); `+∞` if the bound never reaches zero; `0` if `c ≤ 0`.
     ///
     /// # References
-    /// Hart 1996 (Lipschitz step); equation sheet §2 (reserve = Darles' efficient bound);
+    /// Hart 1996 (Lipschitz step); docs/equations.md §2 (reserve = Darles' efficient bound);
     /// the second-order part is Brine's (docs/models/brine-trace.md).
     pub fn first_root(&self) -> f64 {
         if !(self.value > 0.0) {
@@ -212,7 +212,7 @@ mod tests {
 
     #[test]
     fn darles_step_oracle_1_and_the_printed_algorithm_stalls() {
-        // Equation sheet, Test oracles: v = (1, 0.2, −0.5), m = −1 each, L = (1, 2, 0.5) ⇒ 0.2
+        // docs/equations.md, Test oracles: v = (1, 0.2, −0.5), m = −1 each, L = (1, 2, 0.5) ⇒ 0.2
         // (= F/ΣL); the printed algorithm returns 0.
         let (v, m, l) = ([1.0, 0.2, -0.5], [-1.0; 3], [1.0, 2.0, 0.5]);
         assert!((efficient_lipschitz_step(&v, &m, &l) - 0.2).abs() < ORACLE_TOLERANCE);

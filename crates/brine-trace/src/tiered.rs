@@ -428,7 +428,7 @@ pub fn trace_tiers<R: RayTiers + ?Sized>(
 ///
 /// # References
 /// Hart 1996 (sphere tracing); Darles et al. 2007 §3.1–3.2 (efficient bound, neglected high
-/// frequencies); Keinert et al. 2014 (over-relaxation); equation sheet §2. The second-order bound
+/// frequencies); Keinert et al. 2014 (over-relaxation); docs/equations.md §2. The second-order bound
 /// holds on the step only, like the local bounds of segment tracing (Galin et al. 2020), but it is
 /// Brine's; segment tracing proper is [`crate::Method::Segment`].
 #[allow(clippy::too_many_arguments)]

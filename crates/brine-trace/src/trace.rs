@@ -25,7 +25,7 @@ use crate::{Hit, LipschitzSum, Method, Ray, Step, TraceOptions, TraceStats};
 ///
 /// # References
 /// Hart 1996, §3 (sphere tracing); Darles et al. 2007, §3.1 (brute force, Algorithm 1); Keinert
-/// et al. 2014 (over-relaxation); Galin et al. 2020 (segment tracing); equation sheet §2–3.
+/// et al. 2014 (over-relaxation); Galin et al. 2020 (segment tracing); docs/equations.md §2–3.
 pub fn trace<S: LipschitzSum + ?Sized>(
     surface: &S,
     ray: &Ray,

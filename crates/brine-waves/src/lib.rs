@@ -100,78 +100,50 @@
 //! - Cox C., Munk W. 1954, JOSA 44(11) (slope statistics); Dupuy J., Bruneton E. 2012 (Jacobian);
 //!   Bruneton E. et al. 2010, CGF 29(2) (Gerstner sums).
 
-mod detail;
-mod dispersion;
-mod elfouhaily;
 mod error;
-mod fade;
-mod fast_profile;
 mod fft;
-mod fft_frame;
-mod fft_lipschitz;
-mod fft_options;
-mod fft_pyramid;
-mod fft_resample;
-mod fft_slopes;
-mod fft_spectrum;
-mod fft_spline;
 mod fit;
-mod gerstner;
-mod gerstner_lanes;
-mod gerstner_lipschitz;
-mod integrate;
-mod jonswap;
-mod lanes;
-mod lipschitz;
-mod phillips;
-mod pierson_moskowitz;
 mod sea;
-mod seabed;
-mod set;
-mod sine;
-mod sine_lipschitz;
-mod spectrum;
-mod spreading;
-mod summed;
-mod surface;
-mod tma;
-mod traced;
-mod trochoid;
+mod spectra;
+mod surfaces;
+mod tracing;
 
-pub use detail::{BandLimited, DETAIL_MIN_WAVELENGTH_M, DetailOptions, DetailSlopes, DetailWaves, wavenumber_of_slope};
-pub use dispersion::{Dispersion, ELFOUHAILY_K_M, SEA_WATER_DENSITY, SEA_WATER_SURFACE_TENSION};
-pub use dispersion::{G, omega_deep_water, wavenumber_deep_water};
-pub use elfouhaily::{Elfouhaily, ElfouhailySpreading};
 pub use error::WaveError;
-pub use fft::{FftKinematics, FftOcean, FftRestFields, FftRestJacobian, ParticleState};
-pub use fft_frame::{FftCascade, FftFrame};
-pub use fft_options::{
+pub use fft::frame::{FftCascade, FftFrame};
+pub use fft::ocean::{FftKinematics, FftOcean, FftRestFields, FftRestJacobian, ParticleState};
+pub use fft::options::{
     FFT_CASCADE_CUT_INDEX, FFT_DEFAULT_TILE_RATIO, FFT_MAX_CASCADES, FFT_MAX_CHOPPINESS, FFT_MAX_LOOP_PERIOD_S,
     FFT_MAX_RESOLUTION, FFT_MIN_RESOLUTION, FFT_PEAK_WAVELENGTHS_PER_TILE, FftOptions,
 };
-pub use fft_pyramid::{BOX_WIDTH_PER_SIGMA, FftPyramid};
-pub use fft_resample::FFT_MAX_SHADING_SLOPE;
-pub use fft_slopes::{FftSlopeFilter, FilteredSlopes};
-pub use fft_spectrum::directional_spectrum;
-pub use fit::{AmplitudeRule, FrequencyBin, SeaComponent, SteepnessLimit, fit_sea_state, frequency_bins};
-pub use fit::{FitOptions, FrequencyPartition, fit_trochoids};
-pub use gerstner::{
-    FadedWaves, GERSTNER_MAX_ITERATIONS, GERSTNER_TOLERANCE_M, GERSTNER_TOLERANCE_REL, GerstnerField, GerstnerSurface,
-    Inversion,
-};
-pub use jonswap::Jonswap;
-pub use phillips::Phillips;
+pub use fft::pyramid::{BOX_WIDTH_PER_SIGMA, FftPyramid};
+pub use fft::resample::FFT_MAX_SHADING_SLOPE;
+pub use fft::slopes::{FftSlopeFilter, FilteredSlopes};
+pub use fft::spectrum::directional_spectrum;
+pub use fit::extraction::{AmplitudeRule, FrequencyBin, SeaComponent, SteepnessLimit, fit_sea_state, frequency_bins};
+pub use fit::extraction::{FitOptions, FrequencyPartition, fit_trochoids};
+pub use fit::set::TrochoidSet;
+pub use fit::trochoid::{MAX_STEEPNESS, Trochoid, solve_trochoid_phase};
 pub use sea::{
     FrameSurface, Ocean, RayTile, SINE_DETAIL_WAVELENGTH_M, SeaFrame, SurfaceSample, TileLattice, TracedSea,
 };
-pub use seabed::{SeabedRelief, seabed_relief};
-pub use set::TrochoidSet;
-pub use sine::{SineField, SineSet};
-pub use spectrum::{PiersonMoskowitz, Spectrum};
-pub use spreading::{CosineSquared, Directions, DonelanBanner};
-pub use spreading::{CosineTwoS, Spreading};
-pub use summed::SummedSpectrum;
-pub use surface::{TrochoidField, TrochoidSum, WaveSurface};
-pub use tma::{Tma, kitaigorodskii_depth_factor};
-pub use traced::{LANES, TracedTrochoids};
-pub use trochoid::{MAX_STEEPNESS, Trochoid, solve_trochoid_phase};
+pub use spectra::dispersion::{Dispersion, ELFOUHAILY_K_M, SEA_WATER_DENSITY, SEA_WATER_SURFACE_TENSION};
+pub use spectra::dispersion::{G, omega_deep_water, wavenumber_deep_water};
+pub use spectra::elfouhaily::{Elfouhaily, ElfouhailySpreading};
+pub use spectra::jonswap::Jonswap;
+pub use spectra::phillips::Phillips;
+pub use spectra::spectrum::{PiersonMoskowitz, Spectrum};
+pub use spectra::spreading::{CosineSquared, Directions, DonelanBanner};
+pub use spectra::spreading::{CosineTwoS, Spreading};
+pub use spectra::summed::SummedSpectrum;
+pub use spectra::tma::{Tma, kitaigorodskii_depth_factor};
+pub use surfaces::detail::{
+    BandLimited, DETAIL_MIN_WAVELENGTH_M, DetailOptions, DetailSlopes, DetailWaves, wavenumber_of_slope,
+};
+pub use surfaces::gerstner::{
+    FadedWaves, GERSTNER_MAX_ITERATIONS, GERSTNER_TOLERANCE_M, GERSTNER_TOLERANCE_REL, GerstnerField, GerstnerSurface,
+    Inversion,
+};
+pub use surfaces::seabed::{SeabedRelief, seabed_relief};
+pub use surfaces::sine::{SineField, SineSet};
+pub use surfaces::surface::{TrochoidField, TrochoidSum, WaveSurface};
+pub use tracing::traced::{LANES, TracedTrochoids};

@@ -366,7 +366,7 @@ impl SeaFrame {
     /// `D(u)` (m).
     ///
     /// # References
-    /// Equation sheet §1 (trochoid and Gerstner orbits); Tessendorf 2001, Eq. 44.
+    /// docs/equations.md §1 (trochoid and Gerstner orbits); Tessendorf 2001, Eq. 44.
     pub fn rest_displacement(&self, u: DVec2) -> DVec2 {
         let t = self.time;
         match &self.surface {

@@ -8,7 +8,7 @@ use brine_waves::{
     TrochoidSum, WaveError, WaveSurface, fit_sea_state, fit_trochoids, frequency_bins,
 };
 
-/// The acceptance bound: the fitted variance is within 1 % of the band integral.
+/// The acceptance bound: the fitted variance is within 1 % of the band integral.
 const VARIANCE_REL: f64 = 0.01;
 
 /// Target relative error of the test's own adaptive Simpson quadrature: far below the 1 % being
@@ -108,7 +108,7 @@ fn the_independent_quadrature_reproduces_the_pm_closed_form() {
 
 #[test]
 fn midpoint_amplitudes_on_log_bins_hold_the_band_variance_from_30_waves() {
-    // The criterion with the paper's rule Aᵢ = √(2 S(ωᵢ) Δωᵢ): log bins, n = 30, 50, 100,
+    // The acceptance criterion with the paper's rule Aᵢ = √(2 S(ωᵢ) Δωᵢ): log bins, n = 30, 50, 100,
     // every spectrum. Worst measured: JONSWAP +0.65 % at n = 30 (its γ = 3.3 peak is the sharpest).
     let o = FitOptions {
         partition: FrequencyPartition::Logarithmic,
@@ -282,7 +282,7 @@ fn tma_in_deep_water_is_jonswap() {
 
 #[test]
 fn phillips_without_cutoff_is_pierson_moskowitz_with_beta_one() {
-    // With A = α/(2π) and ℓ = 0: S(ω) = α g² ω⁻⁵ exp[−(g/V)⁴/ω⁴] (equation sheet §4).
+    // With A = α/(2π) and ℓ = 0: S(ω) = α g² ω⁻⁵ exp[−(g/V)⁴/ω⁴] (docs/equations.md §4).
     let v = 9.0;
     let p = Phillips::new(v, Phillips::DEFAULT_SCALE, 0.0).unwrap();
     let w0 = G / v;
@@ -296,7 +296,7 @@ fn phillips_without_cutoff_is_pierson_moskowitz_with_beta_one() {
 
 #[test]
 fn pm_wavenumber_form_is_the_sheets_closed_form() {
-    // S(k) = (α/(2k³)) exp[−β g²/(k² U⁴)] (equation sheet §4) against the trait's S(ω) dω/dk.
+    // S(k) = (α/(2k³)) exp[−β g²/(k² U⁴)] (docs/equations.md §4) against the trait's S(ω) dω/dk.
     let pm = PiersonMoskowitz::from_u19_5(14.0).unwrap();
     let u = pm.u19_5();
     for i in 0..80 {

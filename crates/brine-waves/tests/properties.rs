@@ -62,7 +62,7 @@ const DIRECTIONAL_ABS: f64 = 1e-15;
 /// `tanh` of `kh` rounds the rest).
 const DISPERSION_REL: f64 = 1e-11;
 
-/// The acceptance bound on a fitted set's variance against `∫ S dω` over the band.
+/// The acceptance bound on a fitted set's variance against `∫ S dω` over the band.
 const VARIANCE_REL: f64 = 0.01;
 
 /// A random wave set: 1–12 waves, amplitudes 0.01–1.5 m, wavelengths 2–125 m, any direction and

@@ -1,4 +1,4 @@
-//! Reference values: the equation sheet's oracles (`tests/data/equation_sheet_oracles.csv`) and
+//! Reference values: the reference's (docs/equations.md) oracles (`tests/data/equation_sheet_oracles.csv`) and
 //! the published rules of Pierson & Moskowitz (1964) and Cox & Munk (1954).
 
 use std::collections::HashMap;
@@ -148,11 +148,11 @@ fn u12_5(u10: f64) -> f64 {
 }
 
 /// The scatter of Cox & Munk's clean-surface data about their linear fit, ±0.004 (Cox & Munk
-/// 1954): the acceptance band.
+/// 1954): the acceptance band.
 const COX_MUNK_SCATTER: f64 = 0.004;
 
 /// The published agreement of the unified spectrum's mean-square slope with Cox & Munk's clean
-/// surface: "within ~15 %" (equation sheet §4, Elfouhaily implementation notes; its oracle row
+/// surface: "within ~15 %" (docs/equations.md §4, Elfouhaily implementation notes; its oracle row
 /// lists mss ≈ 0.061 against Cox–Munk 0.054 at 10 m/s). Not fitted to this code's output.
 const ELFOUHAILY_COX_MUNK_REL: f64 = 0.15;
 
@@ -166,7 +166,7 @@ fn elfouhaily_mean_square_slope_against_cox_munk() {
     // The fully developed unified spectrum (Ω = 0.84, B_h × L_PM, u* from Eq. 60/66), integrated
     // to k = 10⁴ rad/m, against Cox & Munk's clean surface at U₁₀ = 5, 10, 15 m/s: 0.0318, 0.0611,
     // 0.0842 against 0.0291, 0.0553, 0.0814 (+9 %, +10.5 %, +3.4 %). The published agreement
-    // (±15 %) holds at all three; the issue's ±0.004 holds at 5 and 15 m/s but not at 10 m/s
+    // (±15 %) holds at all three; the ±0.004 bound holds at 5 and 15 m/s but not at 10 m/s
     // (+0.0058): Elfouhaily's α_m law (Eq. 44, logarithmic in u*/c_m with a kink at u* = c_m,
     // U₁₀ ≈ 6 m/s) makes the model's mss concave in U where Cox & Munk's fit is linear, so the
     // excess peaks near 10 m/s (docs/models/brine-waves.md, "Cox & Munk").

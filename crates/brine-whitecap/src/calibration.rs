@@ -231,7 +231,7 @@ impl Calibration {
     /// `W ∈ [0, 1]`; exactly 0 (1) when the target is 0 (1).
     ///
     /// # References
-    /// Dupuy & Bruneton 2012 (`W = ½(1 + erf((α − μ)/√(2σ²)))`); equation sheet §10.
+    /// Dupuy & Bruneton 2012 (`W = ½(1 + erf((α − μ)/√(2σ²)))`); docs/equations.md §10.
     pub fn coverage(&self, moments: Moments, footprint_m: f64, erf: ErfMethod) -> f64 {
         if self.target <= 0.0 {
             return 0.0;

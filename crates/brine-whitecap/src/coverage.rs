@@ -26,7 +26,7 @@ pub const WHITECAP_REFLECTANCE: f64 = 0.4;
 ///
 /// # References
 /// Dupuy & Bruneton 2012 (slides "Breaking waves": `W(ω) = ∫_ω H(p) dp`, `H = 1` where `J < α`,
-/// and its Gaussian evaluation); equation sheet §10.
+/// and its Gaussian evaluation); docs/equations.md §10.
 #[inline]
 pub fn whitecap_coverage(moments: Moments, alpha: f64, erf: ErfMethod) -> f64 {
     debug_assert!(moments.sigma2 >= 0.0 && moments.mu.is_finite() && !alpha.is_nan());
@@ -56,7 +56,7 @@ pub fn whitecap_coverage(moments: Moments, alpha: f64, erf: ErfMethod) -> f64 {
 /// `I_wc` in the irradiance unit per steradian.
 ///
 /// # References
-/// Dupuy & Bruneton 2012 (slides: `I_whitecap = W · Lambert₀.₄`); equation sheet §10.
+/// Dupuy & Bruneton 2012 (slides: `I_whitecap = W · Lambert₀.₄`); docs/equations.md §10.
 pub fn whitecap_radiance(
     coverage: f64,
     reflectance: f64,
@@ -82,7 +82,7 @@ pub fn whitecap_radiance(
 /// `I` in the same unit.
 ///
 /// # References
-/// Dupuy & Bruneton 2012; equation sheet §10.
+/// Dupuy & Bruneton 2012; docs/equations.md §10.
 pub fn compose_with_whitecaps(coverage: f64, sea_radiance: f64, whitecap_radiance: f64) -> f64 {
     debug_assert!((0.0..=1.0).contains(&coverage));
     (1.0 - coverage) * sea_radiance + whitecap_radiance

@@ -10,7 +10,7 @@ pub const WINITZKI_A: f64 = 0.147;
 pub const WINITZKI_A_DEMO: f64 = 0.140012;
 
 /// Bound on `|erf_fast(x) − erf(x)|` over the real line: the measured maximum is 1.2406×10⁻⁴
-/// at `x ≈ ±1.559` (equation sheet oracle), below the slides' "0.00012" rounded.
+/// at `x ≈ ±1.559` (docs/equations.md oracle), below the slides' "0.00012" rounded.
 pub const ERF_FAST_MAX_ERROR: f64 = 1.25e-4;
 
 /// Bound on `|erf_abramowitz_stegun(x) − erf(x)|`: 1.5×10⁻⁷ (Abramowitz & Stegun 7.1.26).
@@ -30,7 +30,7 @@ pub const ERF_AS_MAX_ERROR: f64 = 1.5e-7;
 ///
 /// # References
 /// Winitzki S. 2008, "A handy approximation for the error function and its inverse"; Dupuy &
-/// Bruneton 2012 (slides "Erf: approximation", "max error: 0.00012"); equation sheet §10.
+/// Bruneton 2012 (slides "Erf: approximation", "max error: 0.00012"); docs/equations.md §10.
 #[inline]
 pub fn erf_winitzki(x: f64, a: f64) -> f64 {
     debug_assert!(a > 0.0 && a < 1.0);
@@ -48,7 +48,7 @@ pub fn erf_winitzki(x: f64, a: f64) -> f64 {
 /// `erf x` within [`ERF_FAST_MAX_ERROR`] (1.25×10⁻⁴).
 ///
 /// # References
-/// Dupuy & Bruneton 2012; Winitzki 2008; equation sheet §10 and Test oracles.
+/// Dupuy & Bruneton 2012; Winitzki 2008; docs/equations.md §10 and Test oracles.
 #[inline]
 pub fn erf_fast(x: f64) -> f64 {
     erf_winitzki(x, WINITZKI_A)
@@ -123,7 +123,7 @@ impl ErfMethod {
     /// [`ERF_AS_MAX_ERROR`], or `2ε` for `libm`.
     ///
     /// # References
-    /// Winitzki 2008 and the equation sheet's oracle (1.2406×10⁻⁴); Abramowitz & Stegun 1964,
+    /// Winitzki 2008 and the reference's (docs/equations.md) oracle (1.2406×10⁻⁴); Abramowitz & Stegun 1964,
     /// 7.1.26 (1.5×10⁻⁷).
     pub fn max_error(self) -> f64 {
         match self {

@@ -42,7 +42,7 @@ const CALIBRATION_ERF: ErfMethod = ErfMethod::AbramowitzStegun;
 ///
 /// # References
 /// Dupuy & Bruneton 2012 (threshold `α`, coverage law); Monahan & Ó Muircheartaigh 1980 (the
-/// usual target); equation sheet §5, §10.
+/// usual target); docs/equations.md §5, §10.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FftCalibration {
     target: f64,
@@ -67,7 +67,7 @@ impl FftCalibration {
     /// [`WhitecapError::OutOfRange`] for a target outside `[0, 1]` or a bad option.
     ///
     /// # References
-    /// See [`FftCalibration`] (Dupuy & Bruneton 2012; equation sheet §10).
+    /// See [`FftCalibration`] (Dupuy & Bruneton 2012; docs/equations.md §10).
     pub fn new(
         stats: &FftJacobianStatistics,
         target_coverage: f64,
@@ -141,7 +141,7 @@ impl FftCalibration {
     /// `W ∈ [0, 1]`; exactly 0 (1) when the target is 0 (1).
     ///
     /// # References
-    /// Dupuy & Bruneton 2012 (`W = ½(1 + erf((α − μ)/√(2σ²)))`); equation sheet §10.
+    /// Dupuy & Bruneton 2012 (`W = ½(1 + erf((α − μ)/√(2σ²)))`); docs/equations.md §10.
     pub fn coverage(&self, moments: Moments, footprint_m: f64, erf: ErfMethod) -> f64 {
         if self.target <= 0.0 {
             return 0.0;

@@ -28,7 +28,7 @@ use crate::statistics::Moments;
 /// # References
 /// Dupuy J., Bruneton E. 2012, "Real-time animation and rendering of ocean whitecaps", SIGGRAPH
 /// Asia Technical Briefs (mip-mapped `J` and `J²` per FFT cascade; `jdupuy/whitecaps`:
-/// `whitecap_precompute.glsl`, `ocean.glsl`); equation sheet §10.
+/// `whitecap_precompute.glsl`, `ocean.glsl`); docs/equations.md §10.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FftJacobianStatistics {
     /// Per cascade, the pyramid of `(kᵢ, kᵢ²)`.
@@ -48,7 +48,7 @@ impl FftJacobianStatistics {
     /// The pyramids, for [`Self::moments_at`].
     ///
     /// # References
-    /// Dupuy & Bruneton 2012 (mip-mapped `J` and `J²`); equation sheet §10.
+    /// Dupuy & Bruneton 2012 (mip-mapped `J` and `J²`); docs/equations.md §10.
     pub fn new(frame: &FftFrame) -> Self {
         let share = 1.0 / frame.cascade_count() as f64;
         let cascades = frame
@@ -137,7 +137,7 @@ impl FftJacobianStatistics {
     /// both are the whole sea's.
     ///
     /// # References
-    /// Dupuy & Bruneton 2012; equation sheet §10 (`μ = Σ⟨kᵢ⟩`, `σ² = Σ⟨kᵢ²⟩ − Σ⟨kᵢ⟩²`).
+    /// Dupuy & Bruneton 2012; docs/equations.md §10 (`μ = Σ⟨kᵢ⟩`, `σ² = Σ⟨kᵢ²⟩ − Σ⟨kᵢ⟩²`).
     #[inline]
     pub fn moments_at(&self, x: f64, z: f64, footprint_m: f64) -> Moments {
         debug_assert!(footprint_m >= 0.0);

@@ -32,7 +32,7 @@ pub enum FootprintFilter {
     /// `½ + ½g⁴ cos 2φ − g² cos² φ`, goes to `σ²`. Smooth in `s`.
     #[default]
     Gaussian,
-    /// The sharp split of the equation sheet §10: waves with `k s < 1` (wavelength above `2πs`)
+    /// The sharp split of the docs/equations.md §10: waves with `k s < 1` (wavelength above `2πs`)
     /// are resolved (exact local value in `μ`), the others unresolved (only their share of `σ²`).
     Sharp,
 }
@@ -47,7 +47,7 @@ pub enum FootprintFilter {
 ///
 /// `J = 1 − Σ aᵢcᵢ + Σ_{i<j} aᵢaⱼ sin²(θᵢ − θⱼ) cᵢcⱼ`.
 ///
-/// (The equation sheet writes `aᵢ = kᵢAᵢ`, the exact trochoid; with choppiness the horizontal
+/// (The docs/equations.md writes `aᵢ = kᵢAᵢ`, the exact trochoid; with choppiness the horizontal
 /// radius is `Qᵢ/kᵢ` and `aᵢ = Qᵢ`.)
 ///
 /// **Over the whole sea** the phases are independent and uniform (incommensurate wave vectors),
@@ -72,12 +72,12 @@ pub enum FootprintFilter {
 /// `Hₙ = Σ wᵢ e^{inθᵢ}`: `O(N)` per pixel, and the fully unresolved waves' sums are precomputed.
 /// Fully resolved waves (`g = 1`, `s = 0`) give `μ = J`, `σ² = 0`; fully unresolved ones
 /// (`g = 0`, `s² = ½`) give back the whole-sea formulas. The resolved/unresolved split of the
-/// equation sheet is the [`FootprintFilter::Sharp`] case.
+/// docs/equations.md is the [`FootprintFilter::Sharp`] case.
 ///
 /// # References
 /// Dupuy J., Bruneton E. 2012, "Real-time animation and rendering of ocean whitecaps", SIGGRAPH
 /// Asia Technical Briefs (slides: "μ, σ² can be computed analytically for trochoids");
-/// equation sheet §10 (derived).
+/// docs/equations.md §10 (derived).
 #[derive(Debug, Clone, PartialEq)]
 pub struct JacobianStatistics {
     /// Waves sorted by increasing wavenumber.
@@ -297,7 +297,7 @@ impl JacobianStatistics {
     /// [`WhitecapError::EmptySet`] for a set without waves.
     ///
     /// # References
-    /// Dupuy & Bruneton 2012 ("μ, σ² can be computed analytically for trochoids"); equation sheet
+    /// Dupuy & Bruneton 2012 ("μ, σ² can be computed analytically for trochoids"); docs/equations.md
     /// §10 (derived in the type's documentation).
     pub fn new(set: &TrochoidSet) -> Result<Self, WhitecapError> {
         if set.is_empty() {
@@ -367,7 +367,7 @@ impl JacobianStatistics {
     /// `σ²` (dimensionless), precomputed.
     ///
     /// # References
-    /// Equation sheet §10 (derived; here with `aᵢ = Qᵢ`).
+    /// docs/equations.md §10 (derived; here with `aᵢ = Qᵢ`).
     pub fn variance(&self) -> f64 {
         self.variance
     }
@@ -401,7 +401,7 @@ impl JacobianStatistics {
     /// `J` (dimensionless).
     ///
     /// # References
-    /// Dupuy & Bruneton 2012; equation sheet §10.
+    /// Dupuy & Bruneton 2012; docs/equations.md §10.
     pub fn jacobian_from_cosines(&self, cos_phi: &[f64]) -> f64 {
         debug_assert_eq!(cos_phi.len(), self.len());
         let mut acc = Accumulator::new();
@@ -422,7 +422,7 @@ impl JacobianStatistics {
     /// `J` (dimensionless), within [`Self::bounds`].
     ///
     /// # References
-    /// Dupuy & Bruneton 2012; equation sheet §10.
+    /// Dupuy & Bruneton 2012; docs/equations.md §10.
     pub fn jacobian_at(&self, u: DVec2, t: f64) -> f64 {
         let mut acc = Accumulator::new();
         for w in &self.waves {
@@ -477,7 +477,7 @@ impl JacobianStatistics {
     ///
     /// # References
     /// Derived in the type's documentation; Dupuy & Bruneton 2012 (per-footprint `μ`, `σ²`);
-    /// equation sheet §10 (resolved waves in `μ`, unresolved in `σ²`).
+    /// docs/equations.md §10 (resolved waves in `μ`, unresolved in `σ²`).
     pub fn moments_from_cosines(&self, cos_phi: &[f64], footprint_m: f64, filter: FootprintFilter) -> Moments {
         debug_assert_eq!(cos_phi.len(), self.len());
         debug_assert!(footprint_m >= 0.0);

@@ -32,7 +32,7 @@ const FOOTPRINT_VARIANCE_REL: f64 = 0.05;
 /// Absolute floor on the footprint-mean bias (rounding of 2000 sums of 50 values of order 1).
 const BIAS_ROUNDING: f64 = 1e-12;
 
-/// The acceptance tolerance for the calibrated coverage against Monahan's (the
+/// The acceptance tolerance for the calibrated coverage against Monahan's (the
 /// calibration's own standard error is 3–4 %, the surface sample's ≤ 3 %).
 const CALIBRATION_REL: f64 = 0.10;
 

@@ -41,7 +41,7 @@ pub enum RelightArg {
     /// Eq. 7–9 as printed, clamped to [0, 255].
     #[default]
     Paper,
-    /// The equation sheet's bounded form, in range by construction.
+    /// The docs/equations.md's bounded form, in range by construction.
     Bounded,
 }
 

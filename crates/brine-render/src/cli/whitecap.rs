@@ -306,7 +306,7 @@ mod tests {
         let v = run("--u10 10 --calibrate --mc-samples 200000 --json").unwrap();
         let (c, m) = (v["coverage"].as_f64().unwrap(), v["monahan_coverage"].as_f64().unwrap());
         assert!((m - 9.870e-3).abs() < 1e-5);
-        // The 10 % acceptance tolerance.
+        // The 10 % acceptance tolerance.
         assert!((c / m - 1.0).abs() < 0.1, "{v}");
         assert!(v["alpha"].as_f64().unwrap() > 0.0 && v["footprint_table"].as_array().unwrap().len() == 8);
     }

@@ -1,7 +1,7 @@
 //! The TMA spectrum: JONSWAP in water of finite depth.
 
-use crate::dispersion::G;
 use crate::error::{WaveError, check};
+use crate::spectra::dispersion::G;
 use crate::{Dispersion, Jonswap, Spectrum};
 
 /// Kitaigorodskii's depth factor in the approximation of Thompson & Vincent (1983),
@@ -15,7 +15,7 @@ use crate::{Dispersion, Jonswap, Spectrum};
 ///
 /// # References
 /// Bouws E. et al. 1985, "Similarity of the wind wave spectrum in finite depth water", JGR
-/// 90(C1):975–986; Thompson E.F., Vincent C.L. 1983; equation sheet §4.
+/// 90(C1):975–986; Thompson E.F., Vincent C.L. 1983; docs/equations.md §4.
 pub fn kitaigorodskii_depth_factor(omega_h: f64) -> f64 {
     debug_assert!(omega_h >= 0.0, "ω_h must be non-negative, got {omega_h}");
     if omega_h <= 1.0 {
@@ -35,7 +35,7 @@ pub fn kitaigorodskii_depth_factor(omega_h: f64) -> f64 {
 /// shape; only their wavenumbers come from the finite-depth relation.
 ///
 /// # References
-/// Bouws et al. 1985; equation sheet §4.
+/// Bouws et al. 1985; docs/equations.md §4.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Tma {
     jonswap: Jonswap,
@@ -135,7 +135,7 @@ mod tests {
 
     #[test]
     fn depth_factor_oracle() {
-        // Equation sheet oracle: ω_h = 0.5, 1, 1.5, 2 ⇒ Φ = 0.125, 0.5, 0.875, 1 (exact fractions).
+        // Reference value (docs/equations.md): ω_h = 0.5, 1, 1.5, 2 ⇒ Φ = 0.125, 0.5, 0.875, 1 (exact fractions).
         for (wh, phi) in [(0.5, 0.125), (1.0, 0.5), (1.5, 0.875), (2.0, 1.0), (0.0, 0.0), (7.0, 1.0)] {
             assert_eq!(kitaigorodskii_depth_factor(wh).to_bits(), f64::to_bits(phi), "ω_h = {wh}");
         }

@@ -1,9 +1,9 @@
 //! The `Spectrum` trait: one-dimensional spectra of the surface elevation and their moments.
 
 use crate::Dispersion;
-use crate::integrate::simpson_log;
+use crate::spectra::integrate::simpson_log;
 
-pub use crate::pierson_moskowitz::PiersonMoskowitz;
+pub use crate::spectra::pierson_moskowitz::PiersonMoskowitz;
 
 /// Simpson panel pairs of the moments over the whole spectrum (`m₀`, mean-square slope): 4000
 /// pairs in `ln ω` or `ln k`, a step of about `2.5×10⁻³` in the logarithm, far finer than the
@@ -38,7 +38,7 @@ pub trait Spectrum: Sync {
     /// `S(ω)` (m² s rad⁻¹), finite and `≥ 0`; `0` for `ω ≤ 0` or NaN.
     ///
     /// # References
-    /// Equation sheet §4 (each implementation cites its paper and equation).
+    /// docs/equations.md §4 (each implementation cites its paper and equation).
     fn s_omega(&self, omega: f64) -> f64;
 
     /// Angular frequency `ω_p` of the spectral peak. For Pierson–Moskowitz, JONSWAP, TMA and
@@ -49,7 +49,7 @@ pub trait Spectrum: Sync {
     /// `ω_p` (rad s⁻¹), `> 0`.
     ///
     /// # References
-    /// Equation sheet §4 (PM: `ω_p = (4β/5)^{1/4} g/U₁₉.₅`; JONSWAP: `22 X̃^{−1/3} g/U₁₀`).
+    /// docs/equations.md §4 (PM: `ω_p = (4β/5)^{1/4} g/U₁₉.₅`; JONSWAP: `22 X̃^{−1/3} g/U₁₀`).
     fn peak_omega(&self) -> f64;
 
     /// Elevation variance of the waves between two frequencies, `∫_{ω_a}^{ω_b} S(ω) dω`, by
@@ -63,7 +63,7 @@ pub trait Spectrum: Sync {
     /// The variance (m²); `0` unless `0 < ω_a < ω_b`.
     ///
     /// # References
-    /// Equation sheet §4 (`m₀ = ∫ S dω`).
+    /// docs/equations.md §4 (`m₀ = ∫ S dω`).
     fn variance_between(&self, omega_a: f64, omega_b: f64) -> f64 {
         if !(omega_a > 0.0 && omega_b > omega_a) {
             return 0.0;
@@ -78,7 +78,7 @@ pub trait Spectrum: Sync {
     /// `ω² = gk tanh(kh)` for TMA, capillary–gravity `ω² = gk(1 + (k/k_m)²)` for Elfouhaily.
     ///
     /// # References
-    /// Equation sheet §1 and §4; Elfouhaily et al. 1997, Eq. 24.
+    /// docs/equations.md §1 and §4; Elfouhaily et al. 1997, Eq. 24.
     fn dispersion(&self) -> Dispersion {
         Dispersion::DEEP_WATER
     }
@@ -93,7 +93,7 @@ pub trait Spectrum: Sync {
     /// `S(k)` (m³ rad⁻¹), `≥ 0`; `0` for `k ≤ 0`.
     ///
     /// # References
-    /// Equation sheet §4 (change of variable).
+    /// docs/equations.md §4 (change of variable).
     fn s_k(&self, k: f64) -> f64 {
         if !(k > 0.0) {
             return 0.0;
@@ -109,7 +109,7 @@ pub trait Spectrum: Sync {
     /// `m₀` (m²).
     ///
     /// # References
-    /// Equation sheet §4; WMO 1998, *Guide to wave analysis and forecasting* (spectral moments).
+    /// docs/equations.md §4; WMO 1998, *Guide to wave analysis and forecasting* (spectral moments).
     fn m0(&self) -> f64 {
         let wp = self.peak_omega();
         simpson_log(|w| self.s_omega(w), MOMENT_LOW * wp, M0_HIGH * wp, MOMENT_PAIRS)
@@ -121,7 +121,7 @@ pub trait Spectrum: Sync {
     /// `H_s` (m).
     ///
     /// # References
-    /// Equation sheet §4; the spectral definition `H_m0` of WMO 1998, *Guide to wave analysis*.
+    /// docs/equations.md §4; the spectral definition `H_m0` of WMO 1998, *Guide to wave analysis*.
     fn significant_wave_height(&self) -> f64 {
         4.0 * self.m0().sqrt()
     }
@@ -136,7 +136,7 @@ pub trait Spectrum: Sync {
     /// The mean-square slope (dimensionless); `0` unless `0 < k_lo < k_hi`.
     ///
     /// # References
-    /// Cox & Munk 1954; equation sheet §11 (`σ_x² + σ_y² = ∫∫ |k|² Ψ(k) d²k`).
+    /// Cox & Munk 1954; docs/equations.md §11 (`σ_x² + σ_y² = ∫∫ |k|² Ψ(k) d²k`).
     fn mean_square_slope_between(&self, k_lo: f64, k_hi: f64) -> f64 {
         if !(k_lo > 0.0 && k_hi > k_lo) {
             return 0.0;
@@ -157,7 +157,7 @@ pub trait Spectrum: Sync {
     /// The mean-square slope (dimensionless).
     ///
     /// # References
-    /// Cox & Munk 1954; equation sheet §11.
+    /// Cox & Munk 1954; docs/equations.md §11.
     fn mean_square_slope(&self, k_max: f64) -> f64 {
         let k_lo = self.dispersion().wavenumber(MOMENT_LOW * self.peak_omega());
         self.mean_square_slope_between(k_lo, k_max)

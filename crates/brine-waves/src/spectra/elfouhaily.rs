@@ -2,9 +2,9 @@
 
 use std::f64::consts::{FRAC_PI_2, LN_2, PI};
 
-use crate::dispersion::{ELFOUHAILY_K_M, G};
 use crate::error::{WaveError, check};
-use crate::spreading::{Directions, invert_cdf};
+use crate::spectra::dispersion::{ELFOUHAILY_K_M, G};
+use crate::spectra::spreading::{Directions, invert_cdf};
 use crate::{Dispersion, Spectrum, Spreading};
 
 /// The unified directional spectrum of Elfouhaily, Chapron, Katsaros & Vandemark (1997), the
@@ -96,7 +96,7 @@ impl Elfouhaily {
     /// `Ω` (dimensionless), in `[0.84, 5]`.
     ///
     /// # References
-    /// Elfouhaily et al. 1997, Eq. 37; equation sheet §4.
+    /// Elfouhaily et al. 1997, Eq. 37; docs/equations.md §4.
     pub fn inverse_wave_age_from_fetch(u10: f64, fetch_m: f64) -> f64 {
         let x = G * fetch_m / (u10 * u10);
         let t = libm::tanh(libm::pow(x / Self::X0, 0.4));
@@ -219,7 +219,7 @@ impl Elfouhaily {
     /// `B_l` (dimensionless; `k³ S_l(k)`).
     ///
     /// # References
-    /// Elfouhaily et al. 1997, Eq. 31–34; equation sheet §4.
+    /// Elfouhaily et al. 1997, Eq. 31–34; docs/equations.md §4.
     pub fn curvature_long(&self, k: f64) -> f64 {
         if !(k > 0.0) {
             return 0.0;
@@ -240,7 +240,7 @@ impl Elfouhaily {
     /// `B_h` (dimensionless).
     ///
     /// # References
-    /// Elfouhaily et al. 1997, Eq. 40–44; equation sheet §4 (the `L_PM` factor of the authors' code).
+    /// Elfouhaily et al. 1997, Eq. 40–44; docs/equations.md §4 (the `L_PM` factor of the authors' code).
     pub fn curvature_short(&self, k: f64) -> f64 {
         if !(k > 0.0) {
             return 0.0;
@@ -260,7 +260,7 @@ impl Elfouhaily {
     /// `Δ` (dimensionless, in `(0, 1)`).
     ///
     /// # References
-    /// Elfouhaily et al. 1997, Eq. 57, 59; equation sheet §4.
+    /// Elfouhaily et al. 1997, Eq. 57, 59; docs/equations.md §4.
     pub fn spreading_delta(&self, k: f64) -> f64 {
         let c = phase_speed(k);
         libm::tanh(Self::A0 + Self::A_P * libm::pow(c / self.c_p, 2.5) + self.a_m * libm::pow(Self::C_M / c, 2.5))
@@ -276,7 +276,7 @@ impl Elfouhaily {
     /// `Ψ` (m⁴, variance per unit `d²k`); `∫∫ Ψ k dk dφ = m₀`; `0` for `k ≤ 0`.
     ///
     /// # References
-    /// Elfouhaily et al. 1997, Eq. 67; equation sheet §4.
+    /// Elfouhaily et al. 1997, Eq. 67; docs/equations.md §4.
     pub fn directional(&self, k: f64, phi: f64) -> f64 {
         if !(k > 0.0) {
             return 0.0;
@@ -295,13 +295,13 @@ impl Elfouhaily {
     /// `(σ_u², σ_c²)` (dimensionless), summing to [`Spectrum::mean_square_slope`].
     ///
     /// # References
-    /// Elfouhaily et al. 1997, §6; equation sheet §11.
+    /// Elfouhaily et al. 1997, §6; docs/equations.md §11.
     pub fn slope_variances(&self, k_max: f64) -> (f64, f64) {
         let k_lo = self.k_p / 400.0;
         if !(k_max > k_lo) {
             return (0.0, 0.0);
         }
-        let up = crate::integrate::simpson_log(
+        let up = crate::spectra::integrate::simpson_log(
             |k| k * k * self.s_k(k) * 0.5 * (1.0 + 0.5 * self.spreading_delta(k)),
             k_lo,
             k_max,
@@ -426,7 +426,7 @@ mod tests {
 
     #[test]
     fn oracle_at_10_m_s() {
-        // Equation sheet oracle (U10 = 10, Ω = 0.84, κ = 0.4, B_h × L_PM), printed to 4–5 digits.
+        // Reference value (docs/equations.md) (U10 = 10, Ω = 0.84, κ = 0.4, B_h × L_PM), printed to 4–5 digits.
         let e = Elfouhaily::fully_developed(10.0).unwrap();
         assert!((e.k_p() / 0.06922 - 1.0).abs() < PRINTED_5_DIGITS_REL);
         assert!((e.c_p() / 11.905 - 1.0).abs() < PRINTED_5_DIGITS_REL);
@@ -438,7 +438,7 @@ mod tests {
 
     #[test]
     fn fetch_oracle() {
-        // Equation sheet oracle: U10 = 10, x = 10⁴, 10⁵, 10⁶ m ⇒ Ω = 2.180, 1.203, 0.874.
+        // Reference value (docs/equations.md): U10 = 10, x = 10⁴, 10⁵, 10⁶ m ⇒ Ω = 2.180, 1.203, 0.874.
         for (x, om) in [(1e4, 2.180), (1e5, 1.203), (1e6, 0.874)] {
             let got = Elfouhaily::inverse_wave_age_from_fetch(10.0, x);
             assert!((got - om).abs() < FETCH_OMEGA_ABS, "x = {x}: Ω = {got}");

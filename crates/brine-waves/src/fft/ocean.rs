@@ -12,8 +12,8 @@ use rayon::prelude::*;
 use rustfft::num_complex::Complex64;
 use rustfft::{Fft, FftPlanner};
 
-use crate::fft_options::FFT_CASCADE_CUT_INDEX;
-use crate::fft_spectrum::{Band, cell_energy, directional_spectrum};
+use crate::fft::options::FFT_CASCADE_CUT_INDEX;
+use crate::fft::spectrum::{Band, cell_energy, directional_spectrum};
 use crate::{Dispersion, FftFrame, FftOptions, Spectrum, Spreading, WaveError};
 
 /// One wave vector of a cascade with energy at `k` or at `−k`.
@@ -100,7 +100,7 @@ impl FftRestFields {
     /// `J` (dimensionless): `< 1` compressed, `< 0` folded.
     ///
     /// # References
-    /// Dupuy & Bruneton 2012; Tessendorf 2001 (choppy waves); equation sheet §10.
+    /// Dupuy & Bruneton 2012; Tessendorf 2001 (choppy waves); docs/equations.md §10.
     pub fn jacobian(&self, idx: usize, choppiness: f64) -> f64 {
         let l = choppiness;
         (1.0 + l * self.dxx[idx]) * (1.0 + l * self.dzz[idx]) - l * l * self.dxz[idx] * self.dxz[idx]
@@ -136,7 +136,7 @@ impl FftRestFields {
 /// **Choppiness** (Tessendorf 2001, §4.6): the horizontal displacement
 /// `D(x, t) = Σ i (k/k) h̃(k, t) e^{ik·x}` moves the surface point of rest position `u` to
 /// `u + λ D(u)`. For one wave `h = A cos φ` this is `−A k̂ sin φ`, Gerstner's `u − (Q/k) d̂ sin φ`
-/// with `Q = λkA` (equation sheet §1): a positive `λ` sharpens the crests. Tessendorf prints
+/// with `Q = λkA` (docs/equations.md §1): a positive `λ` sharpens the crests. Tessendorf prints
 /// `−i`, which with `λ > 0` sharpens the troughs instead (so codes following him use `λ < 0`).
 ///
 /// **Looping.** With a loop period `T`, `ω` is replaced by `(2π/T) max(1, round(ωT/2π))`: every
@@ -170,7 +170,7 @@ impl FftRestFields {
 ///
 /// # References
 /// Tessendorf J. 2001, "Simulating Ocean Water", SIGGRAPH course notes, §3.3–4.6; Li Ying et al.
-/// 2018, §2.2; Dupuy J., Bruneton E. 2012 (cascades, Jacobian); equation sheet §4, §10.
+/// 2018, §2.2; Dupuy J., Bruneton E. 2012 (cascades, Jacobian); docs/equations.md §4, §10.
 #[derive(Debug, Clone)]
 pub struct FftOcean {
     options: FftOptions,

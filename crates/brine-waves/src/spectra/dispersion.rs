@@ -2,7 +2,7 @@
 
 use crate::error::{WaveError, check};
 
-/// Standard gravity `g` (m s⁻²), the value of the equation sheet.
+/// Standard gravity `g` (m s⁻²), the value of docs/equations.md.
 pub const G: f64 = 9.81;
 
 /// Surface tension of sea water `σ` (N m⁻¹) at about 20 °C and salinity 35 (Kinsman 1965).
@@ -24,7 +24,7 @@ pub const ELFOUHAILY_K_M: f64 = 370.0;
 /// `ω` (rad s⁻¹).
 ///
 /// # References
-/// Airy linear wave theory, deep-water limit `kh → ∞` of `ω² = g k tanh(k h)`; equation sheet §1.
+/// Airy linear wave theory, deep-water limit `kh → ∞` of `ω² = g k tanh(k h)`; docs/equations.md §1.
 pub fn omega_deep_water(k: f64) -> f64 {
     debug_assert!(k >= 0.0, "wavenumber must be non-negative, got {k}");
     (G * k).sqrt()
@@ -39,7 +39,7 @@ pub fn omega_deep_water(k: f64) -> f64 {
 /// `k` (rad m⁻¹); the wavelength is `λ = 2π/k`.
 ///
 /// # References
-/// Inverse of [`omega_deep_water`]; equation sheet §1.
+/// Inverse of [`omega_deep_water`]; docs/equations.md §1.
 pub fn wavenumber_deep_water(omega: f64) -> f64 {
     debug_assert!(omega >= 0.0, "angular frequency must be non-negative, got {omega}");
     omega * omega / G
@@ -54,7 +54,7 @@ pub fn wavenumber_deep_water(omega: f64) -> f64 {
 ///
 /// # References
 /// Lamb H. 1932, *Hydrodynamics*, 6th ed., ch. IX (surface waves, capillarity); Airy 1845;
-/// equation sheet §1 ("Parameters from dispersion"); Elfouhaily et al. 1997, JGR 102(C7), Eq. 24.
+/// docs/equations.md §1 ("Parameters from dispersion"); Elfouhaily et al. 1997, JGR 102(C7), Eq. 24.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Dispersion {
     /// Water depth `h` (m), `+∞` for deep water.
@@ -138,7 +138,7 @@ impl Dispersion {
     /// `ω` (rad s⁻¹); `0` for `k ≤ 0`.
     ///
     /// # References
-    /// Lamb 1932, ch. IX; equation sheet §1.
+    /// Lamb 1932, ch. IX; docs/equations.md §1.
     pub fn omega(&self, k: f64) -> f64 {
         if !(k > 0.0) {
             return 0.0;
@@ -199,7 +199,7 @@ impl Dispersion {
     /// `k` (rad m⁻¹); `0` for `ω ≤ 0`.
     ///
     /// # References
-    /// Inverse of the relation of Lamb 1932, ch. IX; equation sheet §1.
+    /// Inverse of the relation of Lamb 1932, ch. IX; docs/equations.md §1.
     pub fn wavenumber(&self, omega: f64) -> f64 {
         if !(omega > 0.0) {
             return 0.0;

@@ -2,21 +2,22 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::{TrochoidSet, lanes, solve_trochoid_phase};
+use crate::tracing::lanes;
+use crate::{TrochoidSet, solve_trochoid_phase};
 
 /// A sea surface seen as a height field `y = h(x, z, t)` over the horizontal plane, with the
 /// motion of the water particles on it.
 ///
 /// Implemented by [`TrochoidSum`] (the surface Darles et al. trace, the default for rendering),
 /// [`crate::GerstnerSurface`] (the true Gerstner sum) and [`crate::SineSet`] (Chen et al.'s sine
-/// waves); equation sheet §1 explains why the first two differ.
+/// waves); docs/equations.md §1 explains why the first two differ.
 ///
 /// Common arguments: `x`, `z` horizontal position (m, any finite value; y is up, see
 /// `docs/conventions.md`), `t` time (s, any finite value).
 ///
 /// # References
 /// Darles et al. 2007, §3 (trochoid sum); Bruneton et al. 2010 (Gerstner sum); Chen et al. 2007,
-/// §3.3 (sine set); equation sheet §1 and §10.
+/// §3.3 (sine set); docs/equations.md §1 and §10.
 pub trait WaveSurface {
     /// Surface elevation `h(x, z, t)` above the mean sea level `y = 0`.
     ///
@@ -27,7 +28,7 @@ pub trait WaveSurface {
     /// `h` (m), within [`WaveSurface::height_bounds`].
     ///
     /// # References
-    /// Equation sheet §1 (each implementation cites its own equation).
+    /// docs/equations.md §1 (each implementation cites its own equation).
     fn height(&self, x: f64, z: f64, t: f64) -> f64;
 
     /// Gradient of the height field, `∇h = (∂h/∂x, ∂h/∂z)`.
@@ -39,7 +40,7 @@ pub trait WaveSurface {
     /// `∇h` (dimensionless), `|∇h| ≤` [`WaveSurface::max_slope`].
     ///
     /// # References
-    /// Equation sheet §1.
+    /// docs/equations.md §1.
     fn gradient(&self, x: f64, z: f64, t: f64) -> DVec2;
 
     /// Upward unit normal of the height field, `n = (−∂h/∂x, 1, −∂h/∂z)/√(1 + |∇h|²)`.
@@ -51,7 +52,7 @@ pub trait WaveSurface {
     /// `n` (unit vector, `n_y > 0`).
     ///
     /// # References
-    /// Equation sheet §1 (normal of a height field).
+    /// docs/equations.md §1 (normal of a height field).
     fn normal(&self, x: f64, z: f64, t: f64) -> DVec3 {
         let g = self.gradient(x, z, t);
         DVec3::new(-g.x, 1.0, -g.y).normalize()
@@ -63,7 +64,7 @@ pub trait WaveSurface {
     /// `(h_min, h_max)` (m); `±Σ Aᵢ` for the wave sets here.
     ///
     /// # References
-    /// Equation sheet §1 (`|Aᵢ cos θᵢ| ≤ Aᵢ`).
+    /// docs/equations.md §1 (`|Aᵢ cos θᵢ| ≤ Aᵢ`).
     fn height_bounds(&self) -> (f64, f64);
 
     /// Lipschitz constant of the height field: a bound `L ≥ |∇h|` over all positions and times.
@@ -73,7 +74,7 @@ pub trait WaveSurface {
     /// `Σ kᵢAᵢ` (sine set).
     ///
     /// # References
-    /// Equation sheet §1 ("max |slope|"; the Gerstner bound is derived there).
+    /// docs/equations.md §1 ("max |slope|"; the Gerstner bound is derived there).
     fn max_slope(&self) -> f64;
 
     /// Horizontal displacement `D` of the water particle now at the surface above `(x, z)`: its
@@ -87,7 +88,7 @@ pub trait WaveSurface {
     /// sine set.
     ///
     /// # References
-    /// Equation sheet §1 (particle orbits) and §10.
+    /// docs/equations.md §1 (particle orbits) and §10.
     fn displacement(&self, x: f64, z: f64, t: f64) -> DVec2;
 
     /// Jacobian determinant `J = det(∂x/∂u)` of the horizontal map from rest positions `u` to
@@ -102,7 +103,7 @@ pub trait WaveSurface {
     /// (at least `(1 − Σ Qᵢ)² > 0` while `Σ Qᵢ < 1`), `1` for the sine set.
     ///
     /// # References
-    /// Dupuy & Bruneton 2012; equation sheet §10.
+    /// Dupuy & Bruneton 2012; docs/equations.md §10.
     fn jacobian(&self, x: f64, z: f64, t: f64) -> f64;
 
     /// Velocity of the surface point above `(x, z)`: horizontally as the waves' particles move,
@@ -117,7 +118,7 @@ pub trait WaveSurface {
     /// `(v_x, v_y, v_z)` (m s⁻¹). Each implementation documents its horizontal part.
     ///
     /// # References
-    /// Equation sheet §1 (particle orbits); Lamb 1932, *Hydrodynamics*, §9 (kinematic surface
+    /// docs/equations.md §1 (particle orbits); Lamb 1932, *Hydrodynamics*, §9 (kinematic surface
     /// condition).
     fn velocity(&self, x: f64, z: f64, t: f64) -> DVec3;
 
@@ -137,7 +138,7 @@ pub trait WaveSurface {
     /// If the three slices differ in length (a programming error, not user input).
     ///
     /// # References
-    /// Equation sheet §1.
+    /// docs/equations.md §1.
     fn heights(&self, xs: &[f64], zs: &[f64], t: f64, out: &mut [f64]) {
         assert!(xs.len() == zs.len() && xs.len() == out.len(), "heights: slices differ in length");
         for ((o, &x), &z) in out.iter_mut().zip(xs).zip(zs) {
@@ -150,7 +151,7 @@ pub trait WaveSurface {
 /// `h(x, z, t) = Σᵢ Aᵢ cos θᵢ` with `θᵢ − Qᵢ sin θᵢ = kᵢ d̂ᵢ·(x, z) − ωᵢ t + φᵢ`.
 ///
 /// Each term is the exact profile of its trochoid, but the horizontal displacements of different
-/// waves do not compose: this is *not* the Gerstner sum (equation sheet §1(a),
+/// waves do not compose: this is *not* the Gerstner sum (docs/equations.md §1(a),
 /// [`crate::GerstnerSurface`] is); it is a valid, self-consistent surface whose height lies in
 /// `[−Σ Aᵢ, Σ Aᵢ]` and whose slope is at most `Σ kᵢAᵢ/√(1 − Qᵢ²)`.
 ///
@@ -158,7 +159,7 @@ pub trait WaveSurface {
 /// `θᵢ`: displacement `D = −Σ (Qᵢ/kᵢ) d̂ᵢ sin θᵢ`, horizontal velocity
 /// `v_xz = Σ (Qᵢωᵢ/kᵢ) d̂ᵢ cos θᵢ` (the time derivative of each `Dᵢ` with that wave's rest
 /// coordinate `d̂ᵢ·x + (Qᵢ/kᵢ) sin θᵢ` held fixed), and Jacobian
-/// `J = det(I − Σ Qᵢ d̂ᵢd̂ᵢᵀ cos θᵢ)` (the Gerstner form of equation sheet §10 at these phases:
+/// `J = det(I − Σ Qᵢ d̂ᵢd̂ᵢᵀ cos θᵢ)` (the Gerstner form of docs/equations.md §10 at these phases:
 /// exact for one wave, and the same statistics as the Gerstner sum for many). The vertical
 /// velocity is the kinematic condition `v_y = ∂h/∂t + ∇h·v_xz`, so that a point carried by
 /// `v` stays on the surface; for one wave it is the particle's `Aω sin θ`, for many it differs
@@ -280,7 +281,7 @@ impl TrochoidField<'_> {
     /// `hᵢ` (m), in `[−Aᵢ, Aᵢ]`.
     ///
     /// # References
-    /// Darles et al. 2007, Eq. 2; equation sheet §1(a).
+    /// Darles et al. 2007, Eq. 2; docs/equations.md §1(a).
     #[inline]
     pub fn wave_height(&self, i: usize, x: f64, z: f64) -> f64 {
         let (_, c, _) = self.wave_phase(i, x, z);
@@ -297,7 +298,7 @@ impl TrochoidField<'_> {
     /// `h` (m), in `[−ΣAᵢ, ΣAᵢ]`.
     ///
     /// # References
-    /// Darles et al. 2007, Eq. 2; equation sheet §1(a).
+    /// Darles et al. 2007, Eq. 2; docs/equations.md §1(a).
     #[inline]
     pub fn height(&self, x: f64, z: f64) -> f64 {
         (0..self.sum.len()).map(|i| self.wave_height(i, x, z)).sum()
@@ -313,7 +314,7 @@ impl TrochoidField<'_> {
     /// `h` (m).
     ///
     /// # References
-    /// Equation sheet §1(a).
+    /// docs/equations.md §1(a).
     #[inline]
     pub fn height_lanes(&self, x: f64, z: f64) -> f64 {
         let s = self.sum;
@@ -330,7 +331,7 @@ impl TrochoidField<'_> {
     /// If the three slices differ in length.
     ///
     /// # References
-    /// Equation sheet §1.
+    /// docs/equations.md §1.
     pub fn heights(&self, xs: &[f64], zs: &[f64], out: &mut [f64]) {
         assert!(xs.len() == zs.len() && xs.len() == out.len(), "heights: slices differ in length");
         for ((o, &x), &z) in out.iter_mut().zip(xs).zip(zs) {
@@ -347,7 +348,7 @@ impl TrochoidField<'_> {
     /// `(∂h/∂x, ∂h/∂z)` (dimensionless), `|∇h| ≤ Σ kᵢAᵢ/√(1 − Qᵢ²)`.
     ///
     /// # References
-    /// Equation sheet §1(a) (slope of a trochoid).
+    /// docs/equations.md §1(a) (slope of a trochoid).
     pub fn gradient(&self, x: f64, z: f64) -> DVec2 {
         let s = &self.sum;
         let mut g = DVec2::ZERO;
@@ -368,7 +369,7 @@ impl TrochoidField<'_> {
     /// The normal (unit, `n_y > 0`).
     ///
     /// # References
-    /// Equation sheet §1.
+    /// docs/equations.md §1.
     pub fn normal(&self, x: f64, z: f64) -> DVec3 {
         let g = self.gradient(x, z);
         DVec3::new(-g.x, 1.0, -g.y).normalize()
@@ -383,7 +384,7 @@ impl TrochoidField<'_> {
     /// `D` (m), `|D| ≤ Σ Qᵢ/kᵢ`.
     ///
     /// # References
-    /// Equation sheet §1 (trochoid orbits).
+    /// docs/equations.md §1 (trochoid orbits).
     pub fn displacement(&self, x: f64, z: f64) -> DVec2 {
         let s = &self.sum;
         let mut d = DVec2::ZERO;
@@ -405,7 +406,7 @@ impl TrochoidField<'_> {
     /// `J` (dimensionless); `1 − Q cos θ` for one wave.
     ///
     /// # References
-    /// Dupuy & Bruneton 2012; equation sheet §10.
+    /// Dupuy & Bruneton 2012; docs/equations.md §10.
     pub fn jacobian(&self, x: f64, z: f64) -> f64 {
         let s = &self.sum;
         let (mut jxx, mut jxz, mut jzz) = (1.0, 0.0, 1.0);
@@ -430,7 +431,7 @@ impl TrochoidField<'_> {
     /// `(v_x, v_y, v_z)` (m s⁻¹); for one wave the particle's velocity `((Qω/k) d̂ cos θ, Aω sin θ)`.
     ///
     /// # References
-    /// Equation sheet §1; Lamb 1932, *Hydrodynamics*, §9 (kinematic condition).
+    /// docs/equations.md §1; Lamb 1932, *Hydrodynamics*, §9 (kinematic condition).
     pub fn velocity(&self, x: f64, z: f64) -> DVec3 {
         let s = &self.sum;
         let (mut dh_dt, mut grad, mut v) = (0.0, DVec2::ZERO, DVec2::ZERO);

@@ -27,7 +27,7 @@ use crate::{Spectrum, Spreading};
 /// `Ψ` (m⁴).
 ///
 /// # References
-/// Equation sheet §4 ("Units … Change of variable"); Tessendorf 2001, §3.3 (`P_h` per `d²k`);
+/// docs/equations.md §4 ("Units … Change of variable"); Tessendorf 2001, §3.3 (`P_h` per `d²k`);
 /// Elfouhaily et al. 1997, Eq. 67.
 pub fn directional_spectrum(spectrum: &dyn Spectrum, spreading: &dyn Spreading, k: f64, theta: f64) -> f64 {
     if !(k > 0.0) {

@@ -8,8 +8,8 @@ use brine_trace::footprint_weight;
 use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
-use crate::fft_resample::resample;
-use crate::fft_spline::SplineGrid;
+use crate::fft::resample::resample;
+use crate::fft::spline::SplineGrid;
 use crate::{FftOcean, FftRestFields};
 
 /// Smallest `|d_y|` used to stretch a pixel footprint along a grazing view (as the renderer's
@@ -160,7 +160,7 @@ impl FftCascade {
     /// `(∂h/∂x, ∂h/∂z)` (dimensionless).
     ///
     /// # References
-    /// Tessendorf 2001 (the slope and choppy-displacement sums); equation sheet §1.
+    /// Tessendorf 2001 (the slope and choppy-displacement sums); docs/equations.md §1.
     #[inline]
     pub fn gradient(&self, x: f64, z: f64) -> DVec2 {
         let c = self.cell(x, z);
@@ -187,7 +187,7 @@ impl FftCascade {
     /// `J` (dimensionless): `< 1` compressed, `< 0` folded.
     ///
     /// # References
-    /// Dupuy & Bruneton 2012; Tessendorf 2001 (choppy waves); equation sheet §10.
+    /// Dupuy & Bruneton 2012; Tessendorf 2001 (choppy waves); docs/equations.md §10.
     #[inline]
     pub fn jacobian(&self, x: f64, z: f64) -> f64 {
         let c = self.cell(x, z);
@@ -311,7 +311,7 @@ impl FftCascade {
 /// envelope where the sheet folds, what a camera above the sea sees); the traced surface is the
 /// cubic B-spline through these heights. So each cascade is a true height field with certified
 /// slope and curvature bounds ([`FftCascade`]), and the sea is their sum. As with the trochoid sum of Darles et
-/// al. (equation sheet §1(a)), the displacements of different cascades do not compose: the sum
+/// al. (docs/equations.md §1(a)), the displacements of different cascades do not compose: the sum
 /// of displaced cascades is not the displaced sum (a valid, self-consistent surface; the two
 /// agree to first order in `λ`). With `λ = 0` it is Tessendorf's height field itself, exact at the
 /// grid points and within `O(Δ⁴)` between them. The resampling is linear on the displaced mesh:
@@ -432,7 +432,7 @@ impl FftFrame {
     /// The normal (unit, `n_y > 0`).
     ///
     /// # References
-    /// Equation sheet §1 (normal of a height field).
+    /// docs/equations.md §1 (normal of a height field).
     #[inline]
     pub fn normal(&self, x: f64, z: f64) -> DVec3 {
         let g = self.gradient(x, z);
@@ -449,7 +449,7 @@ impl FftFrame {
     /// `J` (dimensionless).
     ///
     /// # References
-    /// Dupuy & Bruneton 2012; equation sheet §10 (`μ = Σ⟨kᵢ⟩`, cross-cascade products neglected).
+    /// Dupuy & Bruneton 2012; docs/equations.md §10 (`μ = Σ⟨kᵢ⟩`, cross-cascade products neglected).
     #[inline]
     pub fn jacobian(&self, x: f64, z: f64) -> f64 {
         1.0 + self.cascades.iter().map(|c| c.jacobian(x, z) - 1.0).sum::<f64>()
@@ -480,7 +480,7 @@ impl FftFrame {
     /// If `c ≥ cascade_count()`.
     ///
     /// # References
-    /// Bruneton et al. 2010 (seamless transition); equation sheet §1.
+    /// Bruneton et al. 2010 (seamless transition); docs/equations.md §1.
     pub fn fade_weight(&self, c: usize, direction: DVec3, footprint_angle: f64, t: f64) -> f64 {
         if footprint_angle > 0.0 {
             footprint_weight(self.cascades[c].fade_distance(direction, footprint_angle), t)
@@ -520,7 +520,7 @@ impl FftFrame {
     /// `DVec3(xx, xz, zz)` (dimensionless).
     ///
     /// # References
-    /// Bruneton, Neyret & Holzschuch 2010 (seamless transition); equation sheet §11.
+    /// Bruneton, Neyret & Holzschuch 2010 (seamless transition); docs/equations.md §11.
     pub fn faded_slope_covariance(&self, direction: DVec3, footprint_angle: f64, t: f64) -> DVec3 {
         let mut out = DVec3::ZERO;
         if footprint_angle <= 0.0 {

@@ -2,8 +2,8 @@
 
 use std::f64::consts::PI;
 
-use crate::dispersion::G;
 use crate::error::{WaveError, check};
+use crate::spectra::dispersion::G;
 use crate::{PiersonMoskowitz, Spectrum};
 
 /// The Phillips spectrum as Tessendorf (2001) uses it, with its small-wave cutoff.
@@ -24,7 +24,7 @@ use crate::{PiersonMoskowitz, Spectrum};
 ///
 /// # References
 /// Tessendorf J. 2001, "Simulating Ocean Water", SIGGRAPH course notes, §3.3 (Eq. 40–41);
-/// Phillips O.M. 1958, JFM 4; equation sheet §4.
+/// Phillips O.M. 1958, JFM 4; docs/equations.md §4.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Phillips {
     wind_speed: f64,
@@ -165,7 +165,7 @@ mod tests {
 
     #[test]
     fn largest_wave_oracle() {
-        // Equation sheet oracle: V = 10 m/s ⇒ L = 10.194 m.
+        // Reference value (docs/equations.md): V = 10 m/s ⇒ L = 10.194 m.
         let p = Phillips::from_wind(10.0).unwrap();
         assert!((p.largest_wave() - 10.194).abs() < PRINTED_3_DECIMALS_M);
     }

@@ -43,7 +43,7 @@ impl TrochoidSet {
         self.waves.iter().map(Trochoid::amplitude).sum()
     }
 
-    /// `Σ Qᵢ`: the Gerstner sum cannot fold while it is below 1 (equation sheet §1).
+    /// `Σ Qᵢ`: the Gerstner sum cannot fold while it is below 1 (docs/equations.md §1).
     pub fn total_steepness(&self) -> f64 {
         self.waves.iter().map(Trochoid::steepness).sum()
     }
@@ -55,7 +55,7 @@ impl TrochoidSet {
     /// The variance (m²).
     ///
     /// # References
-    /// Thon & Ghazanfarpour 2002; equation sheet §1 ("Extraction from a spectrum").
+    /// Thon & Ghazanfarpour 2002; docs/equations.md §1 ("Extraction from a spectrum").
     pub fn variance(&self) -> f64 {
         self.waves.iter().map(|w| 0.5 * w.amplitude() * w.amplitude()).sum()
     }
@@ -72,7 +72,7 @@ impl TrochoidSet {
     /// `(σ_along², σ_across²)` (dimensionless).
     ///
     /// # References
-    /// Equation sheet §11 (trochoid set: `σ_x² = Σ cos²θᵢ (1 − √(1 − kᵢ²Aᵢ²))`).
+    /// docs/equations.md §11 (trochoid set: `σ_x² = Σ cos²θᵢ (1 − √(1 − kᵢ²Aᵢ²))`).
     pub fn slope_variances(&self, direction: f64) -> (f64, f64) {
         let (mut along, mut across) = (0.0, 0.0);
         for w in &self.waves {
@@ -95,7 +95,7 @@ impl TrochoidSet {
     /// `(dx, y, dz)` (m): horizontal displacement and height.
     ///
     /// # References
-    /// Equation sheet §1, "Sum of N trochoids".
+    /// docs/equations.md §1, "Sum of N trochoids".
     pub fn gerstner_displacement(&self, u: DVec2, t: f64) -> DVec3 {
         let mut out = DVec3::ZERO;
         for w in &self.waves {
@@ -122,7 +122,7 @@ impl TrochoidSet {
     /// `J` (dimensionless).
     ///
     /// # References
-    /// Dupuy & Bruneton 2012; equation sheet §10.
+    /// Dupuy & Bruneton 2012; docs/equations.md §10.
     pub fn gerstner_jacobian(&self, u: DVec2, t: f64) -> f64 {
         let (mut jxx, mut jxz, mut jzz) = (1.0, 0.0, 1.0);
         for w in &self.waves {

@@ -18,7 +18,7 @@ pub const MAX_STEEPNESS: f64 = 0.99;
 ///
 /// # References
 /// Thon S., Ghazanfarpour D. 2002, "Ocean waves synthesis and animation using real world
-/// information", Computers & Graphics 26(1):99–108; Darles et al. 2007, §3; equation sheet §1.
+/// information", Computers & Graphics 26(1):99–108; Darles et al. 2007, §3; docs/equations.md §1.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Trochoid {
     amplitude: f64,
@@ -104,7 +104,7 @@ impl Trochoid {
     /// The slope (dimensionless): the Lipschitz constant of this wave's height field.
     ///
     /// # References
-    /// Equation sheet §1, "max |slope|" (derived; Darles et al. 2007 §3.2 place it wrongly at the
+    /// docs/equations.md §1, "max |slope|" (derived; Darles et al. 2007 §3.2 place it wrongly at the
     /// crest).
     pub fn max_slope(&self) -> f64 {
         self.wavenumber * self.amplitude / (1.0 - self.steepness * self.steepness).sqrt()
@@ -120,7 +120,7 @@ impl Trochoid {
     /// the second derivative of `h` along a ray.
     ///
     /// # References
-    /// Equation sheet §1 (trochoid profile, `x = θ/k − (Q/k) sin θ`, `h = A cos θ`); derived.
+    /// docs/equations.md §1 (trochoid profile, `x = θ/k − (Q/k) sin θ`, `h = A cos θ`); derived.
     pub fn max_crest_curvature(&self) -> f64 {
         let q = self.steepness;
         self.wavenumber * self.wavenumber * self.amplitude / ((1.0 - q) * (1.0 - q))
@@ -140,7 +140,7 @@ impl Trochoid {
     /// The curvature bound (1/m), used with `σ` as [`Self::max_crest_curvature`].
     ///
     /// # References
-    /// Equation sheet §1 (trochoid profile); derived here.
+    /// docs/equations.md §1 (trochoid profile); derived here.
     pub fn max_trough_curvature(&self) -> f64 {
         self.wavenumber * self.wavenumber * self.amplitude * trough_curvature_factor(self.steepness)
     }
@@ -157,13 +157,13 @@ impl Trochoid {
     /// `⟨(dh/dx)²⟩ = (kA)² (1 − √(1 − Q²))/Q²` (→ `(kA)²/2` as `Q → 0`), all of it along `d̂`.
     ///
     /// Derived from `dh/dx = −kA sin θ/(1 − Q cos θ)` and `dx ∝ (1 − Q cos θ) dθ`; with `Q = kA`
-    /// it is the equation sheet's `1 − √(1 − Q²)`.
+    /// it is the reference's (docs/equations.md) `1 − √(1 − Q²)`.
     ///
     /// # Returns
     /// The mean-square slope (dimensionless).
     ///
     /// # References
-    /// Equation sheet §1 ("mean-square slope") and §11 (trochoid slope variances).
+    /// docs/equations.md §1 ("mean-square slope") and §11 (trochoid slope variances).
     pub fn mean_square_slope(&self) -> f64 {
         let q = self.steepness;
         let ka2 = (self.wavenumber * self.amplitude).powi(2);
@@ -179,25 +179,25 @@ impl Trochoid {
 impl Trochoid {
     /// Mean height of the profile over horizontal position, `⟨h⟩ = −Q A/2` (m): the trochoid spends
     /// longer in its troughs than on its crests (`dx ∝ (1 − Q cos θ) dθ`). With `Q = kA` it is the
-    /// equation sheet's `−kA²/2`.
+    /// docs/equations.md's `−kA²/2`.
     ///
     /// # Returns
     /// The mean height (m) relative to the orbit centres `y₀ = 0`.
     ///
     /// # References
-    /// Equation sheet §1, "Exact single-trochoid statistics" (derived).
+    /// docs/equations.md §1, "Exact single-trochoid statistics" (derived).
     pub fn mean_height(&self) -> f64 {
         -0.5 * self.steepness * self.amplitude
     }
 
     /// Variance of the height over horizontal position, `A² (2 − Q²)/4`; with `Q = kA` the
-    /// equation sheet's `A² (2 − k²A²)/4`.
+    /// docs/equations.md's `A² (2 − k²A²)/4`.
     ///
     /// # Returns
     /// The variance (m²).
     ///
     /// # References
-    /// Equation sheet §1 (derived).
+    /// docs/equations.md §1 (derived).
     pub fn height_variance(&self) -> f64 {
         0.25 * self.amplitude * self.amplitude * (2.0 - self.steepness * self.steepness)
     }
@@ -208,7 +208,7 @@ impl Trochoid {
     /// The height (m) above the orbit centres.
     ///
     /// # References
-    /// Equation sheet §1 ("max |slope| … reached where cos φ = Q").
+    /// docs/equations.md §1 ("max |slope| … reached where cos φ = Q").
     pub fn max_slope_height(&self) -> f64 {
         self.steepness * self.amplitude
     }
@@ -223,7 +223,7 @@ impl Trochoid {
     /// `(position along d̂ (m), height (m))`.
     ///
     /// # References
-    /// Equation sheet §1 (the trochoid profile); Thon & Ghazanfarpour 2002.
+    /// docs/equations.md §1 (the trochoid profile); Thon & Ghazanfarpour 2002.
     pub fn profile_point(&self, theta: f64) -> (f64, f64) {
         ((theta - self.steepness * theta.sin()) / self.wavenumber, self.amplitude * theta.cos())
     }
@@ -245,7 +245,7 @@ impl Trochoid {
 /// reduced to `(−π, π]`).
 ///
 /// # References
-/// Equation sheet §1 (`τ_Q(s) = cos θ` with `θ` solving `s = θ − Q sin θ`); Thon & Ghazanfarpour 2002.
+/// docs/equations.md §1 (`τ_Q(s) = cos θ` with `θ` solving `s = θ − Q sin θ`); Thon & Ghazanfarpour 2002.
 #[inline]
 pub fn solve_trochoid_phase(s: f64, q: f64) -> (f64, f64, f64) {
     debug_assert!((0.0..=MAX_STEEPNESS).contains(&q), "steepness {q} outside [0, 0.99]");
@@ -314,7 +314,7 @@ mod tests {
 
     #[test]
     fn max_slope_oracle() {
-        // Equation sheet oracle: k = 1, A = 0.5 (Q = 0.5) ⇒ 0.577350; Q = 0.8 ⇒ 1.333333.
+        // Reference value (docs/equations.md): k = 1, A = 0.5 (Q = 0.5) ⇒ 0.577350; Q = 0.8 ⇒ 1.333333.
         let w = Trochoid::new(0.5, 1.0, 0.0, 0.0, 0.0, 0.5).unwrap();
         assert!((w.max_slope() - 0.577350).abs() < ORACLE_ABS);
         let w = Trochoid::new(0.8, 1.0, 0.0, 0.0, 0.0, 0.8).unwrap();
@@ -323,7 +323,7 @@ mod tests {
 
     #[test]
     fn mean_square_slope_oracle() {
-        // Equation sheet oracle: k = 1, A = 0.5 (Q = 0.5) ⇒ 0.133975; Q = 0.8 ⇒ 0.4.
+        // Reference value (docs/equations.md): k = 1, A = 0.5 (Q = 0.5) ⇒ 0.133975; Q = 0.8 ⇒ 0.4.
         let w = Trochoid::new(0.5, 1.0, 0.0, 0.0, 0.0, 0.5).unwrap();
         assert!((w.mean_square_slope() - 0.133975).abs() < ORACLE_ABS);
         let w = Trochoid::new(0.8, 1.0, 0.0, 0.0, 0.0, 0.8).unwrap();
@@ -332,7 +332,7 @@ mod tests {
 
     #[test]
     fn single_trochoid_statistics_oracle() {
-        // Equation sheet oracle: k = 1, A = 0.5 (Q = 0.5): max slope at y − y0 = 0.25 m, mean height
+        // Reference value (docs/equations.md): k = 1, A = 0.5 (Q = 0.5): max slope at y − y0 = 0.25 m, mean height
         // −0.125 m, height variance 0.109375 m².
         let w = Trochoid::new(0.5, 1.0, 0.0, 0.0, 0.0, 0.5).unwrap();
         assert!((w.max_slope_height() - 0.25).abs() < ROUND_ABS);

@@ -3,7 +3,7 @@
 use glam::{DVec2, DVec3};
 
 use crate::error::WaveError;
-use crate::gerstner_lanes::{self, LaneState, LaneWaves};
+use crate::tracing::gerstner_lanes::{self, LaneState, LaneWaves};
 use crate::{TrochoidSet, WaveSurface};
 
 /// Absolute part of the inversion tolerance (m): the residual `|u + D(u) − x|` the Newton solve
@@ -19,7 +19,7 @@ pub const GERSTNER_TOLERANCE_REL: f64 = 1e-14;
 pub const GERSTNER_MAX_ITERATIONS: usize = 64;
 
 /// The sum of Gerstner waves with all horizontal displacements composed, as Bruneton et al. 2010,
-/// Crest and Blender draw it (equation sheet §1(b)):
+/// Crest and Blender draw it (docs/equations.md §1(b)):
 ///
 /// `P(u, t) = (u − Σ (Qᵢ/kᵢ) d̂ᵢ sin φᵢ, Σ Aᵢ cos φᵢ)`, `φᵢ = kᵢ d̂ᵢ·u − ωᵢt + φ₀ᵢ`.
 ///
@@ -28,7 +28,7 @@ pub const GERSTNER_MAX_ITERATIONS: usize = 64;
 /// at most [`GERSTNER_MAX_ITERATIONS`] iterations). The map `u ↦ x` has the symmetric Jacobian
 /// `J = I − Σ Qᵢ d̂ᵢd̂ᵢᵀ cos φᵢ`, whose eigenvalues lie in `[1 − ΣQ, 1 + ΣQ]`: while
 /// `Σ Qᵢ < 1` it is a diffeomorphism and the height field exists. Then
-/// `∇ₓh = J⁻¹ ∇ᵤh`, `|∇ₓh| ≤ Σ kᵢAᵢ/(1 − Σ Qᵢ)` (the conservative bound of the equation sheet, `Q_Σ/(1 − Q_Σ)`
+/// `∇ₓh = J⁻¹ ∇ᵤh`, `|∇ₓh| ≤ Σ kᵢAᵢ/(1 − Σ Qᵢ)` (the conservative bound of docs/equations.md, `Q_Σ/(1 − Q_Σ)`
 /// when `Qᵢ = kᵢAᵢ`; for one wave it exceeds the exact `Q/√(1 − Q²)`).
 ///
 /// [`GerstnerField::height`] runs the inversion's passes over the waves one at a time;
@@ -38,7 +38,7 @@ pub const GERSTNER_MAX_ITERATIONS: usize = 64;
 /// # References
 /// Gerstner F. 1802; Tessendorf 2001, §3.2; Bruneton E., Neyret F., Holzschuch N. 2010,
 /// "Real-time realistic ocean lighting using seamless transitions from geometry to BRDF", CGF
-/// 29(2); equation sheet §1(b) and §10.
+/// 29(2); docs/equations.md §1(b) and §10.
 ///
 /// The wave arrays are padded to a multiple of four with inert waves (`A = Q = 0`, `k = 0`) for
 /// the SIMD passes; the scalar passes stop at the real count.
@@ -115,7 +115,7 @@ impl GerstnerSurface {
     /// `L` (dimensionless).
     ///
     /// # References
-    /// Equation sheet §1(b) (derived: `|∇ᵤh| ≤ Σ kA`, `‖J⁻¹‖ ≤ 1/(1 − ΣQ)`).
+    /// docs/equations.md §1(b) (derived: `|∇ᵤh| ≤ Σ kA`, `‖J⁻¹‖ ≤ 1/(1 − ΣQ)`).
     pub fn slope_bound(&self) -> f64 {
         self.total_ka / (1.0 - self.total_steepness)
     }
@@ -271,7 +271,7 @@ impl GerstnerField<'_> {
     /// wavelength); Darles et al. 2007 §3.2.
     pub fn fade_distances(&self, d: DVec3, footprint_angle: f64) -> Vec<f64> {
         let s = self.surface;
-        (0..s.len()).map(|i| crate::fade::wave_fade_distance(s.kx[i], s.kz[i], d, footprint_angle)).collect()
+        (0..s.len()).map(|i| crate::tracing::fade::wave_fade_distance(s.kx[i], s.kz[i], d, footprint_angle)).collect()
     }
 
     /// Height (m) of the faded Gerstner sum, each wave's amplitude and steepness scaled by its
@@ -287,7 +287,7 @@ impl GerstnerField<'_> {
     /// `h` (m), in `[−Σ wᵢAᵢ, Σ wᵢAᵢ]`.
     ///
     /// # References
-    /// Equation sheet §1(b); Bruneton, Neyret & Holzschuch 2010 §4 (amplitudes faded with the
+    /// docs/equations.md §1(b); Bruneton, Neyret & Holzschuch 2010 §4 (amplitudes faded with the
     /// footprint).
     pub fn faded_height(&self, x: f64, z: f64, weights: &[f64]) -> f64 {
         debug_assert_eq!(weights.len(), self.surface.len());
@@ -308,7 +308,7 @@ impl GerstnerField<'_> {
     /// `h` (m), equal to [`GerstnerField::faded_height`] but for the order of roundings.
     ///
     /// # References
-    /// Equation sheet §1(b); Bruneton, Neyret & Holzschuch 2010 §4.
+    /// docs/equations.md §1(b); Bruneton, Neyret & Holzschuch 2010 §4.
     pub fn faded_height_lanes(&self, x: f64, z: f64, weights: &[f64], scratch: &mut FadedWaves) -> f64 {
         let s = self.surface;
         scratch.clear();
@@ -340,7 +340,7 @@ impl GerstnerField<'_> {
     /// `∇h` (dimensionless) of the surface that ray traced.
     ///
     /// # References
-    /// Equation sheet §1(b); Bruneton, Neyret & Holzschuch 2010 §4.
+    /// docs/equations.md §1(b); Bruneton, Neyret & Holzschuch 2010 §4.
     pub fn faded_gradient(&self, x: f64, z: f64, d: DVec3, footprint_angle: f64, t: f64) -> DVec2 {
         if footprint_angle <= 0.0 || t <= 0.0 {
             return self.gradient(x, z);
@@ -373,7 +373,7 @@ impl GerstnerField<'_> {
         for (i, f) in self.fade_distances(d, footprint_angle).into_iter().enumerate() {
             let lost = 1.0 - brine_trace::footprint_weight(f, t);
             if lost > 0.0 {
-                out += lost * crate::fade::slope_covariance(s.kx[i], s.kz[i], s.amplitude[i]);
+                out += lost * crate::tracing::fade::slope_covariance(s.kx[i], s.kz[i], s.amplitude[i]);
             }
         }
         out
@@ -435,7 +435,7 @@ impl GerstnerField<'_> {
     /// `(x, y, z)` (m).
     ///
     /// # References
-    /// Equation sheet §1(b).
+    /// docs/equations.md §1(b).
     pub fn forward(&self, u: DVec2) -> DVec3 {
         let st = self.state(u);
         let x = u + st.displacement;
@@ -458,7 +458,7 @@ impl GerstnerField<'_> {
     /// The rest position (m), the residual `|G|` (m) and the iteration count.
     ///
     /// # References
-    /// Equation sheet §1(b); Nocedal & Wright 2006, *Numerical Optimization*, ch. 11 (Newton with a
+    /// docs/equations.md §1(b); Nocedal & Wright 2006, *Numerical Optimization*, ch. 11 (Newton with a
     /// line search).
     pub fn solve(&self, x: f64, z: f64) -> Inversion {
         self.solve_state(x, z).0
@@ -528,7 +528,7 @@ impl GerstnerField<'_> {
     /// As [`GerstnerField::solve`].
     ///
     /// # References
-    /// Equation sheet §1(b).
+    /// docs/equations.md §1(b).
     pub fn solve_lanes(&self, x: f64, z: f64) -> Inversion {
         let w = self.lanes();
         self.invert(x, z, |u| gerstner_lanes::displacement(w, u), |u| gerstner_lanes::state(w, u)).0
@@ -548,7 +548,7 @@ impl GerstnerField<'_> {
     /// `h` (m).
     ///
     /// # References
-    /// Equation sheet §1(b).
+    /// docs/equations.md §1(b).
     pub fn height_lanes(&self, x: f64, z: f64) -> f64 {
         let w = self.lanes();
         self.invert(x, z, |u| gerstner_lanes::displacement(w, u), |u| gerstner_lanes::state(w, u)).1.height
@@ -564,7 +564,7 @@ impl GerstnerField<'_> {
     /// If the three slices differ in length.
     ///
     /// # References
-    /// Equation sheet §1(b).
+    /// docs/equations.md §1(b).
     pub fn heights(&self, xs: &[f64], zs: &[f64], out: &mut [f64]) {
         assert!(xs.len() == zs.len() && xs.len() == out.len(), "heights: slices differ in length");
         for ((o, &x), &z) in out.iter_mut().zip(xs).zip(zs) {
@@ -581,7 +581,7 @@ impl GerstnerField<'_> {
     /// `u` (m).
     ///
     /// # References
-    /// Equation sheet §1(b).
+    /// docs/equations.md §1(b).
     pub fn rest_position(&self, x: f64, z: f64) -> DVec2 {
         self.solve(x, z).rest
     }
@@ -600,7 +600,7 @@ impl GerstnerField<'_> {
     /// `h` (m), in `[−ΣAᵢ, ΣAᵢ]`.
     ///
     /// # References
-    /// Equation sheet §1(b); Bruneton et al. 2010.
+    /// docs/equations.md §1(b); Bruneton et al. 2010.
     pub fn height(&self, x: f64, z: f64) -> f64 {
         self.state_at(x, z).height
     }
@@ -614,7 +614,7 @@ impl GerstnerField<'_> {
     /// `∇h` (dimensionless), `|∇h| ≤ Σ kᵢAᵢ/(1 − Σ Qᵢ)`.
     ///
     /// # References
-    /// Equation sheet §1(b) (chain rule through the inversion).
+    /// docs/equations.md §1(b) (chain rule through the inversion).
     pub fn gradient(&self, x: f64, z: f64) -> DVec2 {
         let st = self.state_at(x, z);
         st.solve(st.grad_u)
@@ -629,7 +629,7 @@ impl GerstnerField<'_> {
     /// `D` (m).
     ///
     /// # References
-    /// Equation sheet §1(b).
+    /// docs/equations.md §1(b).
     pub fn displacement(&self, x: f64, z: f64) -> DVec2 {
         self.state_at(x, z).displacement
     }
@@ -643,7 +643,7 @@ impl GerstnerField<'_> {
     /// `det J` (dimensionless), `≥ (1 − Σ Qᵢ)²`.
     ///
     /// # References
-    /// Dupuy & Bruneton 2012; equation sheet §10.
+    /// Dupuy & Bruneton 2012; docs/equations.md §10.
     pub fn jacobian(&self, x: f64, z: f64) -> f64 {
         self.state_at(x, z).det()
     }
@@ -658,7 +658,7 @@ impl GerstnerField<'_> {
     /// `(v_x, v_y, v_z)` (m s⁻¹).
     ///
     /// # References
-    /// Equation sheet §1(b).
+    /// docs/equations.md §1(b).
     pub fn velocity(&self, x: f64, z: f64) -> DVec3 {
         self.state_at(x, z).velocity
     }

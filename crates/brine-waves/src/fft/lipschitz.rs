@@ -115,7 +115,7 @@ impl LipschitzSum for FftFrame {
         let t_exit = if options.footprint_angle > 0.0 && d.y < 0.0 {
             let top = self.height_bounds().1;
             let slab = if o.y > top { (o.y - top) / -d.y } else { 0.0 };
-            t_exit.min(crate::traced::CONE_REACH * t_enter.max(slab).max(1.0))
+            t_exit.min(crate::tracing::traced::CONE_REACH * t_enter.max(slab).max(1.0))
         } else {
             t_exit
         };

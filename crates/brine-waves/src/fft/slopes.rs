@@ -31,7 +31,7 @@ pub struct FilteredSlopes {
 ///
 /// # References
 /// Olano M., Baker D. 2010, "LEAN mapping", I3D; Bruneton E., Neyret F., Holzschuch N. 2010,
-/// CGF 29(2) (geometry-to-BRDF transition); equation sheet §11.
+/// CGF 29(2) (geometry-to-BRDF transition); docs/equations.md §11.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FftSlopeFilter {
     cascades: Vec<FftPyramid<5>>,

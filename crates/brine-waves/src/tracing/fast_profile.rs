@@ -109,7 +109,7 @@ fn bessel_j(n: usize, x: f64) -> f64 {
 ///
 /// # References
 /// Watson G.N. 1944, *A Treatise on the Theory of Bessel Functions*, §17.2 (Kepler's equation:
-/// `cos E = −e/2 + Σ (2/n²) (d/de) Jₙ(ne) cos nM`); equation sheet §1 (the profile `τ_Q`).
+/// `cos E = −e/2 + Σ (2/n²) (d/de) Jₙ(ne) cos nM`); docs/equations.md §1 (the profile `τ_Q`).
 pub(crate) fn series_coefficients(q: f64, harmonics: usize) -> Vec<f64> {
     let mut a = vec![-0.5 * q];
     for n in 1..=harmonics {
@@ -412,7 +412,7 @@ fn kernel_for<T: Lane>(p: Phase<T>, q: T, mode: ProfileMode, coefficient: impl F
 /// `cos θ` and `sin θ/(1 − Q cos θ)` with the error of [`PROFILE_ERROR`].
 ///
 /// # References
-/// Equation sheet §1 (`τ_Q(s) = cos θ` with `θ − Q sin θ = s`; Newton step); Thon & Ghazanfarpour
+/// docs/equations.md §1 (`τ_Q(s) = cos θ` with `θ − Q sin θ = s`; Newton step); Thon & Ghazanfarpour
 /// 2002; Watson 1944 §17.2 (the series).
 #[inline(always)]
 pub(crate) fn profile8(phase: Phase<f32x8>, q: f32x8, series: &[[f32; 8]], mode: ProfileMode) -> (f32x8, f32x8) {

@@ -7,7 +7,7 @@ use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
 
 use crate::error::{WaveError, check};
-use crate::integrate::simpson_log;
+use crate::spectra::integrate::simpson_log;
 use crate::{Spectrum, Spreading, Trochoid, TrochoidSet};
 
 /// How the fitted band `[ω_min, ω_max]` is cut into one frequency bin per wave.
@@ -137,7 +137,7 @@ impl FrequencyBin {
     /// `A` (m), `≥ 0`.
     ///
     /// # References
-    /// Thon & Ghazanfarpour 2002; equation sheet §1, "Extraction from a spectrum".
+    /// Thon & Ghazanfarpour 2002; docs/equations.md §1, "Extraction from a spectrum".
     pub fn amplitude(&self, spectrum: &dyn Spectrum, rule: AmplitudeRule) -> f64 {
         match rule {
             AmplitudeRule::BinVariance => libm::sqrt(2.0 * self.variance),
@@ -270,7 +270,7 @@ fn equal_energy_bins(spectrum: &dyn Spectrum, w_lo: f64, w_hi: f64, n: usize) ->
 ///
 /// # References
 /// Thon & Ghazanfarpour 2002 (parameters from a measured spectrum); Darles et al. 2007, §3;
-/// equation sheet §1, "Extraction from a spectrum".
+/// docs/equations.md §1, "Extraction from a spectrum".
 pub fn fit_trochoids(
     spectrum: &dyn Spectrum,
     spreading: &dyn Spreading,
@@ -321,7 +321,7 @@ impl std::fmt::Debug for SeaComponent<'_> {
 /// As [`fit_trochoids`], naming the first bad component's parameter.
 ///
 /// # References
-/// Thon & Ghazanfarpour 2002; equation sheet §1.
+/// Thon & Ghazanfarpour 2002; docs/equations.md §1.
 pub fn fit_sea_state(
     components: &[SeaComponent<'_>],
     seed: u64,

@@ -1,7 +1,7 @@
 //! The Gerstner surface as a [`brine_trace::LipschitzSum`].
 //!
 //! `F(p) = y − h(x, z)` in two components: `n₀ = y` (`L₀ = 1`, directional `|d̂_y|`) and
-//! `n₁ = −h(x, z)` with the conservative bound of equation sheet §1(b),
+//! `n₁ = −h(x, z)` with the conservative bound of docs/equations.md §1(b),
 //! `L₁ = Σ kᵢAᵢ/(1 − Σ Qᵢ)`, directional `L₁ |d̂_xz|`, and `−Σ Aᵢ ≤ n₁ ≤ Σ Aᵢ`. The waves cannot
 //! be split into independent components: each needs the same inversion of the horizontal
 //! displacement, so per-wave terms would repeat it `N` times. The height is evaluated with the

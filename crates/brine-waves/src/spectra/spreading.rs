@@ -23,7 +23,7 @@ pub trait Spreading: Sync {
     /// `D` (rad⁻¹), `≥ 0`.
     ///
     /// # References
-    /// Equation sheet §1 (each implementation cites its law).
+    /// docs/equations.md §1 (each implementation cites its law).
     fn density(&self, theta: f64, omega: f64) -> f64;
 
     /// Draws a direction from `D(·; ω)`: the inverse `C⁻¹(u)` of the cumulative distribution
@@ -102,7 +102,7 @@ pub(crate) fn invert_cdf(cdf: impl Fn(f64) -> f64, pdf: impl Fn(f64) -> f64, lo:
 /// The cos-2s spreading `D(θ) = 2^{2s−1} Γ(s+1)² / (π Γ(2s+1)) |cos(θ/2)|^{2s}` with an exponent
 /// `s(ω) = s_a (ω/ω_p)^{p_a}` below the peak and `s_b (ω/ω_p)^{p_b}` above it.
 ///
-/// Three parameterisations: Hasselmann et al. 1980 as simplified in the equation sheet
+/// Three parameterisations: Hasselmann et al. 1980 as simplified in docs/equations.md
 /// (`s = 6.97 (ω/ω_p)^5` below, `9.77 (ω/ω_p)^{−2.5}` above), Mitsuyasu et al. 1975
 /// (`s = s_max (ω/ω_p)^5` below, `s_max (ω/ω_p)^{−2.5}` above, `s_max = 11.5 (ω_p U₁₀/g)^{−2.5}`)
 /// and a constant `s` (Longuet-Higgins et al. 1963).
@@ -110,7 +110,7 @@ pub(crate) fn invert_cdf(cdf: impl Fn(f64) -> f64, pdf: impl Fn(f64) -> f64, lo:
 /// # References
 /// Longuet-Higgins M.S., Cartwright D.E., Smith N.D. 1963 (the cos-2s form); Mitsuyasu H. et al.
 /// 1975, JPO 5; Hasselmann D., Dunckel M., Ewing J. 1980, "Directional wave spectra observed
-/// during JONSWAP 1973", JPO 10; equation sheet §1.
+/// during JONSWAP 1973", JPO 10; docs/equations.md §1.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CosineTwoS {
     omega_p: f64,
@@ -160,7 +160,7 @@ impl CosineTwoS {
     /// `s` (dimensionless).
     ///
     /// # References
-    /// Mitsuyasu et al. 1975; Hasselmann et al. 1980; equation sheet §1.
+    /// Mitsuyasu et al. 1975; Hasselmann et al. 1980; docs/equations.md §1.
     pub fn exponent(&self, omega: f64) -> f64 {
         let r = omega / self.omega_p;
         if r < 1.0 { self.s_below * libm::pow(r, self.p_below) } else { self.s_above * libm::pow(r, self.p_above) }
@@ -251,12 +251,12 @@ impl Spreading for DonelanBanner {
     }
 }
 
-/// The `cos²θ` spreading: `D = (2/π) cos²θ` on the down-wind half (the equation sheet's
+/// The `cos²θ` spreading: `D = (2/π) cos²θ` on the down-wind half (the reference's (docs/equations.md)
 /// "simplest" law), or `D = (1/π) cos²θ` over the whole circle, the `|k̂·ŵ|²` of Tessendorf's
 /// Phillips spectrum.
 ///
 /// # References
-/// Tessendorf 2001, §3.3; equation sheet §1.
+/// Tessendorf 2001, §3.3; docs/equations.md §1.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct CosineSquared {
     directions: Directions,

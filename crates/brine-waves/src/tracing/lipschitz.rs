@@ -1,7 +1,7 @@
 //! The trochoid-sum surface as a [`brine_trace::LipschitzSum`].
 //!
 //! `F(p) = y − Σᵢ hᵢ(x, z)`: component 0 is `n₀ = y` (`L₀ = 1`), component `i ≥ 1` is
-//! `nᵢ = −h_{i−1}(x, z)` with `Lᵢ = kA/√(1 − Q²)` and `−A ≤ nᵢ ≤ A` (equation sheet §1(a)).
+//! `nᵢ = −h_{i−1}(x, z)` with `Lᵢ = kA/√(1 − Q²)` and `−A ≤ nᵢ ≤ A` (docs/equations.md §1(a)).
 
 use brine_trace::{Aabb, LipschitzSum};
 use glam::DVec3;

@@ -2,7 +2,8 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::{TrochoidSet, WaveSurface, lanes};
+use crate::tracing::lanes;
+use crate::{TrochoidSet, WaveSurface};
 
 /// Waves as structure-of-arrays: wave vector, frequency, phase, amplitude.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -217,7 +218,7 @@ impl SineField<'_> {
     /// If the three slices differ in length.
     ///
     /// # References
-    /// Equation sheet §1.
+    /// docs/equations.md §1.
     pub fn heights(&self, xs: &[f64], zs: &[f64], out: &mut [f64]) {
         assert!(xs.len() == zs.len() && xs.len() == out.len(), "heights: slices differ in length");
         for ((o, &x), &z) in out.iter_mut().zip(xs).zip(zs) {
@@ -260,8 +261,10 @@ impl SineField<'_> {
         let g = &self.set.geometry;
         let mut out = DVec2::ZERO;
         for i in 0..g.kx.len() {
-            let w =
-                brine_trace::footprint_weight(crate::fade::wave_fade_distance(g.kx[i], g.kz[i], d, footprint_angle), t);
+            let w = brine_trace::footprint_weight(
+                crate::tracing::fade::wave_fade_distance(g.kx[i], g.kz[i], d, footprint_angle),
+                t,
+            );
             if w > 0.0 {
                 let sn = (g.kx[i] * x + g.kz[i] * z + self.offset[i]).sin();
                 out -= w * g.amplitude[i] * sn * DVec2::new(g.kx[i], g.kz[i]);
@@ -290,11 +293,11 @@ impl SineField<'_> {
         for i in 0..g.kx.len() {
             let lost = 1.0
                 - brine_trace::footprint_weight(
-                    crate::fade::wave_fade_distance(g.kx[i], g.kz[i], d, footprint_angle),
+                    crate::tracing::fade::wave_fade_distance(g.kx[i], g.kz[i], d, footprint_angle),
                     t,
                 );
             if lost > 0.0 {
-                out += lost * crate::fade::slope_covariance(g.kx[i], g.kz[i], g.amplitude[i]);
+                out += lost * crate::tracing::fade::slope_covariance(g.kx[i], g.kz[i], g.amplitude[i]);
             }
         }
         out
@@ -333,7 +336,10 @@ impl SineField<'_> {
         let (mut g, mut c) = (DVec2::ZERO, DVec3::ZERO);
         for i in 0..w.kx.len() {
             let weight = if footprint_angle > 0.0 && t > 0.0 {
-                brine_trace::footprint_weight(crate::fade::wave_fade_distance(w.kx[i], w.kz[i], d, footprint_angle), t)
+                brine_trace::footprint_weight(
+                    crate::tracing::fade::wave_fade_distance(w.kx[i], w.kz[i], d, footprint_angle),
+                    t,
+                )
             } else {
                 1.0
             };
@@ -342,7 +348,7 @@ impl SineField<'_> {
                 g -= weight * w.amplitude[i] * sn * DVec2::new(w.kx[i], w.kz[i]);
             }
             if weight < 1.0 {
-                c += (1.0 - weight) * crate::fade::slope_covariance(w.kx[i], w.kz[i], w.amplitude[i]);
+                c += (1.0 - weight) * crate::tracing::fade::slope_covariance(w.kx[i], w.kz[i], w.amplitude[i]);
             }
         }
         (g, c)
@@ -380,7 +386,7 @@ impl SineField<'_> {
     ///
     /// # References
     /// Airy linear wave theory (Dean & Dalrymple 1991, *Water Wave Mechanics for Engineers and
-    /// Scientists*); equation sheet §1.
+    /// Scientists*); docs/equations.md §1.
     pub fn velocity(&self, x: f64, z: f64) -> DVec3 {
         let g = &self.set.geometry;
         let mut v = DVec3::ZERO;

@@ -1,8 +1,8 @@
 //! The Pierson–Moskowitz spectrum of a fully developed sea.
 
 use crate::Spectrum;
-use crate::dispersion::G;
 use crate::error::{WaveError, check};
+use crate::spectra::dispersion::G;
 
 /// The Pierson–Moskowitz spectrum of a fully developed sea.
 ///
@@ -11,7 +11,7 @@ use crate::error::{WaveError, check};
 ///
 /// # References
 /// Pierson W., Moskowitz L. 1964, "A proposed spectral form for fully developed wind seas based
-/// on the similarity theory of S. A. Kitaigorodskii", JGR 69(24):5181–5190; equation sheet §4.
+/// on the similarity theory of S. A. Kitaigorodskii", JGR 69(24):5181–5190; docs/equations.md §4.
 /// Used by Darles et al. 2007 (§3) for every picture.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PiersonMoskowitz {
@@ -23,7 +23,7 @@ impl PiersonMoskowitz {
     pub const ALPHA: f64 = 8.1e-3;
     /// Pierson–Moskowitz `β`.
     pub const BETA: f64 = 0.74;
-    /// Ratio `U₁₉.₅/U₁₀` for a neutral logarithmic wind profile (equation sheet §4).
+    /// Ratio `U₁₉.₅/U₁₀` for a neutral logarithmic wind profile (docs/equations.md §4).
     pub const U19_5_OVER_U10: f64 = 1.026;
     /// Largest wind speed accepted (m s⁻¹): beyond hurricane force the fit has no data.
     pub const MAX_WIND: f64 = 60.0;
@@ -65,7 +65,7 @@ impl PiersonMoskowitz {
     /// `m₀` (m²).
     ///
     /// # References
-    /// Pierson & Moskowitz 1964 (integral of their spectrum); equation sheet §4.
+    /// Pierson & Moskowitz 1964 (integral of their spectrum); docs/equations.md §4.
     pub fn m0(&self) -> f64 {
         Self::ALPHA * G * G / (4.0 * Self::BETA * libm::pow(self.omega_0(), 4.0))
     }
@@ -76,7 +76,7 @@ impl PiersonMoskowitz {
     /// `H_s` (m).
     ///
     /// # References
-    /// Pierson & Moskowitz 1964 (`0.21 U₁₉.₅²/g`); equation sheet §4.
+    /// Pierson & Moskowitz 1964 (`0.21 U₁₉.₅²/g`); docs/equations.md §4.
     pub fn significant_wave_height(&self) -> f64 {
         4.0 * libm::sqrt(self.m0())
     }
@@ -107,7 +107,7 @@ mod tests {
     use super::*;
     use approx::assert_relative_eq;
 
-    /// The equation sheet's oracle values are printed to 4–5 significant digits.
+    /// The docs/equations.md's oracle values are printed to 4–5 significant digits.
     const ORACLE_REL: f64 = 1e-4;
 
     /// `H_s = 2.133` m is printed to 4 digits: ±0.0005 is 2.3×10⁻⁴ relative.
@@ -119,7 +119,7 @@ mod tests {
 
     #[test]
     fn pm_oracle_at_10_m_s() {
-        // Equation sheet, "Test oracles": U19.5 = 10 m/s.
+        // docs/equations.md, "Reference values": U19.5 = 10 m/s.
         let pm = PiersonMoskowitz::from_u19_5(10.0).unwrap();
         assert_relative_eq!(pm.peak_omega(), 0.86050, max_relative = ORACLE_REL);
         assert_relative_eq!(2.0 * std::f64::consts::PI / pm.peak_omega(), 7.302, max_relative = ORACLE_REL);

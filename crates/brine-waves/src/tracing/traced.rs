@@ -15,10 +15,10 @@ use brine_trace::{
 use glam::{DVec2, DVec3};
 use wide::{f32x8, f64x4};
 
-use crate::fast_profile::{
+use crate::fit::trochoid::trough_curvature_factor;
+use crate::tracing::fast_profile::{
     PROFILE_ERROR, ProfileMode, SERIES_ROWS, profile1, profile8, reduce_phases, series_polynomials,
 };
-use crate::trochoid::trough_curvature_factor;
 use crate::{Trochoid, TrochoidSet};
 
 /// Waves per lane group: one f32x8 vector.
@@ -104,7 +104,7 @@ pub(crate) struct Kinematics {
 /// the same f32 kernel) and overrides [`LipschitzSum::trace_tiered`] with the fast path.
 ///
 /// # References
-/// Darles et al. 2007 §3.2; equation sheet §1 (trochoid profile, per-wave bounds, antialiasing).
+/// Darles et al. 2007 §3.2; docs/equations.md §1 (trochoid profile, per-wave bounds, antialiasing).
 #[derive(Debug, Clone)]
 pub struct TracedTrochoids {
     tiers: Vec<Tier>,
@@ -358,7 +358,7 @@ impl TracedTrochoids {
     /// covariance `(xx, xz, zz)` (dimensionless) of the waves faded at `t`.
     ///
     /// # References
-    /// Equation sheet §1 (trochoid slope) and §11 (`σ²_BRDF = σ²_total − σ²_resolved`).
+    /// docs/equations.md §1 (trochoid slope) and §11 (`σ²_BRDF = σ²_total − σ²_resolved`).
     pub fn faded_gradient_and_covariance(
         &self,
         x: f64,
@@ -430,7 +430,7 @@ impl TracedTrochoids {
     /// The covariance (dimensionless) as `DVec3(xx, xz, zz)`.
     ///
     /// # References
-    /// Equation sheet §11 (`σ²_BRDF = σ²_total − σ²_resolved`, weights `smoothstep(1, 1.5, λ/ℓ)`).
+    /// docs/equations.md §11 (`σ²_BRDF = σ²_total − σ²_resolved`, weights `smoothstep(1, 1.5, λ/ℓ)`).
     pub fn faded_slope_covariance(&self, direction: DVec3, footprint_angle: f64, t: f64) -> DVec3 {
         let mut out = DVec3::ZERO;
         if footprint_angle <= 0.0 {

@@ -1,8 +1,8 @@
 //! The JONSWAP spectrum of a fetch-limited sea.
 
 use crate::Spectrum;
-use crate::dispersion::G;
 use crate::error::{WaveError, check};
+use crate::spectra::dispersion::G;
 
 /// The JONSWAP spectrum (Hasselmann et al. 1973) of a fetch-limited, growing wind sea.
 ///
@@ -20,7 +20,7 @@ use crate::error::{WaveError, check};
 ///
 /// # References
 /// Hasselmann K. et al. 1973, "Measurements of wind-wave growth and swell decay during the Joint
-/// North Sea Wave Project (JONSWAP)", Dtsch. Hydrogr. Z. A8(12); equation sheet §4 (Horvath 2015
+/// North Sea Wave Project (JONSWAP)", Dtsch. Hydrogr. Z. A8(12); docs/equations.md §4 (Horvath 2015
 /// prints `ω_p` without the cube root: erratum).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Jonswap {
@@ -46,7 +46,7 @@ impl Jonswap {
     /// `X̃` (dimensionless).
     ///
     /// # References
-    /// Derived from Hasselmann et al. 1973 and Pierson & Moskowitz 1964 (equation sheet §4).
+    /// Derived from Hasselmann et al. 1973 and Pierson & Moskowitz 1964 (docs/equations.md §4).
     pub fn fully_developed_fetch() -> f64 {
         let pm_peak = libm::pow(0.8 * crate::PiersonMoskowitz::BETA, 0.25) / crate::PiersonMoskowitz::U19_5_OVER_U10;
         libm::pow(22.0 / pm_peak, 3.0)
@@ -152,7 +152,7 @@ impl Jonswap {
     /// `γ^r` (dimensionless, in `[1, γ]`).
     ///
     /// # References
-    /// Hasselmann et al. 1973; equation sheet §4.
+    /// Hasselmann et al. 1973; docs/equations.md §4.
     pub fn peak_enhancement(&self, omega: f64) -> f64 {
         let sigma = if omega <= self.omega_p { self.sigma_a } else { self.sigma_b };
         let d = (omega - self.omega_p) / (sigma * self.omega_p);

@@ -81,7 +81,7 @@ impl LipschitzSum for SineField<'_> {
             return f64::INFINITY;
         }
         let (_, kx, kz) = self.wave(i - 1);
-        crate::fade::wave_fade_distance(kx, kz, d, footprint_angle)
+        crate::tracing::fade::wave_fade_distance(kx, kz, d, footprint_angle)
     }
 
     #[inline]

@@ -1,0 +1,5 @@
+//! The trochoid wave and the fit of wave sets to a spectrum.
+
+pub(crate) mod extraction;
+pub(crate) mod set;
+pub(crate) mod trochoid;
