@@ -10,7 +10,7 @@ use crate::time::{check_range, decimal_year, julian_date, schlyter_day, ut_hours
 use crate::{Atmosphere, EphemError, Observer};
 
 /// The astronomical unit (km), IAU 2012.
-pub const AU_KM: f64 = 149_597_870.7;
+pub const AU_KM: f64 = brine_core::AU_KM;
 
 /// Which model computes the Sun's position.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

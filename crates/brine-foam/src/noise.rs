@@ -1,5 +1,6 @@
 //! Footprint-filtered gradient noise that breaks the regularity of the foam pattern.
 
+use brine_core::lattice_floor;
 use rand::SeedableRng;
 use rand::seq::SliceRandom;
 use rand_chacha::ChaCha8Rng;
@@ -237,31 +238,9 @@ pub(crate) fn smoothstep(e0: f64, e1: f64, x: f64) -> f64 {
     t * t * (3.0 - 2.0 * t)
 }
 
-/// `⌊x⌋` by truncation, for the noise lattice: equal to `f64::floor` for `|x| < 2⁶³` (the lattice
-/// coordinates are far smaller). On the x86-64 baseline (SSE2, no `roundsd`) `f64::floor` is a
-/// library call, and this sits in the per-pixel noise loops.
-#[inline]
-fn lattice_floor(x: f64) -> f64 {
-    let t = x as i64 as f64;
-    if t > x { t - 1.0 } else { t }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// Exact equality is the claim (±0 compare equal).
-    #[test]
-    #[allow(clippy::float_cmp)]
-    fn lattice_floor_is_floor() {
-        for i in -2000..2000 {
-            let x = f64::from(i) * 0.37 - 0.5;
-            for v in [x, x.floor(), x.floor() - 1e-12, x.floor() + 1e-12, -0.0, 0.0] {
-                assert_eq!(lattice_floor(v), v.floor(), "{v}");
-            }
-        }
-        assert_eq!(lattice_floor(-1e15 - 0.5), (-1e15f64 - 0.5).floor());
-    }
 
     /// 4·10⁴ samples over ~750 decorrelated cells of the first octave: standard error of the
     /// mean ≈ 0.01; four of them.

@@ -14,7 +14,7 @@ pub const SEA_WATER_DENSITY: f64 = 1025.0;
 pub const AIR_VISCOSITY: f64 = 1.8e-5;
 
 /// Gravity (m s⁻²), as in brine-waves.
-pub const G: f64 = 9.81;
+pub const G: f64 = brine_core::G;
 
 /// Spray source function: drops produced per square metre of sea, per second, per micrometre of
 /// radius, by bursting whitecap bubbles.

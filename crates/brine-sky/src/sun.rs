@@ -14,7 +14,7 @@ use crate::solar_tables::{K_MIXED_GAS, K_OZONE, K_WATER_VAPOUR, interpolate, sol
 use crate::xyz_to_linear_srgb;
 
 /// The astronomical unit (km), IAU 2012.
-pub const AU_KM: f64 = 149_597_870.7;
+pub const AU_KM: f64 = brine_core::AU_KM;
 
 /// Nominal radius of the Sun (km), IAU 2015 Resolution B3.
 pub const SUN_RADIUS_KM: f64 = 695_700.0;

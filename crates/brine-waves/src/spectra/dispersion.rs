@@ -2,8 +2,8 @@
 
 use crate::error::{WaveError, check};
 
-/// Standard gravity `g` (m s⁻²), the value of docs/equations.md.
-pub const G: f64 = 9.81;
+/// Standard gravity `g` (m s⁻²), brine-core's.
+pub const G: f64 = brine_core::G;
 
 /// Surface tension of sea water `σ` (N m⁻¹) at about 20 °C and salinity 35 (Kinsman 1965).
 pub const SEA_WATER_SURFACE_TENSION: f64 = 0.074;
