@@ -56,7 +56,7 @@ impl Horizontal {
     /// # References
     /// Schlyter, "How to compute planetary positions", §12b, and his tutorial §6 (worked
     /// example: H = 195.1808°, δ = 11.0084°, φ = 60° → A = 15.6767°, h = −17.9570°); equation
-    /// sheet §13.
+    /// equations.md §13.
     pub fn from_equatorial(hour_angle: f64, declination: f64, latitude: f64) -> Self {
         let (sh, ch) = hour_angle.sin_cos();
         let (sd, cd) = declination.sin_cos();

@@ -202,7 +202,7 @@ pub fn whitecap_coverage(params: &CoverageParams) -> f64 {
 mod tests {
     use super::*;
 
-    /// Relative tolerance for the sheet's oracles, printed to 4 significant digits.
+    /// Relative tolerance for the reference's oracles, printed to 4 significant digits.
     const ORACLE_REL: f64 = 1e-4;
 
     fn cover(u: f64, law: WhitecapLaw) -> f64 {
@@ -256,7 +256,7 @@ mod tests {
         assert_eq!(cold, WhitecapLaw::Monahan1986Stability { delta_t_c: -30.0 });
         let warm = WhitecapLaw::monahan_1986_from_temperatures(40.0, 10.0).unwrap();
         assert_eq!(warm, WhitecapLaw::Monahan1986Stability { delta_t_c: 30.0 });
-        // At ΔT = +30 °C the sheet's ΔT = 0 oracle times e^{0.0861·30} = e^{2.583}.
+        // At ΔT = +30 °C the reference's ΔT = 0 oracle times e^{0.0861·30} = e^{2.583}.
         let expected = 6.919e-3 * (0.0861f64 * 30.0).exp();
         assert!((cover(10.0, warm) / expected - 1.0).abs() < ORACLE_REL);
     }

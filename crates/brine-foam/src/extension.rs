@@ -53,7 +53,7 @@ pub struct SurfaceStatistics {
 ///
 /// Darles et al. (2007, Eq. 4) make foam cling to crests and steep water by weighting the
 /// whitecap coverage `W` of Eq. 3 with a height factor and the normal length. Corrected (equation
-/// sheet §5):
+/// equations.md §5):
 ///
 /// `w(p) = ((y − y_min)/(y_max − y_min))ⁿ · min(‖N‖, N_max)`, `‖N‖ = √(1 + |∇h|²)`,
 /// `s′(p) = clamp(W · ν(p) · w(p)/⟨w⟩, 0, 1)`,

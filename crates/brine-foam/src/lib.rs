@@ -6,7 +6,7 @@
 //! foam radiance after Koepke (1984), foam that moves with the water and ages between frames,
 //! and the sea-spray source function of Monahan, Spiel & Davidson (1986) with its vertical
 //! profile, extinction, optical depth and in-scattering (Darles et al. 2007, §4.2, equation
-//! sheet §6).
+//! equations.md §6).
 //!
 //! ## Notation
 //!

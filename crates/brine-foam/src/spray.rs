@@ -98,7 +98,7 @@ mod tests {
 
     #[test]
     fn settling_velocity_of_a_5_um_drop() {
-        // 2·1025·9.81·(5e-6)²/(9·1.8e-5) = 5.02763e-7/1.62e-4 = 3.1035e-3 m/s (sheet: "≈ 3 mm/s").
+        // 2·1025·9.81·(5e-6)²/(9·1.8e-5) = 5.02763e-7/1.62e-4 = 3.1035e-3 m/s (reference: "≈ 3 mm/s").
         assert!((stokes_settling_velocity(5.0) - 3.1035e-3).abs() < FIVE_DIGITS_M_S);
     }
 

@@ -278,7 +278,7 @@ pub struct LiYingParameters {
 
 impl LiYingParameters {
     /// Parameter set `1`, `2` or `3` of Li Ying et al. 2018, Table 3 (as extracted; equation
-    /// sheet §12 flags the extraction as ambiguous): `σ_a` = (0.7, 0.9, 1.4), (0.12, 0.89, 1.2),
+    /// equations.md §12 flags the extraction as ambiguous): `σ_a` = (0.7, 0.9, 1.4), (0.12, 0.89, 1.2),
     /// (0.12, 1.02, 1.2); `σ_s` = (0.2, 0.38, 1) for all; `Φ` = 1, 63.7, 63.7.
     ///
     /// # Arguments

@@ -135,7 +135,7 @@ impl SkyReflection {
 ///
 /// # References
 /// Bruneton et al. 2010 §5.2 (`meanFresnel` and the filtered sky map of their shader); equation
-/// sheet §11.
+/// equations.md §11.
 pub fn reflected_sky_radiance_filtered(
     v: DVec3,
     variance: &SlopeVariance,

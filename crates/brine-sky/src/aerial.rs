@@ -243,7 +243,7 @@ impl Scattering {
     ///
     /// # References
     /// Hoffman N., Preetham A.J. 2002, "Rendering outdoor light scattering in real time", GDC;
-    /// Chen et al. 2007, Eq. 2–8 (with the sheet's errata); Preetham et al. 1999, Appendix A.3.
+    /// Chen et al. 2007, Eq. 2–8 (with the reference's errata); Preetham et al. 1999, Appendix A.3.
     pub fn aerial_perspective(
         &self,
         height_m: f64,
@@ -273,7 +273,7 @@ mod tests {
     use super::*;
     use approx::assert_relative_eq;
 
-    /// The sheet's oracles are printed to 5 significant digits.
+    /// The reference values are printed to 5 significant digits.
     const ORACLE: f64 = 1e-4;
     /// 3/(16π) = 0.0596831 and 1/(4π) = 0.0795775 printed to 6 significant digits.
     const SIX_DIGITS: f64 = 1e-6;

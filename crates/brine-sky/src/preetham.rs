@@ -327,7 +327,7 @@ mod tests {
     const ORACLE: f64 = 1e-4;
     /// Chromaticity tolerance of docs/equations.md (5-digit vs 4-digit matrices).
     const CHROMA: f64 = 5e-4;
-    /// The Perez ratios of the sheet are printed with 4 digits: 2×10⁻⁴ relative.
+    /// The reference's Perez ratios are printed with 4 digits: 2×10⁻⁴ relative.
     const PEREZ_RATIO: f64 = 2e-4;
 
     #[test]

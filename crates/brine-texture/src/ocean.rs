@@ -599,7 +599,7 @@ impl<'a> OceanFrame<'a> {
         DVec3::new(-g.x, 1.0, -g.y).normalize()
     }
 
-    /// The colour before relighting, `S_c = P_c(x − t s)` (Eq. 2 shifted as Eq. 11; the sheet's
+    /// The colour before relighting, `S_c = P_c(x − t s)` (Eq. 2 shifted as Eq. 11; the reference's
     /// sign), levels.
     ///
     /// # Arguments

@@ -33,7 +33,7 @@ fn direction(dy: f64, azimuth: f64) -> DVec3 {
 /// The documented rule, written out from the wave parameters alone: the pixel footprint `αt`
 /// across the view is stretched by `1/|d_y|` along it, so along the wave direction `k̂` it spans
 /// `αt·√(1 + (k̂·d̂_xz)²/d_y²)`; with `x = λ/(that span)`, the weight is 0 for `x ≤ 1`, 1 for
-/// `x ≥ 1.5` and `3u² − 2u³`, `u = 2(x − 1)`, between (sheet §1 "Antialiasing").
+/// `x ≥ 1.5` and `3u² − 2u³`, `u = 2(x − 1)`, between (equations.md §1 "Antialiasing").
 fn expected_weight(set: &TrochoidSet, wave: usize, d: DVec3, alpha: f64, t: f64) -> f64 {
     let w = &set.waves()[wave];
     let k_hat = w.direction_vector();

@@ -7,7 +7,7 @@ use crate::statistics::Moments;
 
 /// Whitecap statistics of an FFT ocean frame: per cascade, a mip-mapped pyramid of
 /// `kᵢ = Jᵢ − 1 + 1/n` and `kᵢ²` (Dupuy & Bruneton 2012; `jdupuy/whitecaps`, as in equation
-/// sheet §10), and the mean and variance of `J` over a pixel footprint:
+/// equations.md §10), and the mean and variance of `J` over a pixel footprint:
 ///
 /// `μ = Σᵢ ⟨kᵢ⟩`,   `σ² = Σᵢ (⟨kᵢ²⟩ − ⟨kᵢ⟩²)`.
 ///

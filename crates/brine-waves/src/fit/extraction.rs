@@ -77,7 +77,7 @@ pub struct FitOptions {
     /// is the exact trochoid, larger values sharpen crests, 0 gives sinusoids).
     pub choppiness: f64,
     /// Cap on `Σ Qᵢ`, `(0, 0.99]` (default 0.9): below 1 the Gerstner sum cannot fold (equation
-    /// sheet §1). What happens above it is [`FitOptions::steepness_limit`].
+    /// equations.md §1). What happens above it is [`FitOptions::steepness_limit`].
     pub max_total_steepness: f64,
     /// Amplitude rule (default the bin's exact variance). [`AmplitudeRule::Midpoint`] with
     /// [`FrequencyPartition::EqualEnergy`] is refused ([`WaveError::IncompatibleOptions`]).

@@ -285,7 +285,7 @@ mod tests {
     /// `s` to `(−π, π]` (`|s| ≤ 20`: a few ulp).
     const KEPLER_ABS: f64 = 1e-12;
 
-    /// The sheet's oracles are printed to 6 decimals (the accuracy asked of the fit is 10⁻⁶).
+    /// The reference values are printed to 6 decimals (the accuracy asked of the fit is 10⁻⁶).
     const ORACLE_ABS: f64 = 1e-6;
 
     /// Exact fractions computed in a few operations.

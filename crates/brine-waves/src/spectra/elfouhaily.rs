@@ -39,7 +39,7 @@ use crate::{Dispersion, Spectrum, Spreading};
 /// Elfouhaily T., Chapron B., Katsaros K., Vandemark D. 1997, "A unified directional spectrum for
 /// long and short wind-driven waves", JGR 102(C7):15781–15796, Eq. 24, 30–34, 40–44, 57–67;
 /// Li Ying et al. 2018, §2.2, Eq. 1 (which lost `k⁻⁴`, `1/(2π)` and `B_l + B_h`); equation
-/// sheet §4.
+/// equations.md §4.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Elfouhaily {
     u10: f64,
@@ -403,7 +403,7 @@ mod tests {
     use super::*;
 
     /// Oracle values printed to 5 significant digits (`0.06922`, `11.905`): half a unit of the
-    /// last digit is ≤ 7×10⁻⁵ relative; 10⁻⁴ with the sheet's own rounding.
+    /// last digit is ≤ 7×10⁻⁵ relative; 10⁻⁴ with the reference's own rounding.
     const PRINTED_5_DIGITS_REL: f64 = 1e-4;
 
     /// Oracle values printed to 4 significant digits (`0.3868`, `5.665×10⁻³`): half a unit is
@@ -413,7 +413,7 @@ mod tests {
     /// `Δ` printed to 4 decimals.
     const PRINTED_4_DECIMALS: f64 = 1e-4;
 
-    /// `Ω(x)` printed to 4 digits; the sheet rounds 2.1795 (x = 10⁴ m) up to 2.180.
+    /// `Ω(x)` printed to 4 digits; the reference rounds 2.1795 (x = 10⁴ m) up to 2.180.
     const FETCH_OMEGA_ABS: f64 = 1e-3;
 
     /// The midpoint rule on the trigonometric polynomial `1 + Δ cos 2φ` over its period is exact

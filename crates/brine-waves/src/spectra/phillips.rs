@@ -156,7 +156,7 @@ impl Spectrum for Phillips {
 mod tests {
     use super::*;
 
-    /// The sheet prints `L = 10.194` m: half a unit of the last decimal.
+    /// The reference prints `L = 10.194` m: half a unit of the last decimal.
     const PRINTED_3_DECIMALS_M: f64 = 5e-4;
 
     /// The midpoint rule on a trigonometric polynomial over its period is exact up to rounding
