@@ -53,7 +53,11 @@ enum Task {
     /// Render and measure the Beaufort sheet only (docs/beaufort.md, docs/beaufort/*.png).
     Beaufort,
     /// Measure white water from above (docs/whitewater.md, docs/whitewater/*.png).
-    Whitewater,
+    Whitewater {
+        /// Only measure the streaks (correlation lengths at 18 m/s) and print them; write nothing.
+        #[arg(long)]
+        streaks: bool,
+    },
 }
 
 /// The workspace root (the parent of this crate's folder).
@@ -88,7 +92,13 @@ fn run(cli: Cli) -> Result<(), String> {
             if names.is_empty() { beaufort::run(&root()) } else { Ok(()) }
         }
         Task::Beaufort => beaufort::run(&root()),
-        Task::Whitewater => whitewater::run(&root()),
+        Task::Whitewater { streaks } => {
+            if streaks {
+                whitewater::streaks().map(|_| ())
+            } else {
+                whitewater::run(&root())
+            }
+        }
         Task::Golden { bless } => {
             let envs: &[(&str, &str)] = if bless { &[("BRINE_BLESS", "1")] } else { &[] };
             cargo(&["test", "-p", "brine-tests", "--test", "golden"], envs)

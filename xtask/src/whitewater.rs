@@ -117,11 +117,11 @@ fn correlation_lengths(w: &[Option<f64>], n: usize) -> (f64, f64) {
             + idx(x0 + 1.0, y0 + 1.0) * fx * fy;
         v / c0
     };
-    // Image axes of a top-down camera with yaw 0: world +x to the right, world +z up the image
-    // (rows down the image are −z). The wind's image direction follows.
+    // Image axes of a top-down camera with yaw 0: north (−z) is the image's up, so world +x is
+    // to the right and world +z down the rows. The wind's image direction follows.
     let th = WIND_DIRECTION_DEG.to_radians();
-    let along = (th.cos(), -th.sin());
-    let across = (th.sin(), th.cos());
+    let along = (th.cos(), th.sin());
+    let across = (-th.sin(), th.cos());
     let length = |d: (f64, f64)| -> f64 {
         let mut prev = 1.0;
         for step in 1..(n / 2) {
@@ -149,6 +149,35 @@ fn render_top_down(surface: &str, wind: f64, seed: u64, dir: &Path) -> Result<Fr
         save_png(&frame, &dir.join(format!("{surface}-{wind:02}.png")))?;
     }
     Ok(frame)
+}
+
+/// The foam's correlation lengths along and across the wind at [`STREAK_WIND`] (m, mean over the
+/// seeds) for each surface; the first seed's image is kept in `dir` when given.
+fn streak_lengths(dir: Option<&Path>) -> Result<Vec<(&'static str, f64, f64)>, String> {
+    let metres_per_pixel = 2.0 * HEIGHT_M * 30f64.to_radians().tan() / f64::from(SIZE);
+    let mut out = Vec::new();
+    for surface in SURFACES {
+        let (mut along, mut across) = (0.0, 0.0);
+        for &seed in &SEEDS {
+            let frame = render(&scene_text(surface, STREAK_WIND, seed, HEIGHT_M, 0.0), "whitewater")?;
+            if let Some(dir) = dir.filter(|_| seed == SEEDS[0]) {
+                save_png(&frame, &dir.join(format!("{surface}-{STREAK_WIND:02}.png")))?;
+            }
+            let foam: Vec<Option<f64>> =
+                frame.aovs.iter().map(|a| a.depth.is_finite().then(|| f64::from(a.foam))).collect();
+            let (a, c) = correlation_lengths(&foam, SIZE as usize);
+            along += a * metres_per_pixel / SEEDS.len() as f64;
+            across += c * metres_per_pixel / SEEDS.len() as f64;
+        }
+        eprintln!("streaks {surface}: along {along:.2} m, across {across:.2} m, ratio {:.2}", along / across.max(1e-9));
+        out.push((surface, along, across));
+    }
+    Ok(out)
+}
+
+/// `cargo xtask whitewater --streaks`: the streak figures only, printed.
+pub fn streaks() -> Result<Vec<(&'static str, f64, f64)>, String> {
+    streak_lengths(None)
 }
 
 /// Runs the measurements and writes `docs/whitewater.md`.
@@ -197,23 +226,12 @@ pub fn run(root: &Path) -> Result<(), String> {
     let _ = writeln!(
         md,
         "\n## Streaks\n\nAt {STREAK_WIND} m/s (Beaufort 8), the correlation length of the foam output variable \
-         (the foam left behind by breaking crests) along the wind and across it: where the field's autocorrelation first falls below 1/e, in metres \
+         (the foam left behind by breaking crests, with the wind streaks) along the wind and across it: where the field's autocorrelation first falls below 1/e, in metres \
          (mean over the seeds).\n"
     );
     let _ = writeln!(md, "| surface | along the wind (m) | across (m) | ratio |");
     let _ = writeln!(md, "|---|---|---|---|");
-    let metres_per_pixel = 2.0 * HEIGHT_M * 30f64.to_radians().tan() / f64::from(SIZE);
-    for surface in SURFACES {
-        let (mut along, mut across) = (0.0, 0.0);
-        for &seed in &SEEDS {
-            let frame = render_top_down(surface, STREAK_WIND, seed, &dir)?;
-            let foam: Vec<Option<f64>> =
-                frame.aovs.iter().map(|a| a.depth.is_finite().then(|| f64::from(a.foam))).collect();
-            let (a, c) = correlation_lengths(&foam, SIZE as usize);
-            along += a * metres_per_pixel / SEEDS.len() as f64;
-            across += c * metres_per_pixel / SEEDS.len() as f64;
-        }
-        eprintln!("streaks {surface}: along {along:.2} m, across {across:.2} m");
+    for (surface, along, across) in streak_lengths(Some(&dir))? {
         let _ = writeln!(md, "| {surface} | {along:.2} | {across:.2} | {:.2} |", along / across.max(1e-9));
     }
     let _ = writeln!(

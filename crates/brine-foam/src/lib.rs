@@ -82,6 +82,7 @@ mod noise;
 mod radiance;
 mod scattering;
 mod spray;
+mod windrows;
 
 pub use coverage::{
     CoverageParams, DARLES_ONSET_WIND_M_S, MAX_ABS_DELTA_T_C, MAX_WIND_M_S, WhitecapLaw, whitecap_coverage,
@@ -101,3 +102,4 @@ pub use scattering::{SprayLighting, SprayRay, SprayScattering, henyey_greenstein
 pub use spray::{
     AIR_VISCOSITY, G, MSD86_RADIUS_RANGE_UM, SEA_WATER_DENSITY, msd86_flux, spray_foam_factor, stokes_settling_velocity,
 };
+pub use windrows::{WINDROW_SHARE, WINDROW_SPACING_M, WINDROW_STRETCH, Windrows};

@@ -6,6 +6,9 @@ use rand_chacha::ChaCha8Rng;
 
 use crate::error::{FoamError, check};
 use crate::noise::{FoamNoise, smoothstep};
+use crate::windrows::{
+    QUANTILE_SAMPLES, StretchedUniform, WINDROW_SHARE, WINDROW_SPACING_M, WINDROW_STRETCH, Windrows,
+};
 
 /// E-folding time of a whitecap's foam area in sea water, `τ = 3.85 s` (Monahan 1971; 2.54 s in
 /// fresh water). Callaghan et al. (2012) measured 0.5–8 s for single whitecaps.
@@ -35,12 +38,6 @@ pub const MAX_MEMORY_INSTANTS: usize = 64;
 
 /// Number of octaves of the patch noise and of the edge noise.
 const NOISE_OCTAVES: u32 = 5;
-
-/// Quantiles tabulated to make the patch noise uniform (its empirical distribution function).
-const QUANTILES: usize = 256;
-
-/// Points the quantiles are estimated from (a few thousand first-octave cells).
-const QUANTILE_SAMPLES: usize = 16_384;
 
 /// Half-width of the survival step in the uniform patch variable: a patch edge is smoothed over
 /// ±2 % of the area quantile instead of aliasing.
@@ -72,7 +69,11 @@ pub struct FoamMemoryParams {
     pub wind_direction_rad: f64,
     /// Wavelength of the first octave of the edge noise (m), `(0, 10⁴]`.
     pub edge_wavelength_m: f64,
-    /// Seed of both noises.
+    /// Share of the mean white cover held in foam streaks along the wind ([`Windrows`]),
+    /// `[0, 1)`; default 0 (none), [`WINDROW_SHARE`] from Beaufort 8 in
+    /// [`FoamMemoryParams::for_wind`].
+    pub windrow_share: f64,
+    /// Seed of the noises.
     pub seed: u64,
     /// A square tile (m, `(0, 10⁶]`) over which the foam must repeat (a baked, tileable map), or
     /// `None`: the noises' wavelengths, stretch and direction are then moved to the nearest ones
@@ -91,6 +92,7 @@ impl Default for FoamMemoryParams {
             streak_stretch: 1.0,
             wind_direction_rad: 0.0,
             edge_wavelength_m: 1.0,
+            windrow_share: 0.0,
             seed: 1,
             tile_m: None,
         }
@@ -100,16 +102,19 @@ impl Default for FoamMemoryParams {
 impl FoamMemoryParams {
     /// The defaults for a wind of `u10` (m s⁻¹, `[0, 60]`) blowing toward `direction_rad`: a drift
     /// of [`WIND_DRIFT_FRACTION`] `U₁₀` downwind and patches stretched along the wind from
-    /// round below 12 m s⁻¹ to [`STREAK_STRETCH`] from 17.2 m s⁻¹ (smoothstep between).
+    /// round below 12 m s⁻¹ to [`STREAK_STRETCH`] from 17.2 m s⁻¹, and [`WINDROW_SHARE`] of the
+    /// white cover in foam streaks along the wind from 17.2 m s⁻¹ (smoothstep between for both).
     ///
     /// # References
     /// Wu J. 1983, "Sea-surface drift currents induced by wind and waves", JPO 13:1441–1451;
     /// the Beaufort scale's sea-state descriptions (WMO No. 8).
     pub fn for_wind(u10: f64, direction_rad: f64, seed: u64) -> Self {
         let drift = WIND_DRIFT_FRACTION * u10;
+        let streaky = smoothstep(STREAK_WINDS_M_S.0, STREAK_WINDS_M_S.1, u10);
         Self {
             drift_m_s: [drift * direction_rad.cos(), drift * direction_rad.sin()],
-            streak_stretch: 1.0 + (STREAK_STRETCH - 1.0) * smoothstep(STREAK_WINDS_M_S.0, STREAK_WINDS_M_S.1, u10),
+            streak_stretch: 1.0 + (STREAK_STRETCH - 1.0) * streaky,
+            windrow_share: WINDROW_SHARE * streaky,
             wind_direction_rad: direction_rad,
             seed,
             ..Self::default()
@@ -253,12 +258,11 @@ pub struct FoamMemory {
     length: f64,
     count: usize,
     drift: [f64; 2],
-    along: [f64; 2],
-    stretch: f64,
-    patches: FoamNoise,
+    patches: StretchedUniform,
     edges: FoamNoise,
     edge_std: f64,
-    quantiles: Vec<f64>,
+    windrow_share: f64,
+    windrows: Option<Windrows>,
 }
 
 impl FoamMemory {
@@ -280,6 +284,7 @@ impl FoamMemory {
         check("streak_stretch", params.streak_stretch, (1.0..=20.0).contains(&params.streak_stretch), "[1, 20]")?;
         check("wind_direction_rad", params.wind_direction_rad, true, "finite rad")?;
         check("efficiency", efficiency, efficiency > 0.0 && efficiency < 1.0, "(0, 1)")?;
+        check("windrow_share", params.windrow_share, (0.0..1.0).contains(&params.windrow_share), "[0, 1)")?;
         let count = (ratio * tau / step).ceil() as usize + 1;
         if count > MAX_MEMORY_INSTANTS {
             return Err(FoamError::OutOfRange {
@@ -290,8 +295,10 @@ impl FoamMemory {
         }
         let mut patches = FoamNoise::new(1.0, params.patch_wavelength_m, NOISE_OCTAVES, params.seed)?;
         let mut edges = FoamNoise::new(1.0, params.edge_wavelength_m, NOISE_OCTAVES, params.seed ^ 0x5eed_ed9e)?;
-        let (mut along, mut stretch) =
-            ([params.wind_direction_rad.cos(), params.wind_direction_rad.sin()], params.streak_stretch);
+        let wind = [params.wind_direction_rad.cos(), params.wind_direction_rad.sin()];
+        let (mut along, mut stretch) = (wind, params.streak_stretch);
+        let (mut windrow_along, mut windrow_spacing, mut windrow_stretch, mut windrow_period) =
+            (wind, WINDROW_SPACING_M, WINDROW_STRETCH, None);
         if let Some(tile) = params.tile_m {
             check("tile_m", tile, tile > 0.0 && tile <= 1e6, "(0, 1e6] m")?;
             let p = periodic_patches(tile, params.patch_wavelength_m, params.streak_stretch, params.wind_direction_rad);
@@ -303,36 +310,86 @@ impl FoamMemory {
             let cells = (tile / params.edge_wavelength_m).round().max(1.0);
             edges = FoamNoise::new(1.0, tile / cells, NOISE_OCTAVES, params.seed ^ 0x5eed_ed9e)?
                 .periodic([cells as i64, 0], [0, cells as i64])?;
+            let w = periodic_patches(tile, WINDROW_SPACING_M, WINDROW_STRETCH, params.wind_direction_rad);
+            let r = ((w.m * w.m + w.n * w.n) as f64).sqrt();
+            windrow_along = [w.m as f64 / r, w.n as f64 / r];
+            windrow_spacing = tile / (w.g as f64 * r);
+            windrow_stretch = w.g as f64 / w.stretch_divisor as f64;
+            windrow_period = Some(([w.m * w.stretch_divisor, -w.g * w.n], [w.n * w.stretch_divisor, w.g * w.m]));
         }
-        let mut memory = Self {
+        // The empirical distribution of the patch noise and the standard deviation of the edge
+        // noise, from the same deterministic points spread over many first-octave cells.
+        let mut rng = ChaCha8Rng::seed_from_u64(params.seed ^ 0x0a11_7e57);
+        let span = 200.0 * params.patch_wavelength_m.max(params.edge_wavelength_m) * stretch;
+        let points: Vec<(f64, f64)> =
+            (0..QUANTILE_SAMPLES).map(|_| (rng.random_range(-span..span), rng.random_range(-span..span))).collect();
+        let mut patches = StretchedUniform::new(patches, along, stretch);
+        patches.tabulate(&points);
+        let e2: f64 = points
+            .iter()
+            .map(|&(x, z)| {
+                let e = edges.value(x, z, 0.0) - 1.0;
+                e * e
+            })
+            .sum();
+        let windrows = if params.windrow_share > 0.0 {
+            Some(Windrows::new(
+                windrow_spacing,
+                windrow_stretch,
+                windrow_along,
+                windrow_period,
+                efficiency,
+                params.seed,
+            )?)
+        } else {
+            None
+        };
+        Ok(Self {
             tau,
             tau_r: tau * efficiency / (1.0 - efficiency),
             step,
             length: step * (count - 1) as f64,
             count,
             drift: params.drift_m_s,
-            along,
-            stretch,
             patches,
             edges,
-            edge_std: 1.0,
-            quantiles: Vec::new(),
-        };
-        // The empirical distribution of the patch noise and the standard deviation of the edge
-        // noise, from the same deterministic points spread over many first-octave cells.
-        let mut rng = ChaCha8Rng::seed_from_u64(params.seed ^ 0x0a11_7e57);
-        let span = 200.0 * params.patch_wavelength_m.max(params.edge_wavelength_m) * memory.stretch;
-        let (mut g, mut e2) = (Vec::with_capacity(QUANTILE_SAMPLES), 0.0);
-        for _ in 0..QUANTILE_SAMPLES {
-            let (x, z) = (rng.random_range(-span..span), rng.random_range(-span..span));
-            g.push(memory.patch_value(x, z, 0.0));
-            let e = memory.edges.value(x, z, 0.0) - 1.0;
-            e2 += e * e;
+            edge_std: (e2 / QUANTILE_SAMPLES as f64).sqrt().max(f64::MIN_POSITIVE),
+            windrow_share: params.windrow_share,
+            windrows,
+        })
+    }
+
+    /// Share of the mean white cover held in foam streaks along the wind (0: none).
+    pub fn windrow_share(&self) -> f64 {
+        self.windrow_share
+    }
+
+    /// The foam streaks along the wind, when the share is above 0.
+    pub fn windrows(&self) -> Option<&Windrows> {
+        self.windrows.as_ref()
+    }
+
+    /// White water with the foam streaks of cover `c` (from [`Windrows::cover`]) added as old
+    /// foam: `residual′ = 1 − (1 − residual)(1 − c)`, `white′ = 1 − (1 − white)(1 − c)`, the
+    /// brightness their cover-weighted mean.
+    ///
+    /// # Arguments
+    /// - `ww`: the white water without the streaks; `cover`: `c ∈ [0, 1]`.
+    pub fn with_windrows(&self, ww: WhiteWater, cover: f64) -> WhiteWater {
+        let Some(w) = &self.windrows else { return ww };
+        if cover <= 0.0 {
+            return ww;
         }
-        g.sort_by(f64::total_cmp);
-        memory.quantiles = (0..=QUANTILES).map(|i| g[(i * (QUANTILE_SAMPLES - 1)) / QUANTILES]).collect();
-        memory.edge_std = (e2 / QUANTILE_SAMPLES as f64).sqrt().max(f64::MIN_POSITIVE);
-        Ok(memory)
+        let c = cover.clamp(0.0, 1.0);
+        let added = (1.0 - ww.white) * c;
+        let white = ww.white + added;
+        let brightness = if white > 0.0 { (ww.white * ww.brightness + added * w.brightness()) / white } else { 1.0 };
+        WhiteWater {
+            active: ww.active,
+            residual: 1.0 - (1.0 - ww.residual) * (1.0 - c),
+            white,
+            brightness: brightness.clamp(0.0, 1.0),
+        }
     }
 
     /// `τ`, the decay time of the foam area (s).
@@ -353,30 +410,6 @@ impl FoamMemory {
     /// Number of lattice instants read at most per point.
     pub fn sample_count(&self) -> usize {
         self.count
-    }
-
-    /// The patch noise `g − 1` at `(x, z)` in stretched coordinates, footprint-filtered.
-    fn patch_value(&self, x: f64, z: f64, footprint_m: f64) -> f64 {
-        let (a, c) = (self.along[0], self.along[1]);
-        let (s, q) = ((x * a + z * c) / self.stretch, -x * c + z * a);
-        // The footprint shrinks along the stretched axis too; take the across-wind one (the
-        // shorter wavelength) so no octave aliases.
-        self.patches.value(s, q, footprint_m) - 1.0
-    }
-
-    /// The uniform patch variable `m = F(g)` (empirical distribution function), `[0, 1]`.
-    fn uniform(&self, g: f64) -> f64 {
-        let q = &self.quantiles;
-        let i = q.partition_point(|&v| v < g);
-        if i == 0 {
-            return 0.0;
-        }
-        if i > QUANTILES {
-            return 1.0;
-        }
-        let (lo, hi) = (q[i - 1], q[i]);
-        let f = if hi > lo { (g - lo) / (hi - lo) } else { 0.5 };
-        ((i - 1) as f64 + f) / QUANTILES as f64
     }
 
     /// Unit-variance, zero-mean edge noise carried by the water at rest position `(x, z)` and the
@@ -419,8 +452,8 @@ impl FoamMemory {
     /// - `out`: receives `Sⱼ ∈ [0, 1]`.
     pub fn survivals(&self, u: [f64; 2], t: f64, footprint_m: f64, out: &mut [f64]) -> usize {
         debug_assert!(t.is_finite() && footprint_m >= 0.0);
-        let r = 1.0 - self.patches.resolved_variance_share(footprint_m);
-        let m = self.uniform(self.patch_value(u[0], u[1], footprint_m));
+        let r = 1.0 - self.patches.resolved_share(footprint_m);
+        let m = self.patches.at(u[0], u[1], footprint_m);
         let mut used = 0;
         let a0 = self.instant(t, 0).1;
         // e^{−aⱼ/τ} by recurrence: aⱼ = a₀ + jΔt.
@@ -570,7 +603,7 @@ mod tests {
         let mem = memory();
         let n = 40_000.0;
         for q in [0.1, 0.25, 0.5, 0.75, 0.9] {
-            let share = points().filter(|p| mem.uniform(mem.patch_value(p[0], p[1], 0.0)) < q).count() as f64 / n;
+            let share = points().filter(|p| mem.patches.at(p[0], p[1], 0.0) < q).count() as f64 / n;
             assert!((share - q).abs() < AREA_TOL, "P(m < {q}) = {share}");
         }
     }
@@ -608,7 +641,7 @@ mod tests {
         // Mean absolute change of the patch noise over 1 m along x (the wind) and along z.
         let diff = |dx: f64, dz: f64| -> f64 {
             points()
-                .map(|q| (mem.patch_value(q[0] + dx, q[1] + dz, 0.0) - mem.patch_value(q[0], q[1], 0.0)).abs())
+                .map(|q| (mem.patches.raw(q[0] + dx, q[1] + dz, 0.0) - mem.patches.raw(q[0], q[1], 0.0)).abs())
                 .sum()
         };
         let (along, across) = (diff(1.0, 0.0), diff(0.0, 1.0));
@@ -653,7 +686,7 @@ mod tests {
             assert!((s / params.streak_stretch).ln().abs() < 0.25, "{p:?}");
             let in_range = points()
                 .filter(|u| {
-                    let m = mem.uniform(mem.patch_value(u[0], u[1], 0.0));
+                    let m = mem.patches.at(u[0], u[1], 0.0);
                     m < 0.3
                 })
                 .count();
@@ -666,6 +699,19 @@ mod tests {
     fn the_bisection_finds_the_threshold() {
         let alpha = calibrate_threshold(0.3, (-1.0, 1.0), 1e-10, |a| 0.5 * (1.0 + a));
         assert!((alpha - (-0.4)).abs() < 1e-9);
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn the_bisection_meets_any_monotone_cover(
+            root in -3.0..3.0f64, width in 1e-3..2.0f64, target in 0.01..0.99f64, tol in 1e-8..1e-2f64,
+        ) {
+            // A logistic cover through `target` at `root`.
+            let shift = width * (target / (1.0 - target)).ln();
+            let cover = |a: f64| 1.0 / (1.0 + (-(a - root + shift) / width).exp());
+            let alpha = calibrate_threshold(target, (-5.0, 5.0), tol, cover);
+            proptest::prop_assert!((alpha - root).abs() <= tol, "{} against {}", alpha, root);
+        }
     }
 
     #[test]

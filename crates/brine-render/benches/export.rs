@@ -26,19 +26,30 @@ fn time(runs: usize, mut f: impl FnMut()) -> f64 {
 }
 
 fn main() {
+    // `cargo bench --bench export -- bake` (or mesh, query) runs one task, for profiling.
+    let only: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with("--")).collect();
+    let run = |task: &str| only.is_empty() || only.iter().any(|o| o == task);
     let scene = Scene::default_scene();
     let threads = rayon::current_num_threads();
     let lattice = brine_waves::TileLattice::new(200.0, None).expect("a valid tile");
     let tiled = World::on_lattice(&scene, Some(&lattice)).expect("the default scene builds");
     let world = World::new(&scene).expect("the default scene builds");
     let options = BakeOptions { size: 1024, tile_m: 200.0, up: UpAxis::Y };
-    let bake = time(3, || {
-        std::hint::black_box(bake_frame(&tiled, 0.5, &options));
-    });
+    let bake = if run("bake") {
+        time(3, || {
+            std::hint::black_box(bake_frame(&tiled, 0.5, &options));
+        })
+    } else {
+        f64::NAN
+    };
     let grid = MeshGrid { center: DVec2::ZERO, size_m: 499.5, spacing_m: 0.5 };
-    let mesh = time(3, || {
-        std::hint::black_box(grid_mesh(&world, scene.sea.time_s, &grid));
-    });
+    let mesh = if run("mesh") {
+        time(3, || {
+            std::hint::black_box(grid_mesh(&world, scene.sea.time_s, &grid));
+        })
+    } else {
+        f64::NAN
+    };
     let n = 1_000_000;
     let points: Vec<QueryPoint> = (0..n)
         .map(|i| {
@@ -46,15 +57,20 @@ fn main() {
             QueryPoint { x: 1000.0 * a - 500.0, z: 1000.0 * b - 500.0, t: scene.sea.time_s }
         })
         .collect();
-    let query = time(3, || {
-        std::hint::black_box(query_points(&scene, &world, &points).expect("queries"));
-    });
-    // The surface alone (no white water): what the geometry costs.
-    let surface = time(3, || {
-        use rayon::prelude::*;
-        let v: Vec<f64> = points.par_iter().with_min_len(256).map(|p| world.sea.sample(p.x, p.z).height).collect();
-        std::hint::black_box(v);
-    });
+    let (query, surface) = if run("query") {
+        let query = time(3, || {
+            std::hint::black_box(query_points(&scene, &world, &points).expect("queries"));
+        });
+        // The surface alone (no white water): what the geometry costs.
+        let surface = time(3, || {
+            use rayon::prelude::*;
+            let v: Vec<f64> = points.par_iter().with_min_len(256).map(|p| world.sea.sample(p.x, p.z).height).collect();
+            std::hint::black_box(v);
+        });
+        (query, surface)
+    } else {
+        (f64::NAN, f64::NAN)
+    };
     println!("export of the default sea ({threads} threads), medians of 3:");
     println!("| task | time | goal | ratio to goal |");
     println!("|---|---|---|---|");

@@ -817,7 +817,9 @@ impl World {
                 }
                 _ => {
                     let stats = JacobianStatistics::new(&set)?;
-                    let stats = TrochoidBreaking::new(stats, memory.step(), DVec2::from_array(memory.drift()));
+                    // The frame's present and history in one pass.
+                    let stats = TrochoidBreaking::new(stats, memory.step(), DVec2::from_array(memory.drift()))
+                        .for_age(memory.instant(s.time_s, 0).1);
                     let options = WhiteWaterOptions { seed: s.seed, ..WhiteWaterOptions::default() };
                     WhiteWaterSea::Trochoids(
                         WhiteWaterModel::new(stats, memory, s_b, EDGE_SHARE, monahan, &options)?

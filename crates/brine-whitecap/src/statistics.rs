@@ -130,6 +130,17 @@ pub struct HistoryRotation {
     rot: Vec<(f32x8, f32x8)>,
 }
 
+/// Where a history starts: the rotation from the present to the lattice's instant 0 (the age
+/// `a₀` of that instant, [`JacobianStatistics::history_rotation`] of `a₀`) and the lattice's own
+/// rotation from one instant to the next.
+#[derive(Debug, Clone, Copy)]
+pub struct HistoryStart<'a> {
+    /// The rotation by `(ωᵢ − kᵢd̂ᵢ·v) a₀`.
+    pub offset: &'a HistoryRotation,
+    /// The rotation by `(ωᵢ − kᵢd̂ᵢ·v) Δt`.
+    pub rotation: &'a HistoryRotation,
+}
+
 /// Four sorted waves side by side (lanes beyond the set have `a = 0`): the per-wave constants of
 /// [`Accumulator::add`] with `v vᵀ` precomputed, for `f64x4` lanes.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -178,7 +189,130 @@ struct Octet {
     harm: [f32x8; 4],
 }
 
+/// Instants a history holds at most.
+const MAX_HISTORY_INSTANTS: usize = 64;
+
+/// `1` in the lanes of octet `j` that hold one of the `n` active waves, `0` beyond.
+#[inline]
+fn live_lanes(j: usize, n: usize) -> f32x8 {
+    f32x8::new([0, 1, 2, 3, 4, 5, 6, 7].map(|l| if 8 * j + l < n { 1.0 } else { 0.0 }))
+}
+
+/// The `f32` sums of [`JacobianStatistics::moments_at_f32`] over the octets.
+#[derive(Default)]
+struct PresentSums {
+    p: f32x8,
+    q: f32x8,
+    r: f32x8,
+    g: [f32x8; 6],
+    w: f32x8,
+    h: [f32x8; 4],
+}
+
+impl PresentSums {
+    /// Adds one octet's waves at cosines `cos` with footprint gains `gain` (lanes `live`).
+    #[inline]
+    fn add(&mut self, o: &Octet, live: f32x8, gain: f32x8, cos: f32x8) {
+        let (one, zero, half) = (f32x8::ONE, f32x8::ZERO, f32x8::splat(0.5));
+        let a = o.a * live;
+        let agc = a * gain * cos;
+        self.p -= agc * o.dd[0];
+        self.q -= agc * o.dd[1];
+        self.r -= agc * o.dd[2];
+        // As `moments_at`; a gain that rounds to 1 in f32 is fully resolved.
+        let (g2, c2) = (gain * gain, cos * cos);
+        let s2 = (half + half * g2 * g2 * (c2 + c2 - one) - g2 * c2).max(zero);
+        let s2 = gain.simd_lt(one).select(s2, zero);
+        let weight = a * a * s2;
+        for (gj, vv) in self.g.iter_mut().zip(o.vv) {
+            *gj += weight * vv;
+        }
+        self.w += weight;
+        for (hj, hm) in self.h.iter_mut().zip(o.harm) {
+            *hj += weight * hm;
+        }
+    }
+
+    /// The moments, with the tail of the waves beyond the active ones.
+    fn finish(&self, tail: &Sums) -> Moments {
+        let sum = |x: f32x8| f64::from(x.reduce_add());
+        let acc = Accumulator {
+            p: 1.0 + sum(self.p),
+            q: sum(self.q),
+            r: 1.0 + sum(self.r),
+            sums: Sums { g: self.g.map(sum), w: sum(self.w), h: self.h.map(sum) },
+        };
+        acc.moments(tail)
+    }
+}
+
+/// The `f32` sums of [`JacobianStatistics::mean_history`] at each instant.
+struct HistorySums {
+    count: usize,
+    p: [f32x8; MAX_HISTORY_INSTANTS],
+    q: [f32x8; MAX_HISTORY_INSTANTS],
+    r: [f32x8; MAX_HISTORY_INSTANTS],
+}
+
+impl HistorySums {
+    fn new(instants: usize) -> Self {
+        let zero = [f32x8::ZERO; MAX_HISTORY_INSTANTS];
+        Self { count: instants.min(MAX_HISTORY_INSTANTS), p: zero, q: zero, r: zero }
+    }
+
+    /// Adds one octet's waves of filtered amplitudes `ag` from the cosine and sine `(c, s)` at
+    /// instant 0, rotated by `turn = (cos δ, sin δ)` from one instant to the next.
+    #[inline]
+    fn add(&mut self, ag: f32x8, o: &Octet, (mut c, mut sn): (f32x8, f32x8), (cd, sd): (f32x8, f32x8)) {
+        let (w0, w1, w2) = (ag * o.dd[0], ag * o.dd[1], ag * o.dd[2]);
+        for i in 0..self.count {
+            self.p[i] -= w0 * c;
+            self.q[i] -= w1 * c;
+            self.r[i] -= w2 * c;
+            (c, sn) = (c * cd - sn * sd, sn * cd + c * sd);
+        }
+    }
+
+    /// `μⱼ` into `out`.
+    fn finish(&self, out: &mut [f64]) {
+        for (i, o) in out.iter_mut().enumerate().take(self.count) {
+            let (pi, qi, ri) = (
+                1.0 + f64::from(self.p[i].reduce_add()),
+                f64::from(self.q[i].reduce_add()),
+                1.0 + f64::from(self.r[i].reduce_add()),
+            );
+            *o = pi * ri - qi * qi;
+        }
+    }
+}
+
 impl Octet {
+    /// The phases `k·u − ωt + φ₀` at `(u, t)`, reduced by whole turns in f64 (exact to ~10⁻¹² rad
+    /// at 10⁵ rad) and then rounded to f32.
+    #[inline]
+    fn reduced_phase(&self, u: DVec2, t: f64) -> f32x8 {
+        let mut reduced = [0.0f32; 8];
+        for (l, x) in reduced.iter_mut().enumerate() {
+            let phi = self.kx[l] * u.x + self.kz[l] * u.y - self.omega[l] * t + self.phase[l];
+            *x = (phi - std::f64::consts::TAU * round_to_integer(phi * (1.0 / std::f64::consts::TAU))) as f32;
+        }
+        f32x8::new(reduced)
+    }
+
+    /// The footprint gains of the octet's waves in f32.
+    #[inline]
+    fn gain(&self, footprint_m: f64, filter: FootprintFilter) -> f32x8 {
+        let (zero, s) = (f32x8::ZERO, f32x8::splat(footprint_m as f32));
+        match filter {
+            FootprintFilter::Gaussian => {
+                let ks = self.k * s;
+                let e = (f32x8::splat(-0.5) * ks * ks).exp();
+                e.simd_lt(f32x8::splat(MIN_GAIN as f32)).select(zero, e)
+            }
+            FootprintFilter::Sharp => (self.k * s).simd_lt(f32x8::ONE).select(f32x8::ONE, zero),
+        }
+    }
+
     fn new(terms: &[WaveTerm]) -> Self {
         let wide = |f: &dyn Fn(&WaveTerm) -> f64| [0, 1, 2, 3, 4, 5, 6, 7].map(|l| terms.get(l).map_or(0.0, f));
         let narrow = |f: &dyn Fn(&WaveTerm) -> f64| f32x8::new(wide(f).map(|x| x as f32));
@@ -600,42 +734,13 @@ impl JacobianStatistics {
         out: &mut [f64],
     ) {
         debug_assert!(footprint_m >= 0.0 && rotation.rot.len() == self.octets.len());
-        const MAX_INSTANTS: usize = 64;
-        let count = out.len().min(MAX_INSTANTS);
-        let zero = f32x8::ZERO;
-        let (mut p, mut q, mut r) = ([zero; MAX_INSTANTS], [zero; MAX_INSTANTS], [zero; MAX_INSTANTS]);
+        let mut history = HistorySums::new(out.len());
         let n = self.active_count(footprint_m, filter);
-        let s = f32x8::splat(footprint_m as f32);
-        for (j, (o, &(cd, sd))) in self.octets[..n.div_ceil(8)].iter().zip(&rotation.rot).enumerate() {
-            let mut reduced = [0.0f32; 8];
-            for (l, x) in reduced.iter_mut().enumerate() {
-                let phi = o.kx[l] * u0.x + o.kz[l] * u0.y - o.omega[l] * t0 + o.phase[l];
-                *x = (phi - std::f64::consts::TAU * round_to_integer(phi * (1.0 / std::f64::consts::TAU))) as f32;
-            }
-            let live = f32x8::new([0, 1, 2, 3, 4, 5, 6, 7].map(|l| if 8 * j + l < n { 1.0 } else { 0.0 }));
-            let (mut sn, mut c) = f32x8::new(reduced).sin_cos();
-            let gain = match filter {
-                FootprintFilter::Gaussian => {
-                    let ks = o.k * s;
-                    let e = (f32x8::splat(-0.5) * ks * ks).exp();
-                    e.simd_lt(f32x8::splat(MIN_GAIN as f32)).select(zero, e)
-                }
-                FootprintFilter::Sharp => (o.k * s).simd_lt(f32x8::ONE).select(f32x8::ONE, zero),
-            };
-            let ag = o.a * live * gain;
-            let (w0, w1, w2) = (ag * o.dd[0], ag * o.dd[1], ag * o.dd[2]);
-            for i in 0..count {
-                p[i] -= w0 * c;
-                q[i] -= w1 * c;
-                r[i] -= w2 * c;
-                (c, sn) = (c * cd - sn * sd, sn * cd + c * sd);
-            }
+        for (j, (o, &turn)) in self.octets[..n.div_ceil(8)].iter().zip(&rotation.rot).enumerate() {
+            let (sn, c) = o.reduced_phase(u0, t0).sin_cos();
+            history.add(o.a * live_lanes(j, n) * o.gain(footprint_m, filter), o, (c, sn), turn);
         }
-        for (i, o) in out.iter_mut().enumerate().take(count) {
-            let (pi, qi, ri) =
-                (1.0 + f64::from(p[i].reduce_add()), f64::from(q[i].reduce_add()), 1.0 + f64::from(r[i].reduce_add()));
-            *o = pi * ri - qi * qi;
-        }
+        history.finish(out);
     }
 
     /// [`Self::moments_at`] in `f32` lanes, eight waves at a time: the renderer's route (about
@@ -655,53 +760,54 @@ impl JacobianStatistics {
     pub fn moments_at_f32(&self, u: DVec2, t: f64, footprint_m: f64, filter: FootprintFilter) -> Moments {
         debug_assert!(footprint_m >= 0.0);
         let n = self.active_count(footprint_m, filter);
-        let (one, zero, half) = (f32x8::ONE, f32x8::ZERO, f32x8::splat(0.5));
-        let s = f32x8::splat(footprint_m as f32);
-        let (mut p, mut q, mut r) = (zero, zero, zero);
-        let (mut g, mut w, mut h) = ([zero; 6], zero, [zero; 4]);
+        let mut present = PresentSums::default();
         for (j, o) in self.octets[..n.div_ceil(8)].iter().enumerate() {
-            // φ = k·u − ωt + φ₀ reduced by whole turns in f64 (exact to ~10⁻¹² rad at 10⁵ rad).
-            let mut reduced = [0.0f32; 8];
-            for (l, x) in reduced.iter_mut().enumerate() {
-                let phi = o.kx[l] * u.x + o.kz[l] * u.y - o.omega[l] * t + o.phase[l];
-                *x = (phi - std::f64::consts::TAU * round_to_integer(phi * (1.0 / std::f64::consts::TAU))) as f32;
-            }
-            let live = f32x8::new([0, 1, 2, 3, 4, 5, 6, 7].map(|l| if 8 * j + l < n { 1.0 } else { 0.0 }));
-            let cos = f32x8::new(reduced).cos();
-            let gain = match filter {
-                FootprintFilter::Gaussian => {
-                    let ks = o.k * s;
-                    let e = (f32x8::splat(-0.5) * ks * ks).exp();
-                    e.simd_lt(f32x8::splat(MIN_GAIN as f32)).select(zero, e)
-                }
-                FootprintFilter::Sharp => (o.k * s).simd_lt(one).select(one, zero),
-            };
-            let a = o.a * live;
-            let agc = a * gain * cos;
-            p -= agc * o.dd[0];
-            q -= agc * o.dd[1];
-            r -= agc * o.dd[2];
-            // As `moments_at`; a gain that rounds to 1 in f32 is fully resolved.
-            let (g2, c2) = (gain * gain, cos * cos);
-            let s2 = (half + half * g2 * g2 * (c2 + c2 - one) - g2 * c2).max(zero);
-            let s2 = gain.simd_lt(one).select(s2, zero);
-            let weight = a * a * s2;
-            for (gj, vv) in g.iter_mut().zip(o.vv) {
-                *gj += weight * vv;
-            }
-            w += weight;
-            for (hj, hm) in h.iter_mut().zip(o.harm) {
-                *hj += weight * hm;
-            }
+            let cos = o.reduced_phase(u, t).cos();
+            present.add(o, live_lanes(j, n), o.gain(footprint_m, filter), cos);
         }
-        let sum = |x: f32x8| f64::from(x.reduce_add());
-        let acc = Accumulator {
-            p: 1.0 + sum(p),
-            q: sum(q),
-            r: 1.0 + sum(r),
-            sums: Sums { g: g.map(sum), w: sum(w), h: h.map(sum) },
-        };
-        acc.moments(&self.tail[n])
+        present.finish(&self.tail[n])
+    }
+
+    /// [`Self::moments_at_f32`] at `(u, t)` and [`Self::mean_history`] from the lattice instant
+    /// `t₀ = t − a₀` at `u₀ = u − v a₀` in one pass: each wave's phase, cosine, sine and gain are
+    /// computed once, and the history's first phase is the present one advanced by
+    /// `(ωᵢ − kᵢd̂ᵢ·v) a₀` (`offset`, [`Self::history_rotation`] of `a₀`) before the lattice's
+    /// rotations. Within `f32` rounding of the two separate calls (test
+    /// `the_fused_history_matches_the_separate_calls`).
+    ///
+    /// # Arguments
+    /// - `u`, `t`, `footprint_m`, `filter`: as [`Self::moments_at`].
+    /// - `start`: the rotation by the age `a₀ ≥ 0` of instant 0 (with the lattice's drift) and the
+    ///   lattice's own ([`HistoryStart`]).
+    /// - `out`: receives `μⱼ`, as [`Self::mean_history`].
+    ///
+    /// # Returns
+    /// [`Moments`] `(μ, σ²)` at `(u, t)`.
+    pub fn moments_and_history_f32(
+        &self,
+        u: DVec2,
+        t: f64,
+        footprint_m: f64,
+        filter: FootprintFilter,
+        start: &HistoryStart<'_>,
+        out: &mut [f64],
+    ) -> Moments {
+        let HistoryStart { offset, rotation } = *start;
+        debug_assert!(footprint_m >= 0.0);
+        debug_assert!(rotation.rot.len() == self.octets.len() && offset.rot.len() == self.octets.len());
+        let n = self.active_count(footprint_m, filter);
+        let (mut present, mut history) = (PresentSums::default(), HistorySums::new(out.len()));
+        for (j, ((o, &turn), &(c0, s0))) in
+            self.octets[..n.div_ceil(8)].iter().zip(&rotation.rot).zip(&offset.rot).enumerate()
+        {
+            let (sin, cos) = o.reduced_phase(u, t).sin_cos();
+            let (live, gain) = (live_lanes(j, n), o.gain(footprint_m, filter));
+            present.add(o, live, gain, cos);
+            // The history: from the present phase advanced by the age of instant 0.
+            history.add(o.a * live * gain, o, (cos * c0 - sin * s0, sin * c0 + cos * s0), turn);
+        }
+        history.finish(out);
+        present.finish(&self.tail[n])
     }
 
     /// The scalar reference of [`Self::moments_at`] (one `f64::cos` and `exp` per wave).
@@ -760,6 +866,35 @@ mod tests {
                 let a = dt * j as f64;
                 let m = stats.moments_at(u0 - v * a, t0 - a, s, FootprintFilter::Gaussian);
                 assert!((mu - m.mu).abs() < HISTORY_F32, "s {s}, j {j}: {mu} vs {}", m.mu);
+            }
+        }
+    }
+
+    #[test]
+    fn the_fused_history_matches_the_separate_calls() {
+        use brine_waves::{CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, fit_trochoids};
+        let pm = PiersonMoskowitz::from_u10(16.0).unwrap();
+        let spreading = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
+        let set = fit_trochoids(&pm, &spreading, 100, 4, &FitOptions::default()).unwrap();
+        let stats = JacobianStatistics::new(&set).unwrap();
+        let (dt, v) = (0.25, DVec2::new(0.45, 0.16));
+        let rotation = stats.history_rotation(dt, v);
+        for (u, t) in [(DVec2::new(3.0, -7.0), 12.07), (DVec2::new(-812.5, 1203.25), 3599.9)] {
+            let t0 = (t / dt).floor() * dt;
+            let a0 = t - t0;
+            let offset = stats.history_rotation(a0, v);
+            for s in [0.0, 0.3, 2.0] {
+                let (mut fused, mut apart) = ([0.0; 24], [0.0; 24]);
+                let start = HistoryStart { offset: &offset, rotation: &rotation };
+                let m = stats.moments_and_history_f32(u, t, s, FootprintFilter::Gaussian, &start, &mut fused);
+                let m0 = stats.moments_at_f32(u, t, s, FootprintFilter::Gaussian);
+                stats.mean_history(u - v * a0, t0, &rotation, s, FootprintFilter::Gaussian, &mut apart);
+                // The present is the same arithmetic (the cosine of `sin_cos` against `cos`).
+                assert!((m.mu - m0.mu).abs() < F32_MOMENTS_ERROR && (m.sigma2 - m0.sigma2).abs() < F32_MOMENTS_ERROR);
+                for j in 0..24 {
+                    // One more f32 rotation than the separate route: within the history's own bound.
+                    assert!((fused[j] - apart[j]).abs() < HISTORY_F32, "s {s}, j {j}: {} vs {}", fused[j], apart[j]);
+                }
             }
         }
     }

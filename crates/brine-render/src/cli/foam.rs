@@ -103,6 +103,7 @@ pub fn foam_json(args: &FoamArgs) -> Result<Value, CliError> {
             "step_s": m.step(),
             "wind_drift_m_s": WIND_DRIFT_FRACTION * args.u10,
             "streak_stretch": memory.streak_stretch,
+            "windrow_share": m.windrow_share(),
         },
     }))
 }
@@ -125,11 +126,12 @@ pub fn run_foam(args: &FoamArgs) -> Result<(), CliError> {
         );
         let m = &v["memory"];
         super::outln!(
-            "foam left by breaking: area decays in {} s (brightness in {:.2} s), drifts {:.2} m/s downwind, patches {:.1}× longer along the wind",
+            "foam left by breaking: area decays in {} s (brightness in {:.2} s), drifts {:.2} m/s downwind, patches {:.1}× longer along the wind; {:.0} % of the white cover in wind streaks",
             m["decay_time_s"],
             m["brightness_decay_time_s"].as_f64().unwrap_or(0.0),
             m["wind_drift_m_s"].as_f64().unwrap_or(0.0),
-            m["streak_stretch"].as_f64().unwrap_or(1.0)
+            m["streak_stretch"].as_f64().unwrap_or(1.0),
+            100.0 * m["windrow_share"].as_f64().unwrap_or(0.0)
         );
     }
     Ok(())

@@ -171,6 +171,7 @@ fn white_water_json(
         "visible_coverage": visible / m,
         "active_coverage": active / m,
         "residual_coverage": residual / m,
+        "windrow_coverage": model.windrow_cover(),
     }))
 }
 
