@@ -72,6 +72,19 @@ impl CellPeriod {
         let k = i.div_euclid(a);
         (i - k * a, (j - k * b).rem_euclid(c))
     }
+
+    /// [`Self::reduce`] of `(i₀ + di, j₀ + dj)` for a reduced `(i₀, j₀)` and `di, dj ∈ {0, 1}`:
+    /// at most one period to take off each coordinate, no division.
+    #[inline]
+    fn step(&self, i0: i64, j0: i64, di: i64, dj: i64, o: u32) -> (i64, i64) {
+        let (a, b, c) = (self.a << o, self.b << o, self.c << o);
+        let (mut i, mut j) = (i0 + di, j0 + dj);
+        if i >= a {
+            i -= a;
+            j -= b;
+        }
+        (i, j.rem_euclid(c))
+    }
 }
 
 impl FoamNoise {
@@ -147,16 +160,19 @@ impl FoamNoise {
             return 1.0;
         }
         let mut sum = 0.0;
+        // Octave `o` reads the lattice at `x/λₒ = (x/λ₀)·2ᵒ`: scaling by a power of two is exact,
+        // so one division serves every octave.
+        let (xs, zs) = (x / self.wavelength, z / self.wavelength);
         for o in 0..self.octaves {
-            let lambda = libm::ldexp(self.wavelength, -(o as i32));
-            let fade = smoothstep(1.0, 1.5, lambda / footprint_m.max(f64::MIN_POSITIVE));
+            let (up, down) = (f64::from(1u32 << o), libm::ldexp(1.0, -(o as i32)));
+            let fade =
+                if footprint_m > 0.0 { smoothstep(1.0, 1.5, self.wavelength * down / footprint_m) } else { 1.0 };
             if fade <= 0.0 {
                 break; // Later octaves are shorter still.
             }
             // Offset each octave so their lattices do not line up at the origin.
             let shift = 17.31 * f64::from(o);
-            sum +=
-                fade * libm::ldexp(1.0, -(o as i32)) * self.gradient_noise(x / lambda + shift, z / lambda - shift, o);
+            sum += fade * down * self.gradient_noise(xs * up + shift, zs * up - shift, o);
         }
         (1.0 + self.amplitude * sum / self.weight_sum).clamp(1.0 - self.amplitude, 1.0 + self.amplitude)
     }
@@ -196,10 +212,14 @@ impl FoamNoise {
         let hash = |i: i64, j: i64| p[p[(i & 255) as usize] as usize + (j & 255) as usize];
         let [h00, h10, h01, h11] = match &self.period {
             None => [hash(ci, cj), hash(ci + 1, cj), hash(ci, cj + 1), hash(ci + 1, cj + 1)],
-            Some(per) => [(0, 0), (1, 0), (0, 1), (1, 1)].map(|(di, dj)| {
-                let (i, j) = per.reduce(ci + di, cj + dj, octave);
-                hash(i, j)
-            }),
+            Some(per) => {
+                let (i0, j0) = per.reduce(ci, cj, octave);
+                let at = |di: i64, dj: i64| {
+                    let (i, j) = per.step(i0, j0, di, dj, octave);
+                    hash(i, j)
+                };
+                [at(0, 0), at(1, 0), at(0, 1), at(1, 1)]
+            }
         };
         let (u, v) = (fade(dx), fade(dz));
         let n00 = grad(h00, dx, dz);
@@ -288,6 +308,15 @@ mod tests {
         assert_eq!(per.a * per.c, 41);
         assert_eq!(per.reduce(9, 2, 0), (0, 0));
         assert_eq!(per.reduce(14, -6, 1), (0, 0));
+        // The neighbours of a reduced cell, without division, are the full reduction's.
+        for (i, j) in [(0, 0), (40, 3), (-17, 88), (123, -45), (6, 40)] {
+            for o in 0..4 {
+                let (i0, j0) = per.reduce(i, j, o);
+                for (di, dj) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                    assert_eq!(per.step(i0, j0, di, dj, o), per.reduce(i + di, j + dj, o), "({i}, {j}) + ({di}, {dj}), octave {o}");
+                }
+            }
+        }
     }
 
     #[test]

@@ -270,7 +270,8 @@ impl SeaFrame {
                 let k = traced.kinematics(x, z);
                 let g = k.gradient;
                 SurfaceSample {
-                    height: traced.height(x, z),
+                    // The kinematics' height is `TracedTrochoids::height`'s sum, bit for bit.
+                    height: k.height,
                     normal: DVec3::new(-g.x, 1.0, -g.y).normalize(),
                     displacement: k.displacement,
                     velocity: DVec3::new(k.velocity.x, k.height_rate + g.dot(k.velocity), k.velocity.y),

@@ -948,6 +948,19 @@ mod tests {
         TrochoidSet::new(waves)
     }
 
+    #[test]
+    fn the_kinematics_height_is_the_traced_height_bit_for_bit() {
+        // `SeaFrame::sample` reads the height from the kinematics: it must be the traced sum.
+        for (n, q) in [(50, 0.6), (150, 0.9)] {
+            let sea = TracedTrochoids::new(&set(n, q, 3), 2.7);
+            for i in 0..2000 {
+                let f = f64::from(i);
+                let (x, z) = (400.0 * (f * 0.618_034).fract() - 200.0, 400.0 * (f * 0.754_878).fract() - 200.0);
+                assert_eq!(sea.kinematics(x, z).height.to_bits(), sea.height(x, z).to_bits(), "({x}, {z})");
+            }
+        }
+    }
+
     /// The exact f64 value of tier `tier` along the ray at `t` (faded like the lanes).
     fn exact_tier(sea: &TracedTrochoids, state: &RayState, ray: &Ray, tier: usize, t: f64) -> f64 {
         if tier == 0 {
