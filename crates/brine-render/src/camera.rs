@@ -4,24 +4,9 @@ use glam::DVec3;
 
 use crate::scene::CameraConfig;
 
-/// A pinhole camera with an orthonormal frame.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Camera {
-    /// Eye position (m).
-    pub position: DVec3,
-    /// Unit view direction.
-    pub forward: DVec3,
-    /// Unit right vector.
-    pub right: DVec3,
-    /// Unit up vector of the image.
-    pub up: DVec3,
-    /// `tan(fov/2)` of the vertical field of view.
-    pub tan_half_fov: f64,
-    /// Image width (pixels).
-    pub width: u32,
-    /// Image height (pixels).
-    pub height: u32,
-}
+/// The pinhole camera: brine-texture's `Pinhole` (one type for the renderer and the photo-based
+/// ocean), built from a scene by [`from_config`].
+pub use brine_texture::Pinhole as Camera;
 
 /// Unit direction of a compass bearing and an elevation, y up, north = −z, east = +x.
 ///
@@ -36,45 +21,18 @@ pub fn direction_from_bearing(bearing_deg: f64, elevation_deg: f64) -> DVec3 {
     DVec3::new(b.sin() * e.cos(), e.sin(), -b.cos() * e.cos())
 }
 
-impl Camera {
-    /// The camera of a (validated) `[camera]` section.
-    pub fn from_config(c: &CameraConfig) -> Self {
-        let position = DVec3::from_array(c.position);
-        let forward = match c.look_at {
-            Some(t) => (DVec3::from_array(t) - position).normalize(),
-            None => direction_from_bearing(
-                c.yaw_deg.unwrap_or(crate::Scene::DEFAULT_YAW_DEG),
-                c.pitch_deg.unwrap_or(crate::Scene::DEFAULT_PITCH_DEG),
-            ),
-        };
-        // Looking straight up or down: pick north as the image's up.
-        let world_up = if forward.cross(DVec3::Y).length_squared() < 1e-12 { DVec3::NEG_Z } else { DVec3::Y };
-        let right = forward.cross(world_up).normalize();
-        let up = right.cross(forward);
-        Self {
-            position,
-            forward,
-            right,
-            up,
-            tan_half_fov: (0.5 * c.fov_deg.to_radians()).tan(),
-            width: c.width,
-            height: c.height,
-        }
-    }
-
-    /// Unit direction through the image point `(x, y)` in pixels (`(0, 0)` the top-left corner,
-    /// `(width, height)` the bottom-right).
-    pub fn direction(&self, x: f64, y: f64) -> DVec3 {
-        let aspect = f64::from(self.width) / f64::from(self.height);
-        let sx = (2.0 * x / f64::from(self.width) - 1.0) * self.tan_half_fov * aspect;
-        let sy = (1.0 - 2.0 * y / f64::from(self.height)) * self.tan_half_fov;
-        (self.forward + sx * self.right + sy * self.up).normalize()
-    }
-
-    /// Angle subtended by one pixel at the image centre (rad).
-    pub fn pixel_angle(&self) -> f64 {
-        2.0 * self.tan_half_fov / f64::from(self.height)
-    }
+/// The camera of a (validated) `[camera]` section: looking at `look_at`, or along the compass
+/// bearing `yaw_deg` and the elevation `pitch_deg` (the scene's defaults when absent).
+pub fn from_config(c: &CameraConfig) -> Camera {
+    let position = DVec3::from_array(c.position);
+    let forward = match c.look_at {
+        Some(t) => (DVec3::from_array(t) - position).normalize(),
+        None => direction_from_bearing(
+            c.yaw_deg.unwrap_or(crate::Scene::DEFAULT_YAW_DEG),
+            c.pitch_deg.unwrap_or(crate::Scene::DEFAULT_PITCH_DEG),
+        ),
+    };
+    Camera::from_forward(position, forward, c.fov_deg, c.width, c.height)
 }
 
 #[cfg(test)]
@@ -90,7 +48,7 @@ mod tests {
     fn bearing_90_is_east_and_right_of_north_is_east() {
         assert!((direction_from_bearing(90.0, 0.0) - DVec3::X).length() < UNIT_VECTOR_ROUNDING);
         let c = CameraConfig { yaw_deg: Some(0.0), pitch_deg: Some(0.0), ..CameraConfig::default() };
-        let cam = Camera::from_config(&c);
+        let cam = from_config(&c);
         assert!((cam.forward - DVec3::NEG_Z).length() < UNIT_VECTOR_ROUNDING);
         assert!((cam.right - DVec3::X).length() < UNIT_VECTOR_ROUNDING);
         assert!(

@@ -880,7 +880,7 @@ impl World {
 
         let discs =
             (SunDisc::new(sky.sun().angular_radius)?, sky.moon().map(|m| SunDisc::new(m.angular_radius)).transpose()?);
-        let camera = Camera::from_config(&scene.camera);
+        let camera = crate::camera::from_config(&scene.camera);
         let exposure_ev = scene.output.exposure_ev;
         let trace = TraceOptions {
             method: Method::Directional,

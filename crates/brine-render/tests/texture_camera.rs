@@ -1,7 +1,7 @@
-//! brine-texture's `Pinhole` is documented as a copy of brine-render's `Camera` (brine-texture does
-//! not depend on the renderer): for the same yaw, pitch, field of view and image size both give the
-//! same frame and the same ray through every pixel, so `brine texture` and `brine render` frame a
-//! scene identically.
+//! brine-render's `Camera` is brine-texture's `Pinhole`, built from a scene's `[camera]` by
+//! `camera::from_config` and by `brine texture` from its angles (`Pinhole::from_angles`): for the
+//! same yaw, pitch, field of view and image size both routes give the same frame and the same ray
+//! through every pixel, so `brine texture` and `brine render` frame a scene identically.
 
 use brine_render::camera::Camera;
 use brine_render::scene::CameraConfig;
@@ -29,7 +29,7 @@ fn both(position: [f64; 3], yaw_deg: f64, pitch_deg: f64, fov_deg: f64, width: u
         height,
         spp: 1,
     };
-    let render = Camera::from_config(&config);
+    let render = brine_render::camera::from_config(&config);
     let texture =
         Pinhole::from_angles(DVec3::from_array(position), yaw_deg, pitch_deg, fov_deg, width, height).unwrap();
     (render, texture)

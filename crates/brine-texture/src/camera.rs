@@ -1,7 +1,6 @@
-//! The pinhole camera of the renderer (brine-render's `Camera`), described here so that
-//! brine-texture does not depend on the renderer: y up, compass-bearing yaw, pitch, vertical
-//! field of view. That both give the same ray through every pixel (to 10⁻¹²) is tested in
-//! `crates/brine-render/tests/texture_camera.rs`.
+//! The pinhole camera of Brine (brine-render's `Camera` is this type): y up, compass-bearing
+//! yaw, pitch, vertical field of view. It lives here so that brine-texture does not depend on
+//! the renderer.
 
 use glam::DVec3;
 
@@ -47,8 +46,8 @@ impl Pinhole {
     /// [`TextureError::OutOfRange`] naming the first bad argument.
     ///
     /// # References
-    /// brine-render's `Camera::from_config` (the same frame, tested ray for ray in
-    /// `crates/brine-render/tests/texture_camera.rs`).
+    /// brine-render's `camera::from_config` builds the same frame from a scene's `[camera]`
+    /// (tested ray for ray in `crates/brine-render/tests/texture_camera.rs`).
     pub fn from_angles(
         position: DVec3,
         yaw_deg: f64,
@@ -67,10 +66,24 @@ impl Pinhole {
         check("camera.height", f64::from(height), (1..=16384).contains(&height), "[1, 16384] px")?;
         let (b, e) = (yaw_deg.to_radians(), pitch_deg.to_radians());
         let forward = DVec3::new(b.sin() * e.cos(), e.sin(), -b.cos() * e.cos());
+        Ok(Self::from_forward(position, forward, fov_deg, width, height))
+    }
+
+    /// The camera at `position` looking along the unit vector `forward` (checked arguments):
+    /// `right = forward × world_up` normalised (`world_up = y`, or `−z` looking straight up or
+    /// down, so that north is the image's up), `up = right × forward`.
+    ///
+    /// # Arguments
+    /// - `position`: eye (m), finite; `forward`: unit view direction.
+    /// - `fov_deg`: vertical field of view (°), `(0, 180)`.
+    /// - `width`, `height`: image size (pixels), `≥ 1`.
+    pub fn from_forward(position: DVec3, forward: DVec3, fov_deg: f64, width: u32, height: u32) -> Self {
+        debug_assert!((forward.length() - 1.0).abs() < 1e-9 && fov_deg > 0.0 && fov_deg < 180.0);
+        debug_assert!(width >= 1 && height >= 1);
         let world_up = if forward.cross(DVec3::Y).length_squared() < 1e-12 { DVec3::NEG_Z } else { DVec3::Y };
         let right = forward.cross(world_up).normalize();
         let up = right.cross(forward);
-        Ok(Self { position, forward, right, up, tan_half_fov: (0.5 * fov_deg.to_radians()).tan(), width, height })
+        Self { position, forward, right, up, tan_half_fov: (0.5 * fov_deg.to_radians()).tan(), width, height }
     }
 
     /// Unit direction through the image point `(x, y)` in pixels (`(0, 0)` the top-left corner,

@@ -801,7 +801,7 @@ mod tests {
         assert!(e.message.contains("cannot be combined"), "{e}");
         assert_eq!(e.line, Some(2));
         // Without look_at and angles the default view is unchanged.
-        let cam = crate::camera::Camera::from_config(&Scene::default().camera);
+        let cam = crate::camera::from_config(&Scene::default().camera);
         let want = crate::camera::direction_from_bearing(Scene::DEFAULT_YAW_DEG, Scene::DEFAULT_PITCH_DEG);
         assert!((cam.forward - want).length() < 1e-12);
     }
