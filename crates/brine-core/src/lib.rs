@@ -38,6 +38,47 @@ pub fn lattice_floor(x: f64) -> f64 {
     if t > x { t - 1.0 } else { t }
 }
 
+/// A model parameter outside its documented domain: its name (as in the docs, with its unit
+/// suffix), the offending value and the accepted range in words, with the unit. Every model
+/// crate's error type wraps it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OutOfRange {
+    /// Parameter name.
+    pub name: &'static str,
+    /// Offending value.
+    pub value: f64,
+    /// Accepted range, in words, with the unit.
+    pub range: &'static str,
+}
+
+impl std::fmt::Display for OutOfRange {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{} = {} is out of range: expected {}", self.name, self.value, self.range)
+    }
+}
+
+impl std::error::Error for OutOfRange {}
+
+/// `Ok(value)` if `ok` and `value` is finite, else the [`OutOfRange`] naming the parameter: the
+/// one check every model constructor makes.
+///
+/// # Errors
+/// [`OutOfRange`] with `name`, `value` and `range`.
+#[inline]
+pub fn check(name: &'static str, value: f64, ok: bool, range: &'static str) -> Result<f64, OutOfRange> {
+    require(ok && value.is_finite(), name, value, range)
+}
+
+/// `Ok(value)` if `ok` (infinite values allowed, for ranges that include them), else the
+/// [`OutOfRange`] naming the parameter.
+///
+/// # Errors
+/// [`OutOfRange`] with `name`, `value` and `range`.
+#[inline]
+pub fn require(ok: bool, name: &'static str, value: f64, range: &'static str) -> Result<f64, OutOfRange> {
+    if ok { Ok(value) } else { Err(OutOfRange { name, value, range }) }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -53,5 +94,18 @@ mod tests {
             }
         }
         assert_eq!(lattice_floor(-1e15 - 0.5), (-1e15f64 - 0.5).floor());
+    }
+
+    #[test]
+    fn checks_name_the_parameter_and_refuse_non_finite_values() {
+        assert_eq!(check("u10_m_s", 5.0, true, "[0, 60] m/s"), Ok(5.0));
+        let e = check("u10_m_s", f64::NAN, true, "[0, 60] m/s").unwrap_err();
+        assert_eq!(e.name, "u10_m_s");
+        assert_eq!(
+            check("u10_m_s", 70.0, false, "[0, 60] m/s").unwrap_err().to_string(),
+            "u10_m_s = 70 is out of range: expected [0, 60] m/s"
+        );
+        assert_eq!(require(true, "t_max", f64::INFINITY, "(t_min, ∞] m"), Ok(f64::INFINITY));
+        assert!(check("t_max", f64::INFINITY, true, "(t_min, ∞] m").is_err());
     }
 }

@@ -3,16 +3,9 @@
 /// A bad input to the ephemeris.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum EphemError {
-    /// A parameter is outside its range.
-    #[error("{name} = {value} is out of range: expected {range}")]
-    OutOfRange {
-        /// Parameter name with its unit suffix.
-        name: &'static str,
-        /// Offending value.
-        value: f64,
-        /// Accepted range, in words.
-        range: &'static str,
-    },
+    /// A parameter outside its documented domain (its name, value and range).
+    #[error(transparent)]
+    OutOfRange(#[from] brine_core::OutOfRange),
     /// A time that cannot be parsed or used.
     #[error("time {input:?}: {message}")]
     Time {
@@ -23,6 +16,7 @@ pub enum EphemError {
     },
 }
 
+/// `Ok(value)` if `ok` and `value` is finite, else [`EphemError::OutOfRange`] (brine-core's `check`).
 pub(crate) fn check(name: &'static str, value: f64, ok: bool, range: &'static str) -> Result<f64, EphemError> {
-    if ok && value.is_finite() { Ok(value) } else { Err(EphemError::OutOfRange { name, value, range }) }
+    Ok(brine_core::check(name, value, ok, range)?)
 }

@@ -244,7 +244,10 @@ mod tests {
         // the parameter, its value and its range in the message.
         for (tw, ta, dt) in [(40.0, 0.0, 40.0), (-2.0, -60.0, 58.0), (0.0, 45.0, -45.0), (10.0, 40.5, -30.5)] {
             let e = WhitecapLaw::monahan_1986_from_temperatures(tw, ta).unwrap_err();
-            assert_eq!(e, FoamError::OutOfRange { name: "delta_t_c", value: dt, range: e_range(&e) });
+            assert_eq!(
+                e,
+                FoamError::OutOfRange(brine_core::OutOfRange { name: "delta_t_c", value: dt, range: e_range(&e) })
+            );
             let msg = e.to_string();
             assert!(
                 msg.contains("delta_t_c") && msg.contains("[-30, 30]") && msg.contains("t_water_c − t_air_c"),
@@ -263,7 +266,7 @@ mod tests {
 
     /// The `range` text of an [`FoamError::OutOfRange`].
     fn e_range(e: &FoamError) -> &'static str {
-        let FoamError::OutOfRange { range, .. } = e;
+        let FoamError::OutOfRange(brine_core::OutOfRange { range, .. }) = e;
         range
     }
 

@@ -145,11 +145,11 @@ impl FoamHistory {
         )?;
         let count = (ratio * tau / step).ceil() as usize + 1;
         if count > MAX_HISTORY_SAMPLES {
-            return Err(FoamError::OutOfRange {
+            return Err(FoamError::OutOfRange(brine_core::OutOfRange {
                 name: "step_s",
                 value: step,
                 range: "at least length_in_decay_times · decay_time_s / 255 s (at most 256 instants)",
-            });
+            }));
         }
         let length = step * (count - 1) as f64;
         let mut history = Self { tau, tau_r: tau, step, length, count, drift: params.drift_m_s };

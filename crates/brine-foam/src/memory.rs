@@ -287,11 +287,11 @@ impl FoamMemory {
         check("windrow_share", params.windrow_share, (0.0..1.0).contains(&params.windrow_share), "[0, 1)")?;
         let count = (ratio * tau / step).ceil() as usize + 1;
         if count > MAX_MEMORY_INSTANTS {
-            return Err(FoamError::OutOfRange {
+            return Err(FoamError::OutOfRange(brine_core::OutOfRange {
                 name: "step_s",
                 value: step,
                 range: "at least length_in_decay_times · decay_time_s / 63 s (at most 64 instants)",
-            });
+            }));
         }
         let mut patches = FoamNoise::new(1.0, params.patch_wavelength_m, NOISE_OCTAVES, params.seed)?;
         let mut edges = FoamNoise::new(1.0, params.edge_wavelength_m, NOISE_OCTAVES, params.seed ^ 0x5eed_ed9e)?;
@@ -717,8 +717,8 @@ mod tests {
     #[test]
     fn bad_parameters_are_named() {
         let e = FoamMemory::new(&FoamMemoryParams { streak_stretch: 0.5, ..FoamMemoryParams::default() }, 0.4);
-        assert!(matches!(e, Err(FoamError::OutOfRange { name: "streak_stretch", .. })));
+        assert!(matches!(e, Err(FoamError::OutOfRange(brine_core::OutOfRange { name: "streak_stretch", .. }))));
         let e = FoamMemory::new(&FoamMemoryParams { step_s: 10.0, ..FoamMemoryParams::default() }, 0.4);
-        assert!(matches!(e, Err(FoamError::OutOfRange { name: "step_s", .. })));
+        assert!(matches!(e, Err(FoamError::OutOfRange(brine_core::OutOfRange { name: "step_s", .. }))));
     }
 }

@@ -129,11 +129,11 @@ impl FoamNoise {
     /// # Errors
     /// [`FoamError::OutOfRange`] if `p1` and `p2` are parallel (no torus).
     pub fn periodic(mut self, p1: [i64; 2], p2: [i64; 2]) -> Result<Self, FoamError> {
-        self.period = Some(CellPeriod::new(p1, p2).ok_or(FoamError::OutOfRange {
+        self.period = Some(CellPeriod::new(p1, p2).ok_or(FoamError::OutOfRange(brine_core::OutOfRange {
             name: "noise_period",
             value: 0.0,
             range: "two independent integer period vectors",
-        })?);
+        }))?);
         Ok(self)
     }
 
@@ -165,8 +165,7 @@ impl FoamNoise {
         let (xs, zs) = (x / self.wavelength, z / self.wavelength);
         for o in 0..self.octaves {
             let (up, down) = (f64::from(1u32 << o), libm::ldexp(1.0, -(o as i32)));
-            let fade =
-                if footprint_m > 0.0 { smoothstep(1.0, 1.5, self.wavelength * down / footprint_m) } else { 1.0 };
+            let fade = if footprint_m > 0.0 { smoothstep(1.0, 1.5, self.wavelength * down / footprint_m) } else { 1.0 };
             if fade <= 0.0 {
                 break; // Later octaves are shorter still.
             }
@@ -313,7 +312,11 @@ mod tests {
             for o in 0..4 {
                 let (i0, j0) = per.reduce(i, j, o);
                 for (di, dj) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
-                    assert_eq!(per.step(i0, j0, di, dj, o), per.reduce(i + di, j + dj, o), "({i}, {j}) + ({di}, {dj}), octave {o}");
+                    assert_eq!(
+                        per.step(i0, j0, di, dj, o),
+                        per.reduce(i + di, j + dj, o),
+                        "({i}, {j}) + ({di}, {dj}), octave {o}"
+                    );
                 }
             }
         }

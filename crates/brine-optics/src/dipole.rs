@@ -300,7 +300,11 @@ impl LiYingParameters {
             1 => Ok(Self { sigma_a: [0.7, 0.9, 1.4], sigma_s, phi: 1.0, g_eta: Some((0.5, 0.74)) }),
             2 => Ok(Self { sigma_a: [0.12, 0.89, 1.2], sigma_s, phi: 63.7, g_eta: None }),
             3 => Ok(Self { sigma_a: [0.12, 1.02, 1.2], sigma_s, phi: 63.7, g_eta: None }),
-            _ => Err(OpticsError::OutOfRange { name: "set", value: f64::from(set), range: "1, 2 or 3" }),
+            _ => Err(OpticsError::OutOfRange(brine_core::OutOfRange {
+                name: "set",
+                value: f64::from(set),
+                range: "1, 2 or 3",
+            })),
         }
     }
 

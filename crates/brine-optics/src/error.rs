@@ -3,16 +3,9 @@
 /// An optical parameter outside its documented domain.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum OpticsError {
-    /// A parameter is outside its range.
-    #[error("{name} = {value} is out of range: expected {range}")]
-    OutOfRange {
-        /// Parameter name with its unit suffix.
-        name: &'static str,
-        /// Offending value.
-        value: f64,
-        /// Accepted range, in words.
-        range: &'static str,
-    },
+    /// A parameter outside its documented domain (its name, value and range).
+    #[error(transparent)]
+    OutOfRange(#[from] brine_core::OutOfRange),
     /// A name that is not one of the accepted ones.
     #[error("{name} = {value:?} is not known: expected {expected}")]
     UnknownName {
@@ -25,6 +18,7 @@ pub enum OpticsError {
     },
 }
 
+/// `Ok(value)` if `ok` and `value` is finite, else [`OpticsError::OutOfRange`] (brine-core's `check`).
 pub(crate) fn check(name: &'static str, value: f64, ok: bool, range: &'static str) -> Result<f64, OpticsError> {
-    if ok && value.is_finite() { Ok(value) } else { Err(OpticsError::OutOfRange { name, value, range }) }
+    Ok(brine_core::check(name, value, ok, range)?)
 }

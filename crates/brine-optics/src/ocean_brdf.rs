@@ -366,7 +366,11 @@ impl SunDisc {
     /// As [`Self::new`].
     pub fn with_rings(angular_radius_rad: f64, rings: usize) -> Result<Self, OpticsError> {
         if !(1..=Self::MAX_RINGS).contains(&rings) {
-            return Err(OpticsError::OutOfRange { name: "rings", value: rings as f64, range: "[1, 64]" });
+            return Err(OpticsError::OutOfRange(brine_core::OutOfRange {
+                name: "rings",
+                value: rings as f64,
+                range: "[1, 64]",
+            }));
         }
         Self::build(angular_radius_rad, rings, rings)
     }

@@ -3,18 +3,12 @@
 /// A sky parameter outside its documented domain.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SkyError {
-    /// A parameter is outside its range.
-    #[error("{name} = {value} is out of range: expected {range}")]
-    OutOfRange {
-        /// Parameter name with its unit suffix.
-        name: &'static str,
-        /// Offending value.
-        value: f64,
-        /// Accepted range, in words.
-        range: &'static str,
-    },
+    /// A parameter outside its documented domain (its name, value and range).
+    #[error(transparent)]
+    OutOfRange(#[from] brine_core::OutOfRange),
 }
 
+/// `Ok(value)` if `ok` and `value` is finite, else [`SkyError::OutOfRange`] (brine-core's `check`).
 pub(crate) fn check(name: &'static str, value: f64, ok: bool, range: &'static str) -> Result<f64, SkyError> {
-    if ok && value.is_finite() { Ok(value) } else { Err(SkyError::OutOfRange { name, value, range }) }
+    Ok(brine_core::check(name, value, ok, range)?)
 }

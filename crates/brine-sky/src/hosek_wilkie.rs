@@ -65,10 +65,12 @@ impl HosekWilkieSky {
         let elevation32 = (elevation as f32).clamp(0.0, std::f32::consts::FRAC_PI_2);
         let params = HwParams { elevation: elevation32, turbidity: turbidity as f32, albedo: [albedo as f32; 3] };
         // The port checks the same ranges (in single precision), so it cannot refuse them.
-        let state = SkyState::new(&params).map_err(|_| SkyError::OutOfRange {
-            name: "turbidity",
-            value: turbidity,
-            range: "[1, 10], sun elevation [0, 90]°, albedo [0, 1]",
+        let state = SkyState::new(&params).map_err(|_| {
+            SkyError::OutOfRange(brine_core::OutOfRange {
+                name: "turbidity",
+                value: turbidity,
+                range: "[1, 10], sun elevation [0, 90]°, albedo [0, 1]",
+            })
         })?;
         Ok(Self { state, turbidity, albedo, sun_direction: d })
     }

@@ -47,22 +47,15 @@ pub enum TextureError {
         /// Its single intensity level, `[0, 255]`.
         level: f64,
     },
-    /// A parameter outside its range.
-    #[error("{name} = {value} is out of range ({range})")]
-    OutOfRange {
-        /// Parameter name.
-        name: &'static str,
-        /// Offending value.
-        value: f64,
-        /// Accepted range, with unit.
-        range: &'static str,
-    },
+    /// A parameter outside its documented domain (its name, value and range).
+    #[error(transparent)]
+    OutOfRange(#[from] brine_core::OutOfRange),
     /// Texel data of the wrong length or with a value outside `[0, 255]`.
     #[error("{0}")]
     BadTexels(String),
 }
 
-/// `Ok(value)` if `ok`, else [`TextureError::OutOfRange`].
+/// `Ok(value)` if `ok`, else [`TextureError::OutOfRange`] (brine-core's `require`).
 pub(crate) fn check(name: &'static str, value: f64, ok: bool, range: &'static str) -> Result<f64, TextureError> {
-    if ok { Ok(value) } else { Err(TextureError::OutOfRange { name, value, range }) }
+    Ok(brine_core::require(ok, name, value, range)?)
 }

@@ -221,7 +221,7 @@ impl TracedScene {
     /// [`TextureError::OutOfRange`] for a parameter out of range (the sky's and the BRDF's
     /// messages are passed through).
     pub fn new(params: &TracedParams, ocean: &PhotoOcean) -> Result<Self, TextureError> {
-        let bad = |name, value, range| TextureError::OutOfRange { name, value, range };
+        let bad = |name, value, range| TextureError::OutOfRange(brine_core::OutOfRange { name, value, range });
         check(
             "bed_depth_m",
             params.bed_depth_m,

@@ -69,15 +69,8 @@ impl Method {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum TraceOptionsError {
     /// A parameter is outside its range.
-    #[error("trace option {name} = {value} is out of range ({range})")]
-    OutOfRange {
-        /// Parameter name.
-        name: &'static str,
-        /// Offending value.
-        value: f64,
-        /// Accepted range.
-        range: &'static str,
-    },
+    #[error("trace option {0}")]
+    OutOfRange(#[from] brine_core::OutOfRange),
 }
 
 /// Options of [`crate::trace`].
@@ -140,9 +133,7 @@ impl TraceOptions {
     /// # Errors
     /// [`TraceOptionsError::OutOfRange`] naming the first bad field.
     pub fn validate(&self) -> Result<(), TraceOptionsError> {
-        let check = |name, value: f64, ok: bool, range| {
-            if ok { Ok(()) } else { Err(TraceOptionsError::OutOfRange { name, value, range }) }
-        };
+        let check = |name, value: f64, ok: bool, range| brine_core::require(ok, name, value, range).map(|_| ());
         let nonneg = |v: f64| v >= 0.0 && v.is_finite();
         let pos = |v: f64| v > 0.0 && v.is_finite();
         check("t_min", self.t_min, nonneg(self.t_min), "[0, ∞) m")?;
@@ -154,7 +145,7 @@ impl TraceOptions {
         check("tolerance_relative", self.tolerance_relative, nonneg(self.tolerance_relative), "[0, ∞)")?;
         check("march_step", self.march_step, nonneg(self.march_step), "[0, ∞) m")?;
         check("relaxation", self.relaxation, (1.0..2.0).contains(&self.relaxation), "[1, 2)")?;
-        check("footprint_angle", self.footprint_angle, nonneg(self.footprint_angle), "[0, ∞) rad")
+        Ok(check("footprint_angle", self.footprint_angle, nonneg(self.footprint_angle), "[0, ∞) rad")?)
     }
 
     /// The minimum step `h(t) = max(min_step, min_step_relative · t)` (m).

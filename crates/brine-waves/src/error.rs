@@ -3,16 +3,9 @@
 /// A wave-model parameter outside its documented domain.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum WaveError {
-    /// A parameter is outside its range.
-    #[error("{name} = {value} is out of range: expected {range}")]
-    OutOfRange {
-        /// Parameter name, as in the docs (with its unit suffix).
-        name: &'static str,
-        /// Offending value.
-        value: f64,
-        /// Accepted range, in words.
-        range: &'static str,
-    },
+    /// A parameter outside its documented domain (its name, value and range).
+    #[error(transparent)]
+    OutOfRange(#[from] brine_core::OutOfRange),
     /// The spectrum holds no energy in the requested band.
     #[error("the spectrum has no energy between {omega_min} and {omega_max} rad/s")]
     EmptyBand {
@@ -46,7 +39,7 @@ pub enum WaveError {
     },
 }
 
-/// Returns `Ok(value)` if `ok`, else the [`WaveError::OutOfRange`] naming the parameter.
+/// `Ok(value)` if `ok` and `value` is finite, else [`WaveError::OutOfRange`] (brine-core's `check`).
 pub(crate) fn check(name: &'static str, value: f64, ok: bool, range: &'static str) -> Result<f64, WaveError> {
-    if ok && value.is_finite() { Ok(value) } else { Err(WaveError::OutOfRange { name, value, range }) }
+    Ok(brine_core::check(name, value, ok, range)?)
 }

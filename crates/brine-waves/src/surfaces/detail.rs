@@ -337,7 +337,10 @@ mod tests {
             DetailOptions { resolution: 100, ..good },
             DetailOptions { resolution: 4096, ..good },
         ] {
-            assert!(matches!(DetailWaves::new(&s, &d, &bad), Err(WaveError::OutOfRange { .. })), "{bad:?}");
+            assert!(
+                matches!(DetailWaves::new(&s, &d, &bad), Err(WaveError::OutOfRange(brine_core::OutOfRange { .. }))),
+                "{bad:?}"
+            );
         }
     }
 }
