@@ -82,6 +82,7 @@ mod noise;
 mod radiance;
 mod scattering;
 mod spray;
+mod tiling;
 mod windrows;
 
 pub use coverage::{

@@ -85,6 +85,7 @@
 //!   2008, JPO 38:1296–1312 (the speed of breaking crests).
 
 mod bessel;
+mod breaking;
 mod calibration;
 mod coverage;
 mod erf;
