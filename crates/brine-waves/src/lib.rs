@@ -121,11 +121,10 @@ pub use fft::slopes::{FftSlopeFilter, FilteredSlopes};
 pub use fft::spectrum::directional_spectrum;
 pub use fit::extraction::{AmplitudeRule, FrequencyBin, SeaComponent, SteepnessLimit, fit_sea_state, frequency_bins};
 pub use fit::extraction::{FitOptions, FrequencyPartition, fit_trochoids};
+pub use fit::lattice::TileLattice;
 pub use fit::set::TrochoidSet;
 pub use fit::trochoid::{MAX_STEEPNESS, Trochoid, solve_trochoid_phase};
-pub use sea::{
-    FrameSurface, Ocean, RayTile, SINE_DETAIL_WAVELENGTH_M, SeaFrame, SurfaceSample, TileLattice, TracedSea,
-};
+pub use sea::{FrameSurface, Ocean, RayTile, SINE_DETAIL_WAVELENGTH_M, SeaFrame, SurfaceSample, TracedSea};
 pub use spectra::dispersion::{Dispersion, ELFOUHAILY_K_M, SEA_WATER_DENSITY, SEA_WATER_SURFACE_TENSION};
 pub use spectra::dispersion::{G, omega_deep_water, wavenumber_deep_water};
 pub use spectra::elfouhaily::{Elfouhaily, ElfouhailySpreading};
