@@ -7,7 +7,7 @@
 //! `I − Σ (Qᵢ/kᵢ²) kᵢkᵢᵀ cos φᵢ` together, `φᵢ = kᵢ·u + offᵢ`. The sines and cosines are
 //! `wide`'s vector `sin_cos` (Cody–Waite reduction by `π/2` in three parts, then minimax
 //! polynomials: about 1 ulp for the phases here), so the sums agree with the scalar passes to
-//! rounding (`~10⁻¹⁶` relative per term; the test bound is derived in `gerstner.rs`). With SSE2
+//! rounding (`~10⁻¹⁶` relative per term; the test bound is derived in `surfaces/gerstner/mod.rs`). With SSE2
 //! (the baseline `x86_64` target) `f64x4` runs as two 2-lane halves.
 
 use glam::DVec2;

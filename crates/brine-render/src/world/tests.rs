@@ -1,0 +1,117 @@
+use super::*;
+
+/// The band ends where the spectrum's slope integral reaches the target (bisection to 10⁻¹⁸ in
+/// ln k); the grid's cells cut the band's ring corners and hold 1–5 % less than that integral
+/// (brine-waves' detail tests), which the BRDF keeps.
+const SCALES_SUM_REL: f64 = 0.06;
+
+/// Geometry, detail normals and BRDF share Cox & Munk's total: at 8, 12 and 16 m/s the traced
+/// waves' slope variance, the detail band's and the BRDF's unresolved one add up to it, and the
+/// detail band is not empty (the trochoid band stops far short of the total).
+#[test]
+fn the_three_scales_add_up_to_cox_and_munk() {
+    for wind in [8.0, 12.0, 16.0] {
+        let mut scene = Scene::default_scene();
+        scene.sea.wind_speed_m_s = wind;
+        let world = World::new(&scene).expect("a valid scene");
+        let (along, across) = world.set.slope_variances(scene.sea.wind_direction_deg.to_radians());
+        let detail = world.detail.as_ref().expect("a detail band").expected_slope_covariance();
+        let total = world.variance_total.sigma_x2() + world.variance_total.sigma_y2();
+        let unresolved = world.variance_unresolved.sigma_x2() + world.variance_unresolved.sigma_y2();
+        assert!(detail.x + detail.z > 0.1 * total, "{wind} m/s: detail {} of {total}", detail.x + detail.z);
+        approx::assert_relative_eq!(
+            along + across + detail.x + detail.z + unresolved,
+            total,
+            max_relative = SCALES_SUM_REL
+        );
+    }
+}
+
+/// The FFT sea has no detail band (its cascades reach the centimetre waves) but is read
+/// through the footprint; a calm has neither.
+#[test]
+fn detail_normals_belong_to_the_fitted_seas() {
+    let mut scene = Scene::default_scene();
+    scene.sea.surface = SurfaceKind::Fft;
+    let world = World::new(&scene).expect("a valid scene");
+    assert!(world.detail.is_none() && world.fft_slopes.is_some());
+    scene.sea.surface = SurfaceKind::Trochoids;
+    scene.sea.wind_speed_m_s = 0.0;
+    let world = World::new(&scene).expect("a valid scene");
+    assert!(world.detail.is_none() && world.fft_slopes.is_none());
+}
+
+/// At light wind the drawn sea holds no more slope than Cox & Munk measured: the fitted band
+/// and the FFT cascades stop where the spectrum reaches their total (at 2 m/s the trochoid
+/// band `[0.5, 12] ω_p` held 1.4× of it). The fitted set's waves are the band's discrete
+/// amplitudes and directions, not its integral.
+#[test]
+fn light_wind_seas_draw_no_more_slope_than_cox_and_munk() {
+    const DISCRETE_REL: f64 = 0.05;
+    for surface in [SurfaceKind::Trochoids, SurfaceKind::Fft] {
+        for wind in [2.0, 3.0] {
+            let mut scene = Scene::default_scene();
+            scene.sea.wind_speed_m_s = wind;
+            scene.sea.surface = surface;
+            let world = World::new(&scene).expect("a valid scene");
+            let drawn = match world.sea.surface() {
+                FrameSurface::Fft(frame) => {
+                    let c: DVec3 = frame.cascades().iter().map(|c| c.expected_slope_covariance()).sum();
+                    c.x + c.z
+                }
+                _ => {
+                    let (a, b) = world.set.slope_variances(0.0);
+                    a + b
+                }
+            };
+            let total = world.variance_total.sigma_x2() + world.variance_total.sigma_y2();
+            assert!(drawn <= total * (1.0 + DISCRETE_REL), "{surface:?} at {wind} m/s: drawn {drawn}, total {total}");
+            assert!(drawn > 0.5 * total, "{surface:?} at {wind} m/s: drawn {drawn}, total {total}");
+        }
+    }
+}
+
+/// Two temperatures at the ±30 °C envelope written in decimals differ by their rounding
+/// (12.7 − 42.7 = −30.000000000000004): the scene accepts them and so does the world.
+#[test]
+fn a_temperature_difference_at_the_envelope_builds_a_world() {
+    let scene = Scene::from_toml_str("[water]\ntemperature_c = 12.7\nair_temperature_c = 42.7\n", "envelope.toml")
+        .expect("a scene at the envelope");
+    let world = World::new(&scene);
+    assert!(world.is_ok(), "{:?}", world.err());
+}
+
+/// The sampling error of the mean white cover on 40 000 grid points whose white water comes in
+/// patches of a few metres (a few thousand independent patches) plus the calibration's
+/// (16 384–32 768 points): ≈ 5 % of `W` at 5 %; 15 % is three of them.
+const WHITE_WATER_REL_TOL: f64 = 0.15;
+
+/// Both surfaces' white water, as the renderer builds it, has Monahan's mean over the sea.
+#[test]
+fn white_water_on_both_surfaces_has_monahans_mean() {
+    for surface in ["trochoids", "fft"] {
+        let text = format!("[sea]\nsurface = \"{surface}\"\nwind_speed_m_s = 16.0\nseed = 4\n");
+        let world = World::new(&Scene::from_toml_str(&text, "ww.toml").unwrap()).unwrap();
+        let Some(ww) = &world.white_water else { panic!("{surface}: no white water at 16 m/s") };
+        let side = match ww {
+            WhiteWaterSea::Fft(m) => m.source().now().largest_tile(),
+            WhiteWaterSea::Trochoids(_) => 2000.0,
+        };
+        let target = match ww {
+            WhiteWaterSea::Fft(m) => m.target(),
+            WhiteWaterSea::Trochoids(m) => m.target(),
+        };
+        // Monahan & Ó Muircheartaigh 1980 at 16 m/s.
+        assert!((target - 3.84e-6 * 16f64.powf(3.41)).abs() < 1e-9);
+        let n = 200;
+        let mut sum = 0.0;
+        for a in 0..n {
+            for b in 0..n {
+                let u = DVec2::new((f64::from(a) + 0.5) / f64::from(n), (f64::from(b) + 0.5) / f64::from(n)) * side;
+                sum += ww.at(u, world.time, 0.0).white;
+            }
+        }
+        let mean = sum / f64::from(n * n);
+        assert!((mean / target - 1.0).abs() < WHITE_WATER_REL_TOL, "{surface}: mean {mean}, W {target}");
+    }
+}
