@@ -569,11 +569,12 @@ fn trochoid_sample(waves: &[crate::Trochoid], x: f64, z: f64, t: f64) -> Surface
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::{CosineTwoS, FftOptions, FitOptions, PiersonMoskowitz, Spectrum, Trochoid, WaveSurface, fit_trochoids};
 
-    fn set(u10: f64) -> TrochoidSet {
+    /// A 60-wave Pierson–Moskowitz set fitted at `u10` (m s⁻¹), for the surface's tests.
+    pub(crate) fn set(u10: f64) -> TrochoidSet {
         let pm = PiersonMoskowitz::from_u10(u10).unwrap();
         let spreading = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
         fit_trochoids(&pm, &spreading, 60, 7, &FitOptions::default()).unwrap()

@@ -107,13 +107,8 @@ fn snapped(w: &Trochoid, kx: f64, kz: f64, loop_period_s: Option<f64>) -> Result
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{CosineTwoS, FitOptions, Ocean, PiersonMoskowitz, Spectrum, fit_trochoids};
-
-    fn set(u10: f64) -> TrochoidSet {
-        let pm = PiersonMoskowitz::from_u10(u10).unwrap();
-        let spreading = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
-        fit_trochoids(&pm, &spreading, 60, 7, &FitOptions::default()).unwrap()
-    }
+    use crate::Ocean;
+    use crate::sea::tests::set;
 
     /// A snapped set repeats over its tile (and its loop), to rounding.
     #[test]

@@ -541,13 +541,17 @@ mod tests {
     /// f32 sums of ~100 terms of size ≤ 0.3, rotated up to 16 times: a few 10⁻⁶.
     const HISTORY_F32: f64 = 2e-5;
 
+    /// The statistics of a 100-wave Pierson–Moskowitz set fitted at `u10` (m s⁻¹).
+    fn fitted(u10: f64) -> JacobianStatistics {
+        use brine_waves::{CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, fit_trochoids};
+        let pm = PiersonMoskowitz::from_u10(u10).unwrap();
+        let spreading = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
+        JacobianStatistics::new(&fit_trochoids(&pm, &spreading, 100, 4, &FitOptions::default()).unwrap()).unwrap()
+    }
+
     #[test]
     fn the_history_follows_the_moments_along_the_path() {
-        use brine_waves::{CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, fit_trochoids};
-        let pm = PiersonMoskowitz::from_u10(14.0).unwrap();
-        let spreading = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
-        let set = fit_trochoids(&pm, &spreading, 100, 4, &FitOptions::default()).unwrap();
-        let stats = JacobianStatistics::new(&set).unwrap();
+        let stats = fitted(14.0);
         let (u0, t0, dt, v) = (DVec2::new(3.0, -7.0), 12.0, 0.5, DVec2::new(0.4, 0.15));
         for s in [0.0, 0.3, 2.0] {
             let mut out = [0.0; 16];
@@ -562,11 +566,7 @@ mod tests {
 
     #[test]
     fn the_fused_history_matches_the_separate_calls() {
-        use brine_waves::{CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, fit_trochoids};
-        let pm = PiersonMoskowitz::from_u10(16.0).unwrap();
-        let spreading = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
-        let set = fit_trochoids(&pm, &spreading, 100, 4, &FitOptions::default()).unwrap();
-        let stats = JacobianStatistics::new(&set).unwrap();
+        let stats = fitted(16.0);
         let (dt, v) = (0.25, DVec2::new(0.45, 0.16));
         let rotation = stats.history_rotation(dt, v);
         for (u, t) in [(DVec2::new(3.0, -7.0), 12.07), (DVec2::new(-812.5, 1203.25), 3599.9)] {
