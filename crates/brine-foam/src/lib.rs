@@ -23,6 +23,7 @@
 //! | `τ`, `τ_R` | [`FoamHistory`], [`FoamMemory`] | s | foam-area and brightness decay times |
 //! | `m(u)`, `θ(a)` | [`FoamMemory::survivals`] | 1 | uniform patch variable, survival threshold of foam of age `a` |
 //! | `A₀` | [`FOAM_DENSITY`] | 1 | share of the swept water that the foam left behind covers |
+//! | `m_L(u)`, `λ₀` | [`FoamLace`], [`LACE_CELL_M`] | 1, m | uniform lace variable, its coarsest cell |
 //! | `v` | [`FoamMemoryParams::drift_m_s`] | m s⁻¹ | foam drift relative to the water |
 //! | `r₈₀` | `r80_um` | µm | spray drop radius at 80 % humidity |
 //! | `dF/dr₈₀` | [`msd86_flux`] | m⁻² s⁻¹ µm⁻¹ | spray source function |
@@ -70,12 +71,14 @@
 //! - Callaghan A., Deane G., Stokes M. 2012, JGR 117, C09015 (foam decay times).
 //! - Monahan E. C. 1971, "Oceanic whitecaps", JPO 1:139–144 (decay time 3.85 s); Monahan E. C.,
 //!   Lu M. 1990, IEEE J. Oceanic Eng. 15(4):340–349 (stages A and B).
+//! - Worley S. 1996, "A cellular texture basis function", SIGGRAPH, 291–294 (the foam lace).
 //! - Wu J. 1983, "Sea-surface drift currents induced by wind and waves", JPO 13:1441–1451.
 
 mod coverage;
 mod error;
 mod extension;
 mod history;
+mod lace;
 mod medium;
 mod memory;
 mod noise;
@@ -91,6 +94,7 @@ pub use coverage::{
 pub use error::FoamError;
 pub use extension::{FoamExtension, FoamExtensionParams, SurfaceStatistics};
 pub use history::{FoamHistory, FoamHistoryParams, FoamSample, FoamState, MAX_HISTORY_SAMPLES};
+pub use lace::{FoamLace, LACE_CELL_M, LACE_THICKNESS_CONTRAST};
 pub use medium::{ExtinctionEfficiency, SprayMedium, SprayParams};
 pub use memory::{
     FOAM_DENSITY, FoamMemory, FoamMemoryParams, MAX_MEMORY_INSTANTS, MONAHAN_1971_DECAY_TIME_S, MemorySample,
@@ -103,4 +107,4 @@ pub use scattering::{SprayLighting, SprayRay, SprayScattering, henyey_greenstein
 pub use spray::{
     AIR_VISCOSITY, G, MSD86_RADIUS_RANGE_UM, SEA_WATER_DENSITY, msd86_flux, spray_foam_factor, stokes_settling_velocity,
 };
-pub use windrows::{WINDROW_SHARE, WINDROW_SPACING_M, WINDROW_STRETCH, Windrows};
+pub use windrows::{WINDROW_DENSITY, WINDROW_SHARE, WINDROW_SPACING_M, WINDROW_STRETCH, Windrows};

@@ -5,6 +5,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 use crate::error::{FoamError, check};
+use crate::lace::{FoamLace, LACE_CELL_M};
 use crate::noise::{FoamNoise, smoothstep};
 pub use crate::tiling::{PeriodicPatches, periodic_patches};
 use crate::windrows::{
@@ -44,6 +45,9 @@ const NOISE_OCTAVES: u32 = 5;
 /// ±2 % of the area quantile instead of aliasing.
 const EDGE_SOFTNESS: f64 = 0.02;
 
+/// Clear share `1 − a′` below which a laced residual is scaled rather than solved from the union.
+const WELL_CONDITIONED: f64 = 1e-6;
+
 /// Survivals below this are skipped (the source is not evaluated there).
 const NEGLIGIBLE_SURVIVAL: f64 = 1e-4;
 
@@ -74,6 +78,9 @@ pub struct FoamMemoryParams {
     /// `[0, 1)`; default 0 (none), [`WINDROW_SHARE`] from Beaufort 8 in
     /// [`FoamMemoryParams::for_wind`].
     pub windrow_share: f64,
+    /// First-octave cell of the lace the foam is drawn as ([`FoamLace`], m), `[0, 100]`;
+    /// 0 draws the cover as a veil of its opacity. Default [`LACE_CELL_M`].
+    pub lace_cell_m: f64,
     /// Seed of the noises.
     pub seed: u64,
     /// A square tile (m, `(0, 10⁶]`) over which the foam must repeat (a baked, tileable map), or
@@ -94,6 +101,7 @@ impl Default for FoamMemoryParams {
             wind_direction_rad: 0.0,
             edge_wavelength_m: 1.0,
             windrow_share: 0.0,
+            lace_cell_m: LACE_CELL_M,
             seed: 1,
             tile_m: None,
         }
@@ -148,7 +156,9 @@ pub struct WhiteWater {
     pub residual: f64,
     /// White cover `1 − (1 − active)(1 − residual)`, `[0, 1]`.
     pub white: f64,
-    /// Reflectance of the white water relative to fresh foam, `(0, 1]` (1 where there is none).
+    /// Reflectance of the white water relative to the mean of fresh foam, `(0, 1]`, up to
+    /// `1 +` [`crate::LACE_THICKNESS_CONTRAST`] where thick foam in a lace is brighter than the mean (1
+    /// where there is none). Where it is below 1 the water shows through (ageing foam thins).
     pub brightness: f64,
 }
 
@@ -204,6 +214,7 @@ pub struct FoamMemory {
     edge_std: f64,
     windrow_share: f64,
     windrows: Option<Windrows>,
+    lace: Option<FoamLace>,
 }
 
 impl FoamMemory {
@@ -226,6 +237,12 @@ impl FoamMemory {
         check("wind_direction_rad", params.wind_direction_rad, true, "finite rad")?;
         check("efficiency", efficiency, efficiency > 0.0 && efficiency < 1.0, "(0, 1)")?;
         check("windrow_share", params.windrow_share, (0.0..1.0).contains(&params.windrow_share), "[0, 1)")?;
+        check("lace_cell_m", params.lace_cell_m, (0.0..=100.0).contains(&params.lace_cell_m), "[0, 100] m")?;
+        let lace = if params.lace_cell_m > 0.0 {
+            Some(FoamLace::new(params.lace_cell_m, params.tile_m, params.seed ^ 0x1ace)?)
+        } else {
+            None
+        };
         let count = (ratio * tau / step).ceil() as usize + 1;
         if count > MAX_MEMORY_INSTANTS {
             return Err(FoamError::OutOfRange(brine_core::OutOfRange {
@@ -297,6 +314,7 @@ impl FoamMemory {
             edge_std: (e2 / QUANTILE_SAMPLES as f64).sqrt().max(f64::MIN_POSITIVE),
             windrow_share: params.windrow_share,
             windrows,
+            lace,
         })
     }
 
@@ -331,6 +349,43 @@ impl FoamMemory {
             white,
             brightness: brightness.clamp(0.0, 1.0),
         }
+    }
+
+    /// Cover of the foam streaks at rest position `(x, z)` for a Gaussian footprint `σ` (m) and
+    /// mean cover `q` ([`Windrows::cover_with_density`]): lines of lace of density
+    /// `1 − (1 − ρ) k_L(σ)` ([`crate::WINDROW_DENSITY`] where the lace's filaments are resolved,
+    /// solid lines where they are not), 0 without streaks.
+    pub fn windrow_cover(&self, x: f64, z: f64, sigma_m: f64, mean_cover: f64) -> f64 {
+        let Some(w) = &self.windrows else { return 0.0 };
+        let k = self.lace.as_ref().map_or(0.0, |l| l.resolved_share(sigma_m));
+        w.cover_with_density(x, z, sigma_m, mean_cover, 1.0 - (1.0 - crate::WINDROW_DENSITY) * k)
+    }
+
+    /// The lace the white water is drawn as, when its cell is above 0.
+    pub fn lace(&self) -> Option<&FoamLace> {
+        self.lace.as_ref()
+    }
+
+    /// White water drawn as lace ([`FoamLace::cover`]) at rest position `(x, z)` for a Gaussian
+    /// footprint `σ` (m): the white cover `w` becomes `c`, of the same area mean; the active
+    /// cover scales with it, `a′ = a c/w`, and the residual is what makes
+    /// `1 − (1 − a′)(1 − residual′) = c` (where `a′` is within 10⁻⁶ of 1 the residual scales with `c/w` instead); the brightness takes the lace's thickness shading
+    /// ([`FoamLace::cover_and_shade`], mean 1 over the foam). Unchanged without a lace.
+    pub fn laced(&self, ww: WhiteWater, x: f64, z: f64, sigma_m: f64) -> WhiteWater {
+        let Some(lace) = &self.lace else { return ww };
+        if ww.white <= 0.0 {
+            return ww;
+        }
+        let (c, shade) = lace.cover_and_shade(x, z, sigma_m, ww.white);
+        let active = (ww.active * c / ww.white).min(c);
+        // `(c − a′)/(1 − a′)`; where the active cover is within 10⁻⁶ of 1 the union is white
+        // whatever the residual, and the quotient is ill-conditioned: the residual scales.
+        let residual = if 1.0 - active > WELL_CONDITIONED {
+            ((c - active) / (1.0 - active)).clamp(0.0, 1.0)
+        } else {
+            (ww.residual * c / ww.white).min(1.0)
+        };
+        WhiteWater { active, residual, white: c, brightness: ww.brightness * shade }
     }
 
     /// `τ`, the decay time of the foam area (s).

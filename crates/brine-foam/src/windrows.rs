@@ -21,14 +21,46 @@ pub(crate) struct StretchedUniform {
     along: [f64; 2],
     stretch: f64,
     noise: FoamNoise,
+    cdf: EmpiricalCdf,
+}
+
+/// The empirical distribution function of a field's values, tabulated at [`QUANTILES`]
+/// quantiles and read by linear interpolation: it maps the field to a variable uniform on
+/// `[0, 1]` over the sea (to sampling).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub(crate) struct EmpiricalCdf {
     quantiles: Vec<f64>,
+}
+
+impl EmpiricalCdf {
+    /// The distribution of `values` (any order; at least one).
+    pub(crate) fn from_values(mut values: Vec<f64>) -> Self {
+        values.sort_by(f64::total_cmp);
+        let n = values.len();
+        Self { quantiles: (0..=QUANTILES).map(|i| values[(i * (n - 1)) / QUANTILES]).collect() }
+    }
+
+    /// `F(g) ∈ [0, 1]`.
+    pub(crate) fn uniform(&self, g: f64) -> f64 {
+        let q = &self.quantiles;
+        let i = q.partition_point(|&v| v < g);
+        if i == 0 {
+            return 0.0;
+        }
+        if i > QUANTILES {
+            return 1.0;
+        }
+        let (lo, hi) = (q[i - 1], q[i]);
+        let f = if hi > lo { (g - lo) / (hi - lo) } else { 0.5 };
+        ((i - 1) as f64 + f) / QUANTILES as f64
+    }
 }
 
 impl StretchedUniform {
     /// The noise `noise` stretched by `stretch` along the unit vector `along`, without its
     /// distribution yet ([`Self::tabulate`]).
     pub(crate) fn new(noise: FoamNoise, along: [f64; 2], stretch: f64) -> Self {
-        Self { along, stretch, noise, quantiles: Vec::new() }
+        Self { along, stretch, noise, cdf: EmpiricalCdf::default() }
     }
 
     /// The stretch along the wind.
@@ -38,10 +70,7 @@ impl StretchedUniform {
 
     /// Tabulates the distribution function from the values at `points`.
     pub(crate) fn tabulate(&mut self, points: &[(f64, f64)]) {
-        let mut g: Vec<f64> = points.iter().map(|&(x, z)| self.raw(x, z, 0.0)).collect();
-        g.sort_by(f64::total_cmp);
-        let n = g.len();
-        self.quantiles = (0..=QUANTILES).map(|i| g[(i * (n - 1)) / QUANTILES]).collect();
+        self.cdf = EmpiricalCdf::from_values(points.iter().map(|&(x, z)| self.raw(x, z, 0.0)).collect());
     }
 
     /// Tabulates the distribution function from [`QUANTILE_SAMPLES`] points of a square of
@@ -65,17 +94,7 @@ impl StretchedUniform {
 
     /// The uniform variable `m = F(g)` of a raw value `g` (empirical distribution function).
     pub(crate) fn uniform(&self, g: f64) -> f64 {
-        let q = &self.quantiles;
-        let i = q.partition_point(|&v| v < g);
-        if i == 0 {
-            return 0.0;
-        }
-        if i > QUANTILES {
-            return 1.0;
-        }
-        let (lo, hi) = (q[i - 1], q[i]);
-        let f = if hi > lo { (g - lo) / (hi - lo) } else { 0.5 };
-        ((i - 1) as f64 + f) / QUANTILES as f64
+        self.cdf.uniform(g)
     }
 
     /// `m` at `(x, z)` for a footprint `ℓ` (m).
@@ -113,22 +132,29 @@ pub const WINDROW_SPACING_M: f64 = 3.0;
 /// wind than across (Brine's choice; the streaks of a gale run for tens of metres).
 pub const WINDROW_STRETCH: f64 = 20.0;
 
+/// Share of a streak's area its foam covers, `ρ`: a streak is a line of lace (the foam memory's
+/// lace draws it as filaments), not a sheet (Brine's choice, as [`crate::FOAM_DENSITY`]). For a
+/// mean cover `q > ρ²` it is `√q`, so that the streaks never fill the sea.
+pub const WINDROW_DENSITY: f64 = 0.5;
+
 /// Octaves of the streak noise.
 const WINDROW_OCTAVES: u32 = 3;
 
-/// Softness of a streak's edge as a share of its cover `q`: the step at `m = q` is smoothed over
-/// `q(1 ± this)`, which keeps the area mean exactly `q`.
+/// Softness of a streak's edge: the step at `m = p` is smoothed over `p ± this · min(p, 1 − p)`,
+/// which keeps the area mean exactly `p`.
 const WINDROW_EDGE_SOFTNESS: f64 = 0.75;
 
 /// Foam streaks along the wind: old foam gathered by the Langmuir circulation into lines
 /// parallel to the wind.
 ///
-/// The streaks cover `c(u) = (1 − r) H(q − m(u)) + r q`, where `m` is a uniform noise carried by
-/// the water, stretched [`WINDROW_STRETCH`] times along the wind with a first octave of
-/// [`WINDROW_SPACING_M`] across it, `H` a step smoothed over `q(1 ± ¾)`, `q` the mean cover asked
-/// for and `r` the share of the noise the pixel footprint does not resolve (the footprint-filtered
-/// noise is scaled back to full variance before it is made uniform): thin lines where the noise
-/// is lowest near the eye, their mean `q` far away, the area mean `q` at every distance.
+/// The streaks cover `c(u) = ρ [(1 − r) H(p − m(u)) + r p]`, `p = q/ρ`, where `ρ` is the
+/// [`WINDROW_DENSITY`] of the foam inside a streak, `m` a uniform noise carried by the water,
+/// stretched [`WINDROW_STRETCH`] times along the wind with a first octave of
+/// [`WINDROW_SPACING_M`] across it, `H` a step smoothed over `p ± ¾ min(p, 1 − p)`, `q` the mean
+/// cover asked for and `r` the share of the noise the pixel footprint does not resolve (the
+/// footprint-filtered noise is scaled back to full variance before it is made uniform): lines of
+/// lace where the noise is lowest near the eye, their mean `q` far away, the area mean `q` at
+/// every distance.
 /// Their foam is old: its brightness relative to fresh foam is Koepke's life-mean efficiency.
 ///
 /// The model is statistical: the streaks are not advected from the crests that made their foam
@@ -177,14 +203,23 @@ impl Windrows {
     /// # Returns
     /// `c ∈ [0, 1]`.
     pub fn cover(&self, x: f64, z: f64, footprint_m: f64, mean_cover: f64) -> f64 {
-        debug_assert!(footprint_m >= 0.0 && (0.0..1.0).contains(&mean_cover));
+        self.cover_with_density(x, z, footprint_m, mean_cover, WINDROW_DENSITY)
+    }
+
+    /// [`Self::cover`] with the density `ρ` of the foam inside a streak, `(0, 1]` (1: solid
+    /// lines, for a pixel that resolves no lace; [`crate::FoamMemory::windrow_cover`] chooses).
+    pub fn cover_with_density(&self, x: f64, z: f64, footprint_m: f64, mean_cover: f64, density: f64) -> f64 {
+        debug_assert!(footprint_m >= 0.0 && (0.0..1.0).contains(&mean_cover) && density > 0.0 && density <= 1.0);
         if mean_cover <= 0.0 {
             return 0.0;
         }
         let Some(m) = self.field.at_rescaled(x, z, footprint_m) else { return mean_cover };
         let r = 1.0 - self.field.resolved_share(footprint_m);
-        let e = WINDROW_EDGE_SOFTNESS * mean_cover.min(1.0 - mean_cover);
-        (1.0 - r) * smoothstep(mean_cover + e, mean_cover - e, m) + r * mean_cover
+        // The streaks cover `p = q/ρ` of the sea, their foam `ρ` of each streak.
+        let density = density.max(mean_cover.sqrt());
+        let p = mean_cover / density;
+        let e = WINDROW_EDGE_SOFTNESS * p.min(1.0 - p);
+        density * ((1.0 - r) * smoothstep(p + e, p - e, m) + r * p)
     }
 
     /// Brightness of the streaks' foam relative to fresh foam, `(0, 1]`.
@@ -242,10 +277,12 @@ mod tests {
         let q = 0.05;
         let (mut inside, mut along, mut across) = (0.0, 0.0, 0.0);
         for (x, z) in points() {
-            if w.cover(x, z, 0.0, q) > 0.5 {
+            // Inside a streak the cover is its density; half of it marks the streak.
+            let half = 0.5 * super::WINDROW_DENSITY;
+            if w.cover(x, z, 0.0, q) > half {
                 inside += 1.0;
-                along += f64::from(u8::from(w.cover(x + a, z + c, 0.0, q) > 0.5));
-                across += f64::from(u8::from(w.cover(x - c, z + a, 0.0, q) > 0.5));
+                along += f64::from(u8::from(w.cover(x + a, z + c, 0.0, q) > half));
+                across += f64::from(u8::from(w.cover(x - c, z + a, 0.0, q) > half));
             }
         }
         assert!(inside > 500.0, "{inside}");

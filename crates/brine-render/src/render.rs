@@ -630,10 +630,11 @@ fn white_water(world: &World, p: DVec3, d: DVec3, t: f64, n: DVec3, sea: DVec3, 
     let cover = world.cover_at(p, n, footprint);
     if let Some((white, brightness)) = cover.memory {
         // Fresh foam (Koepke's R_f) where the crest breaks, dimming with the foam's age; ageing
-        // foam thins (Koepke's falling reflectance): the water shows through it.
+        // foam thins (Koepke's falling reflectance): the water shows through it. Thick foam in
+        // a lace is brighter than the mean (brightness above 1): opaque, and more reflective.
         let c = white * brightness;
         if c > 0.0 {
-            shade.radiance = shade.radiance * (1.0 - c) + lambert(FRESH_FOAM_REFLECTANCE) * c;
+            shade.radiance = shade.radiance * (1.0 - c.min(white)) + lambert(FRESH_FOAM_REFLECTANCE) * c;
         }
     }
     if let Some(foam) = &world.foam {

@@ -214,20 +214,26 @@ impl Default for WhiteWaterOptions {
 }
 
 /// Wider footprints at which the threshold is calibrated (m, standard deviation of the Gaussian
-/// footprint); between them `α` is interpolated in `ln s`, beyond the last it is the last's.
-pub const WHITE_WATER_FOOTPRINTS_M: [f64; 4] = [0.1, 0.5, 2.5, 12.5];
+/// footprint); between them `α` is interpolated in `ln s`, beyond the last it is the last's. The
+/// two smallest follow the fade of the foam lace's filaments (brine-foam `FoamLace`), across
+/// which the threshold's softening changes.
+pub const WHITE_WATER_FOOTPRINTS_M: [f64; 6] = [0.02, 0.04, 0.1, 0.5, 2.5, 12.5];
 
 /// White water of a sea: active whitecaps where the breaking variable falls below a threshold,
 /// the foam they leave, and one threshold for both calibrated on a target coverage.
 ///
 /// The active cover at rest position `u`, time `t` and footprint `s` is Dupuy & Bruneton's
 ///
-/// `A = ½(1 + erf((α(s) − μ − σ_e e)/√(2(σ² + σ_e²(1 − k)))))`,
+/// `A = ½(1 + erf((α(s) − μ − σ_e e)/√(2(σ² + σ_e²(1 − k) + k_L σ_L²))))`,
 ///
 /// where `(μ, σ²)` are the Jacobian's footprint moments, `e` the foam memory's edge noise (unit
 /// variance, carried by the water, share `k` of it resolved by the footprint) and `σ_e` the
-/// standard deviation of the Jacobian of the waves just shorter than those drawn (the caller's):
-/// their crests break the edge of a whitecap into lace. The foam left is
+/// share `edge_share` of the standard deviation `σ_s` of the Jacobian of the waves just shorter
+/// than those drawn: their crests break the edge of a whitecap into lace. When the memory draws
+/// its white water as lace (brine-foam `FoamLace`) the rest of their variance,
+/// `σ_L² = (1 − edge_share²) σ_s²`, softens the threshold by the share `k_L` of the lace the
+/// footprint resolves, and the lace draws that soft cover as broken foam of the same mean; a
+/// pixel that resolves no lace keeps the sharp threshold. Without a lace `σ_L = 0`. The foam left is
 /// `FoamMemory::combine` of the same `A` at the memory's past instants, read along the foam's
 /// drift path, with the present `σ²` and `e`. `α(s)` is set so that the mean white cover
 /// `1 − (1 − A)(1 − residual)(1 − c_w)` over the sea equals the target (Monahan's `W`), where
@@ -247,6 +253,7 @@ pub struct WhiteWaterModel<S> {
     breaking_footprint: f64,
     short_variance: f64,
     edge_std: f64,
+    lace_variance: f64,
     forward: DVec2,
     target: f64,
     windrow_cover: f64,
@@ -318,6 +325,7 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
             breaking_footprint: breaking_footprint_m,
             short_variance: 0.0,
             edge_std: 0.0,
+            lace_variance: 0.0,
             forward: DVec2::ZERO,
             target,
             windrow_cover: 0.0,
@@ -346,6 +354,11 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
         let probe = &points[..SHORT_VARIANCE_SAMPLES.min(points.len())];
         model.short_variance = model.source.short_variance(breaking_footprint_m, probe);
         model.edge_std = edge_share * model.short_variance.sqrt();
+        // The rest of the short waves' variance softens the threshold; a lace draws the soft
+        // cover as broken foam (brine-foam `FoamLace`), so it is kept only with one.
+        if model.memory.lace().is_some() {
+            model.lace_variance = (1.0 - edge_share * edge_share) * model.short_variance;
+        }
         // Point footprint: each sample is white at α exactly when α exceeds its lowest breaking
         // variable among the present and the instants whose foam survives there.
         let point: Vec<Sample> = points.par_iter().map(|&(u, t)| model.sample(u, t, 0.0)).collect();
@@ -388,7 +401,14 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
         let m = self.source.moments_and_history(u - self.forward, t, s_eff, &lattice, history);
         let (e, k) = self.memory.edge_noise(u.x, u.y, s);
         let x0 = m.mu + self.edge_std * e;
-        let var = (m.sigma2 - self.short_variance).max(0.0) + self.edge_std * self.edge_std * (1.0 - k);
+        // The lace's softening only where a lace is drawn: a pixel that resolves none keeps the
+        // sharp threshold (else its white water would be a veil).
+        let lace = if self.lace_variance > 0.0 {
+            self.lace_variance * self.memory.lace().map_or(0.0, |l| l.resolved_share(s))
+        } else {
+            0.0
+        };
+        let var = (m.sigma2 - self.short_variance).max(0.0) + self.edge_std * self.edge_std * (1.0 - k) + lace;
         (x0, var, e)
     }
 
@@ -404,7 +424,7 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
 
     /// Cover of the foam streaks at `u` for a footprint `s`.
     fn windrow(&self, u: DVec2, s: f64) -> f64 {
-        self.memory.windrows().map_or(0.0, |w| w.cover(u.x, u.y, s, self.windrow_cover))
+        self.memory.windrow_cover(u.x, u.y, s, self.windrow_cover)
     }
 
     /// The threshold `α(s)` for a footprint `s` (m).
@@ -441,6 +461,7 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
             breaking_footprint: self.breaking_footprint,
             short_variance: self.short_variance,
             edge_std: self.edge_std,
+            lace_variance: self.lace_variance,
             forward: self.forward,
             target: self.target,
             windrow_cover: self.windrow_cover,
@@ -506,8 +527,12 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
         for j in 0..n {
             src[j] = if surv[j] > 0.0 { phi(alpha - src[j] - self.edge_std * e, var) } else { 0.0 };
         }
-        let ww = self.memory.combine(t, active, &surv[..n], &src[..n]);
-        if self.windrow_cover > 0.0 { self.memory.with_windrows(ww, self.windrow(u, footprint_m)) } else { ww }
+        let mut ww = self.memory.combine(t, active, &surv[..n], &src[..n]);
+        if self.windrow_cover > 0.0 {
+            ww = self.memory.with_windrows(ww, self.windrow(u, footprint_m));
+        }
+        // Drawn as lace, of the same area mean: the calibration holds.
+        self.memory.laced(ww, u.x, u.y, footprint_m)
     }
 
     /// Mean cover of the foam streaks along the wind, `q_w` (0 when the memory has none).

@@ -104,6 +104,7 @@ pub fn foam_json(args: &FoamArgs) -> Result<Value, CliError> {
             "wind_drift_m_s": WIND_DRIFT_FRACTION * args.u10,
             "streak_stretch": memory.streak_stretch,
             "windrow_share": m.windrow_share(),
+            "lace_cell_m": m.lace().map_or(0.0, |l| l.cell()),
         },
     }))
 }
@@ -132,6 +133,10 @@ pub fn run_foam(args: &FoamArgs) -> Result<(), CliError> {
             m["wind_drift_m_s"].as_f64().unwrap_or(0.0),
             m["streak_stretch"].as_f64().unwrap_or(1.0),
             100.0 * m["windrow_share"].as_f64().unwrap_or(0.0)
+        );
+        super::outln!(
+            "white water drawn as a lace of foam filaments, cells of {:.2} m down to a ninth of it (same mean cover)",
+            m["lace_cell_m"].as_f64().unwrap_or(0.0)
         );
     }
     Ok(())

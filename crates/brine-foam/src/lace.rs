@@ -1,0 +1,467 @@
+//! Foam lace: the cellular structure inside a foam cover, so that a cover `q` is drawn as a net of
+//! foam filaments around open water (a share `q` of the area) rather than as a veil of opacity
+//! `q`.
+
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+use crate::error::{FoamError, check};
+use crate::noise::{FoamNoise, smoothstep};
+use crate::windrows::{EmpiricalCdf, QUANTILE_SAMPLES};
+
+/// Cell size of the lace's coarsest octave (m): Brine's choice from photographs of decaying
+/// whitecap foam, whose open cells range from a decimetre to a metre; the three octaves have
+/// cells of 1.2, 0.4 and 0.13 m.
+pub const LACE_CELL_M: f64 = 1.2;
+
+/// Octaves of the lace: cells of [`LACE_CELL_M`], a third and a ninth of it.
+const LACE_OCTAVES: usize = 3;
+
+/// Ratio of the cell sizes of successive octaves (3, not 2, so that the two nets do not line up).
+const LACE_OCTAVE_RATIO: f64 = 3.0;
+
+/// Weight of each octave relative to the previous one.
+const LACE_OCTAVE_WEIGHT: f64 = 0.5;
+
+/// Softness of a filament's edge as a share of `min(q, 1 − q)`: the step at `m = q` is smoothed
+/// over `q ± softness · min(q, 1 − q)`, which stays inside `[0, 1]` and keeps the area mean `q`.
+const LACE_EDGE_SOFTNESS: f64 = 0.3;
+
+/// The lace's features are `min(1, 4 min(q, 1 − q))` of a cell wide (filaments of thin foam,
+/// holes in dense foam): an octave is faded as if the footprint were that many times wider, so
+/// that no feature is drawn below the pixel (no isolated white pixels around a whitecap).
+const LACE_FEATURE_WIDTH_GAIN: f64 = 4.0;
+
+/// The lace's coordinates are warped by a gradient noise of this many first-octave cells per
+/// wavelength, displacing them by up to [`LACE_WARP_AMPLITUDE`] cells: the straight borders of
+/// the Voronoi cells become curved filaments.
+const LACE_WARP_CELLS: f64 = 1.5;
+
+/// Largest displacement of the warp, in first-octave cells.
+const LACE_WARP_AMPLITUDE: f64 = 0.4;
+
+/// Covers below this, or above one minus this, are drawn as a veil (the lace fades in up to
+/// twice it): the lace's step would amplify a cover's rounding into white or open water.
+const LACE_MIN_COVER: f64 = 1e-3;
+
+/// Contrast of the foam's brightness with its thickness in the lace: the brightness of foam
+/// drawn at lace depth `δ = (q − m)/q ∈ [0, 1]` (0 at a filament's edge, 1 at its spine) is
+/// `1 + β(2δ − 1)` times the mean, with `β` this (Brine's choice): thick foam is brighter than
+/// the thin foam at its edges, and the mean over the foam is unchanged (`δ` is uniform there).
+pub const LACE_THICKNESS_CONTRAST: f64 = 0.2;
+
+/// An octave is drawn whole while its cell spans at least this many Gaussian footprint standard
+/// deviations `σ` (four pixel footprints `ℓ = √12 σ`) and faded to its mean at half of it: its
+/// filaments, a fraction of a cell wide, are then below the pixel.
+const LACE_FADE_CELLS_PER_SIGMA: (f64, f64) = (7.0, 14.0);
+
+/// The structure inside foam: a uniform cellular variable `m(u)` carried by the water, its low
+/// values along the borders of Voronoi cells, so that the foam of cover `q` is drawn where
+/// `m < q` — a net of filaments that thickens with `q` and leaves round holes of open water,
+/// closing to solid white as `q → 1` (an active whitecap's core) and thinning to threads as the
+/// foam decays.
+///
+/// `c(u) = (1 − r) · smoothstep(q + ε, q − ε, m(u)) + r q`, `ε = 0.3 min(q, 1 − q)`,
+///
+/// `m = F(Σₒ fₒ 2⁻ᵒ d̂ₒ)`, `d̂ₒ = ((F₂ − F₁)/λₒ − d̄)/σ_d`, `o = 0, 1, 2`,
+///
+/// where `F₁`, `F₂` are the distances to the nearest and second-nearest feature points of a
+/// jittered grid of cells `λₒ = λ₀/3ᵒ` (Worley 1996), read at the rest position warped by a
+/// gradient noise (up to 0.4 λ₀, so the cell borders curve), `d̄` and `σ_d` the mean and spread of
+/// `(F₂ − F₁)/λ`, `fₒ` the footprint fade of each octave (finest first), `F` the tabulated
+/// distribution function of the sum at those fades (so `m` is uniform at every footprint), and
+/// `r = 1 − f₀²` the share of the lace the pixel does not resolve. The fades read the footprint
+/// widened by `1/min(1, 4 min(q, 1 − q))`: a thin filament or a small hole is faded to the mean
+/// at the distance where it would fall below the pixel. Because `m`
+/// is independent of `q` and uniform, the area mean of `c` is `q` at every footprint: the lace
+/// moves no foam, it only gathers it, and the coverage calibrated on Monahan's `W` is kept.
+///
+/// A texture, not a model of bubble physics: the cell size is Brine's choice from photographs.
+///
+/// # References
+/// Worley S. 1996, "A cellular texture basis function", SIGGRAPH, 291–294 (`F₂ − F₁`); Callaghan
+/// A. H., Deane G. B., Stokes M. D. 2012, JGR 117:C09015 (images of decaying whitecap foam);
+/// Monahan E. C., Lu M. 1990, IEEE J. Oceanic Eng. 15(4):340–349 (stages A and B).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FoamLace {
+    cell_m: f64,
+    seed: u64,
+    /// First-octave cells per side of a square tile over which the lace repeats.
+    period: Option<i64>,
+    /// The two components of the warp (gradient noise, values in `[0, 2]`).
+    warp: [FoamNoise; 2],
+    mean: f64,
+    std: f64,
+    /// Distribution functions of the partial sums: `cdfs[n − 1][j]` of the `n` coarsest octaves
+    /// with octave `n` faded to `f = j/(FADE_TABLES − 1)`.
+    cdfs: Vec<Vec<EmpiricalCdf>>,
+}
+
+/// Values of the fine octave's fade at which the distribution of the sum is tabulated.
+const FADE_TABLES: usize = 9;
+
+/// Mixes a cell index, octave and seed into 64 well-spread bits (SplitMix64's finaliser).
+#[inline]
+fn hash(i: i64, j: i64, o: u32, seed: u64) -> u64 {
+    let mut h = seed ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ (j as u64).wrapping_mul(0xc2b2_ae3d_27d4_eb4f);
+    h ^= u64::from(o).wrapping_mul(0x1656_67b1_9e37_79f9);
+    h = (h ^ (h >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    h = (h ^ (h >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    h ^ (h >> 31)
+}
+
+/// `Σ_{o<n} wᵒ dₒ + f wⁿ dₙ` (`w` = [`LACE_OCTAVE_WEIGHT`]; octave `n` absent when `n` is the last).
+fn partial_sum(d: &[f64; LACE_OCTAVES], n: usize, f: f64) -> f64 {
+    let mut sum = 0.0;
+    let mut w = 1.0;
+    for (o, &v) in d.iter().enumerate() {
+        if o < n {
+            sum += w * v;
+        } else if o == n {
+            sum += f * w * v;
+        }
+        w *= LACE_OCTAVE_WEIGHT;
+    }
+    sum
+}
+
+impl FoamLace {
+    /// A lace of first-octave cell `cell_m` (m), repeating over a square tile of side `tile_m`
+    /// when given (the cell is then the nearest whole fraction of the tile).
+    ///
+    /// # Arguments
+    /// - `cell_m`: `λ₀` (m), `(0, 100]`; default [`LACE_CELL_M`].
+    /// - `tile_m`: the tile's side (m), `(0, 10⁶]`, or `None`.
+    /// - `seed`: seed of the feature points.
+    ///
+    /// # Errors
+    /// [`FoamError::OutOfRange`] naming the parameter.
+    pub fn new(cell_m: f64, tile_m: Option<f64>, seed: u64) -> Result<Self, FoamError> {
+        check("lace_cell_m", cell_m, cell_m > 0.0 && cell_m <= 100.0, "(0, 100] m")?;
+        let (mut cell, mut period) = (cell_m, None);
+        if let Some(tile) = tile_m {
+            check("tile_m", tile, tile > 0.0 && tile <= 1e6, "(0, 1e6] m")?;
+            let n = (tile / cell_m).round().max(1.0);
+            (cell, period) = (tile / n, Some(n as i64));
+        }
+        let mut warp_wavelength = cell * LACE_WARP_CELLS;
+        let mut warp = [0u64, 1].map(|c| FoamNoise::new(1.0, warp_wavelength, 2, seed ^ (0x3a2f_0000 + c)));
+        if let Some(tile) = tile_m {
+            let n = (tile / warp_wavelength).round().max(1.0);
+            warp_wavelength = tile / n;
+            let k = n as i64;
+            warp = [0u64, 1].map(|c| {
+                FoamNoise::new(1.0, warp_wavelength, 2, seed ^ (0x3a2f_0000 + c))
+                    .and_then(|w| w.periodic([k, 0], [0, k]))
+            });
+        }
+        let [w0, w1] = warp;
+        let warp = [w0?, w1?];
+        let mut lace = Self { cell_m: cell, seed, period, warp, mean: 0.0, std: 1.0, cdfs: Vec::new() };
+        // The moments of one octave and the distribution of the sum, from points over many cells.
+        let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x1ace_5eed);
+        let span = 100.0 * cell;
+        let points: Vec<(f64, f64)> =
+            (0..QUANTILE_SAMPLES).map(|_| (rng.random_range(-span..span), rng.random_range(-span..span))).collect();
+        let d: Vec<f64> = points.iter().map(|&(x, z)| lace.border_distance(x, z, 0)).collect();
+        let n = d.len() as f64;
+        lace.mean = d.iter().sum::<f64>() / n;
+        lace.std = (d.iter().map(|v| (v - lace.mean).powi(2)).sum::<f64>() / n).sqrt().max(f64::MIN_POSITIVE);
+        let d: Vec<[f64; LACE_OCTAVES]> = points.iter().map(|&(x, z)| lace.normalised(x, z)).collect();
+        lace.cdfs = (1..LACE_OCTAVES)
+            .map(|n| {
+                (0..FADE_TABLES)
+                    .map(|j| {
+                        let f = j as f64 / (FADE_TABLES - 1) as f64;
+                        EmpiricalCdf::from_values(d.iter().map(|d| partial_sum(d, n, f)).collect())
+                    })
+                    .collect()
+            })
+            .collect();
+        Ok(lace)
+    }
+
+    /// Share of the lace's filaments a Gaussian footprint `σ` (m, `≥ 0`) resolves,
+    /// `k_L = f₁(σ)² ∈ [0, 1]` (the middle octave's fade, 0.4 m cells): 1 near the eye, 0 where
+    /// a thin cover is no longer drawn as filaments. Models that hand the lace a soft cover to
+    /// break up scale their softening by it.
+    pub fn resolved_share(&self, sigma_m: f64) -> f64 {
+        Self::fade(self.cell_m / LACE_OCTAVE_RATIO, sigma_m).powi(2)
+    }
+
+    /// The first octave's cell size `λ₀` (m), after any snapping to a tile.
+    pub fn cell(&self) -> f64 {
+        self.cell_m
+    }
+
+    /// `(F₂ − F₁)/λₒ` at `(x, z)` for octave `o`: 0 on a cell border, up to about 1 at a centre.
+    fn border_distance(&self, x: f64, z: f64, o: u32) -> f64 {
+        let scale = LACE_OCTAVE_RATIO.powi(o as i32);
+        let lambda = self.cell_m / scale;
+        let (u, v) = (x / lambda, z / lambda);
+        let (i0, j0) = (u.floor() as i64, v.floor() as i64);
+        let cells = self.period.map(|n| n * scale as i64);
+        let (mut f1, mut f2) = (f64::INFINITY, f64::INFINITY);
+        for dj in -1..=1 {
+            for di in -1..=1 {
+                let (i, j) = (i0 + di, j0 + dj);
+                let (hi, hj) = cells.map_or((i, j), |n| (i.rem_euclid(n), j.rem_euclid(n)));
+                let h = hash(hi, hj, o, self.seed);
+                let (px, pz) = ((h >> 11) as f64 / (1u64 << 53) as f64, (h & 0x1f_ffff) as f64 / (1u64 << 21) as f64);
+                let (dx, dz) = (i as f64 + px - u, j as f64 + pz - v);
+                let r2 = dx * dx + dz * dz;
+                if r2 < f1 {
+                    (f2, f1) = (f1, r2);
+                } else if r2 < f2 {
+                    f2 = r2;
+                }
+            }
+        }
+        f2.sqrt() - f1.sqrt()
+    }
+
+    /// The fade `f ∈ [0, 1]` of an octave of cell `λ` (m) for a footprint `σ` (m).
+    fn fade(lambda: f64, sigma_m: f64) -> f64 {
+        if sigma_m > 0.0 {
+            smoothstep(LACE_FADE_CELLS_PER_SIGMA.0, LACE_FADE_CELLS_PER_SIGMA.1, lambda / sigma_m)
+        } else {
+            1.0
+        }
+    }
+
+    /// The normalised border distances `(dₒ − d̄)/σ_d` of the octaves at `(x, z)`, the first
+    /// `count` of them (the others 0).
+    fn normalised_first(&self, x: f64, z: f64, count: usize) -> [f64; LACE_OCTAVES] {
+        let a = LACE_WARP_AMPLITUDE * self.cell_m;
+        let (x, z) = (x + a * (self.warp[0].value(x, z, 0.0) - 1.0), z + a * (self.warp[1].value(x, z, 0.0) - 1.0));
+        let mut d = [0.0; LACE_OCTAVES];
+        for (o, v) in d.iter_mut().enumerate().take(count) {
+            *v = (self.border_distance(x, z, o as u32) - self.mean) / self.std;
+        }
+        d
+    }
+
+    /// All the normalised border distances at `(x, z)`.
+    fn normalised(&self, x: f64, z: f64) -> [f64; LACE_OCTAVES] {
+        self.normalised_first(x, z, LACE_OCTAVES)
+    }
+
+    /// The uniform lace variable `m` at `(x, z)` for a footprint `σ`, and the share `k` of the
+    /// lace the footprint resolves; `None` where it resolves nothing.
+    ///
+    /// Finer octaves fade first and the fades of two octaves do not overlap (their cells differ
+    /// threefold, the fade spans twofold), so with the `n` coarsest octaves whole and octave `n`
+    /// faded by `f`, `m = F_{n,f}(Σ_{o<n} wᵒ d̂ₒ + f wⁿ d̂ₙ)`, `F_{n,f}` tabulated at
+    /// [`FADE_TABLES`] values of `f` and interpolated between them; the coarsest octave alone
+    /// fades through `k`.
+    fn uniform(&self, x: f64, z: f64, sigma_m: f64) -> Option<(f64, f64)> {
+        let f0 = Self::fade(self.cell_m, sigma_m);
+        if f0 <= 0.0 {
+            return None;
+        }
+        if f0 < 1.0 {
+            let d = self.normalised_first(x, z, 1);
+            return Some((self.cdfs[0][0].uniform(d[0]), f0 * f0));
+        }
+        // `n` whole octaves, octave `n` (if any) faded by `f`.
+        let mut n = 1;
+        while n < LACE_OCTAVES && Self::fade(self.cell_m / LACE_OCTAVE_RATIO.powi(n as i32), sigma_m) >= 1.0 {
+            n += 1;
+        }
+        let (n, f) = if n == LACE_OCTAVES {
+            (LACE_OCTAVES - 1, 1.0)
+        } else {
+            (n, Self::fade(self.cell_m / LACE_OCTAVE_RATIO.powi(n as i32), sigma_m))
+        };
+        let d = self.normalised_first(x, z, if f > 0.0 { n + 1 } else { n });
+        let last = (FADE_TABLES - 1) as f64;
+        let j = ((f * last).floor() as usize).min(FADE_TABLES - 2);
+        let t = f * last - j as f64;
+        let tables = &self.cdfs[n - 1];
+        let at = |j: usize| tables[j].uniform(partial_sum(&d, n, j as f64 / last));
+        let m = if t > 0.0 { (1.0 - t) * at(j) + t * at(j + 1) } else { at(j) };
+        Some((m, 1.0))
+    }
+
+    /// Cover of foam of mean cover `q` drawn as lace at rest position `(x, z)`.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: rest position (m), finite.
+    /// - `sigma_m`: the pixel's Gaussian footprint `σ` (m), `≥ 0`.
+    /// - `mean_cover`: `q`, `[0, 1]`.
+    ///
+    /// # Returns
+    /// `c ∈ [0, 1]`, of area mean `q` over the sea.
+    pub fn cover(&self, x: f64, z: f64, sigma_m: f64, mean_cover: f64) -> f64 {
+        self.cover_and_shade(x, z, sigma_m, mean_cover).0
+    }
+
+    /// [`Self::cover`] and the factor on the foam's brightness there, `1 + k β (2δ − 1)` with
+    /// `δ = clamp((q − m)/q, 0, 1)` and `β` = [`LACE_THICKNESS_CONTRAST`]: `[1 − β, 1 + β]`,
+    /// 1 where the pixel resolves no lace; its mean over the foam is 1 to the edges' softening.
+    pub fn cover_and_shade(&self, x: f64, z: f64, sigma_m: f64, mean_cover: f64) -> (f64, f64) {
+        debug_assert!(sigma_m >= 0.0 && (0.0..=1.0).contains(&mean_cover));
+        let q = mean_cover.clamp(0.0, 1.0);
+        if q.min(1.0 - q) <= LACE_MIN_COVER {
+            return (q, 1.0);
+        }
+        // Thin filaments (small q) and small holes (q near 1) are narrower than a cell: a pixel
+        // resolves them at a proportionally smaller footprint.
+        let width = (LACE_FEATURE_WIDTH_GAIN * q.min(1.0 - q)).min(1.0);
+        let sigma_eff = if width > 0.0 { sigma_m / width } else { f64::INFINITY };
+        let Some((m, k)) = self.uniform(x, z, sigma_eff) else { return (q, 1.0) };
+        let depth = ((q - m) / q).clamp(0.0, 1.0);
+        let shade = 1.0 + k * LACE_THICKNESS_CONTRAST * (2.0 * depth - 1.0);
+        let e = LACE_EDGE_SOFTNESS * q.min(1.0 - q);
+        let laced = k * smoothstep(q + e, q - e, m) + (1.0 - k) * q;
+        // Covers within a few thousandths of 0 or 1 stay a veil: the lace would turn them into
+        // a step, and a cover of 10⁻¹² (an erf's tail) into white at the lowest m.
+        let g = smoothstep(LACE_MIN_COVER, 2.0 * LACE_MIN_COVER, q.min(1.0 - q));
+        (g * laced + (1.0 - g) * q, 1.0 + g * (shade - 1.0))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use approx::assert_abs_diff_eq;
+    use proptest::prelude::*;
+
+    use super::*;
+
+    fn lace() -> FoamLace {
+        FoamLace::new(LACE_CELL_M, None, 7).unwrap()
+    }
+
+    /// `n²` points over about a square `span` m wide, on a grid whose steps are incommensurate
+    /// with the cells (a step of a whole cell would read every cell at the same place).
+    fn grid(span: f64, n: usize) -> impl Iterator<Item = (f64, f64)> {
+        let (dx, dz) = (span / n as f64 * 1.0137, span / n as f64 * 0.9871);
+        (0..n * n).map(move |k| ((k % n) as f64 * dx + 0.013, (k / n) as f64 * dz + 0.029))
+    }
+
+    /// Sampling error of a mean over 40 000 grid points 2 m apart, about one warp wavelength
+    /// (1.8 m) so nearly independent: `√(q(1 − q)/40 000) ≤ 0.0025`, times a few for the
+    /// remaining correlation and the tabulated distribution's own sampling.
+    const AREA_MEAN_TOLERANCE: f64 = 0.01;
+
+    #[test]
+    fn the_area_mean_is_the_cover_at_every_footprint() {
+        let l = lace();
+        for &q in &[0.05, 0.3, 0.5, 0.8, 0.97] {
+            // Each octave half faded in turn (0.015, 0.04, 0.12 m), and none or all.
+            for &sigma in &[0.0, 0.015, 0.04, 0.12, 1.0] {
+                let n = 200;
+                let mean = grid(400.0, n).map(|(x, z)| l.cover(x, z, sigma, q)).sum::<f64>() / (n * n) as f64;
+                assert_abs_diff_eq!(mean, q, epsilon = AREA_MEAN_TOLERANCE);
+            }
+        }
+    }
+
+    #[test]
+    fn near_the_eye_the_lace_is_foam_or_water() {
+        // At a point footprint a cover of one half is drawn as half the area white, half open
+        // (apart from the softened edges), not as a half-grey veil.
+        let l = lace();
+        let n = 200;
+        let vals: Vec<f64> = grid(40.0, n).map(|(x, z)| l.cover(x, z, 0.0, 0.5)).collect();
+        let extreme = vals.iter().filter(|&&c| !(0.05..=0.95).contains(&c)).count() as f64 / vals.len() as f64;
+        // The softened band `q ± 0.15` of a uniform `m` holds 30 % of the points, and the
+        // smoothstep is inside [0.05, 0.95] over about three quarters of it: about 78 % of the
+        // points are near 0 or 1 (a veil would have none).
+        assert!(extreme > 0.7, "share of pixels near 0 or 1: {extreme}");
+    }
+
+    #[test]
+    fn the_foam_lies_along_cell_borders() {
+        // Thin foam (q = 0.2) is drawn where the border distance is small: the lace is a net.
+        let l = lace();
+        let (mut on, mut off) = ((0.0, 0), (0.0, 0));
+        for (x, z) in grid(20.0, 200) {
+            let d = l.border_distance(x, z, 0);
+            let c = l.cover(x, z, 0.0, 0.2);
+            if d < 0.1 {
+                on = (on.0 + c, on.1 + 1);
+            } else if d > 0.4 {
+                off = (off.0 + c, off.1 + 1);
+            }
+        }
+        let (on, off) = (on.0 / on.1 as f64, off.0 / off.1 as f64);
+        assert!(on > 3.0 * off, "cover near borders {on} vs centres {off}");
+    }
+
+    #[test]
+    fn thick_foam_is_brighter_and_the_mean_brightness_is_kept() {
+        let l = lace();
+        for &q in &[0.3, 0.7, 1.0] {
+            let (mut foam, mut lit) = (0.0, 0.0);
+            let n = 200;
+            for (x, z) in grid(80.0, n) {
+                let (c, b) = l.cover_and_shade(x, z, 0.0, q);
+                assert!((1.0 - LACE_THICKNESS_CONTRAST..=1.0 + LACE_THICKNESS_CONTRAST).contains(&b));
+                foam += c;
+                lit += c * b;
+            }
+            // The foam-weighted mean factor: 1 up to the softened edges, whose foam is thin
+            // (δ near 0), a share `softness · min(q, 1 − q)` of the foam at most.
+            let mean = lit / foam;
+            assert_abs_diff_eq!(
+                mean,
+                1.0,
+                epsilon = LACE_THICKNESS_CONTRAST * LACE_EDGE_SOFTNESS * 0.5 + AREA_MEAN_TOLERANCE
+            );
+        }
+    }
+
+    #[test]
+    #[expect(clippy::float_cmp, reason = "a footprint that resolves no lace returns the cover itself")]
+    fn a_far_pixel_sees_the_mean() {
+        let l = lace();
+        for (x, z) in grid(10.0, 20) {
+            assert_eq!(l.cover(x, z, 1.0, 0.37), 0.37);
+        }
+    }
+
+    #[test]
+    fn the_lace_repeats_over_its_tile() {
+        let tile = 10.3;
+        let l = FoamLace::new(LACE_CELL_M, Some(tile), 3).unwrap();
+        assert_abs_diff_eq!(tile / l.cell(), (tile / l.cell()).round(), epsilon = 1e-9);
+        for (x, z) in grid(5.0, 30) {
+            for &(dx, dz) in &[(tile, 0.0), (0.0, tile), (-2.0 * tile, tile)] {
+                assert_abs_diff_eq!(l.cover(x, z, 0.0, 0.4), l.cover(x + dx, z + dz, 0.0, 0.4), epsilon = 1e-9);
+            }
+        }
+    }
+
+    #[test]
+    fn bad_cells_are_refused() {
+        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, 101.0] {
+            assert!(matches!(FoamLace::new(bad, None, 1), Err(FoamError::OutOfRange(o)) if o.name == "lace_cell_m"));
+        }
+        assert!(FoamLace::new(0.4, Some(0.0), 1).is_err());
+    }
+
+    proptest! {
+        #[test]
+        fn the_cover_stays_in_the_unit_interval_and_keeps_the_ends(
+            x in -1e4f64..1e4, z in -1e4f64..1e4, sigma in 0.0f64..10.0, q in 0.0f64..=1.0,
+        ) {
+            let l = lace();
+            let c = l.cover(x, z, sigma, q);
+            prop_assert!((0.0..=1.0).contains(&c));
+            // The ends are returned exactly (a veil below the lace's smallest cover).
+            prop_assert!(l.cover(x, z, sigma, 0.0).to_bits() == 0f64.to_bits());
+            prop_assert!(l.cover(x, z, sigma, 1.0).to_bits() == 1f64.to_bits());
+        }
+
+        #[test]
+        fn more_foam_never_takes_foam_away(x in -1e3f64..1e3, z in -1e3f64..1e3, q in 0.002f64..=0.998, dq in 0.0f64..=1.0) {
+            // Where the lace is resolved it is monotone in q at every point: foam grows out of
+            // its filaments. (A pixel's fade depends on q, so a footprint can trade lace for its
+            // mean, and so does the veil's blend within 0.002 of 0 and 1.)
+            let l = lace();
+            let (q2, sigma) = ((q + dq).min(0.998), 0.0);
+            prop_assert!(l.cover(x, z, sigma, q2) >= l.cover(x, z, sigma, q) - 1e-12);
+        }
+    }
+}
