@@ -1,0 +1,141 @@
+use super::*;
+
+/// Standard error of a share measured on 40 000 points whose patch variable is correlated
+/// over ~1 first-octave cell (a few thousand independent cells): ≈ 0.01; three of them.
+const AREA_TOL: f64 = 0.03;
+
+fn memory() -> FoamMemory {
+    FoamMemory::new(&FoamMemoryParams::default(), 0.4).unwrap()
+}
+
+/// The documented threshold `θ(a) = A₀ e^{−a/τ} min(1, (T − a)/Δt)`.
+fn theta(mem: &FoamMemory, age: f64) -> f64 {
+    FOAM_DENSITY * (-age / mem.decay_time()).exp() * ((mem.length() - age) / mem.step()).clamp(0.0, 1.0)
+}
+
+/// Points spread over many patch cells.
+fn points() -> impl Iterator<Item = [f64; 2]> {
+    (0..200).flat_map(|i| (0..200).map(move |j| [f64::from(i) * 1.37 + 0.11, f64::from(j) * 1.41 - 0.23]))
+}
+
+#[test]
+fn the_patch_variable_is_uniform() {
+    let mem = memory();
+    let n = 40_000.0;
+    for q in [0.1, 0.25, 0.5, 0.75, 0.9] {
+        let share = points().filter(|p| mem.patches.at(p[0], p[1], 0.0) < q).count() as f64 / n;
+        assert!((share - q).abs() < AREA_TOL, "P(m < {q}) = {share}");
+    }
+}
+
+/// One breaking event covering everything at one instant leaves foam whose area decays as
+/// `e^{−a/τ}` (Monahan 1971): the area law is exact in the mean, whatever the patches' shape.
+#[test]
+fn foam_area_decays_with_monahans_time_constant() {
+    let mem = memory();
+    let t0 = 10.0;
+    for age in [0.5, 1.0, 2.0, 4.0, 5.9] {
+        let t = t0 + age;
+        let mean: f64 = points()
+            .map(|p| mem.compose(p, t, 0.0, 0.0, |s| if (s.time_s - t0).abs() < 1e-9 { 1.0 } else { 0.0 }).white)
+            .sum::<f64>()
+            / 40_000.0;
+        let expected = theta(&mem, age);
+        assert!((mean - expected).abs() < AREA_TOL, "age {age}: area {mean}, e^(-a/τ) {expected}");
+    }
+}
+
+/// A far pixel, whose footprint hides every patch, sees the mean survival exactly.
+#[test]
+fn an_unresolved_pixel_sees_the_mean_survival() {
+    let mem = memory();
+    let w = mem.compose([3.0, 4.0], 11.1, 1e3, 0.0, |s| if s.index == 2 { 1.0 } else { 0.0 });
+    let age = mem.instant(11.1, 2).1;
+    assert!((w.white - theta(&mem, age)).abs() < 1e-12);
+}
+
+#[test]
+fn streaks_are_longer_along_the_wind() {
+    let p = FoamMemoryParams { streak_stretch: 6.0, wind_direction_rad: 0.0, ..FoamMemoryParams::default() };
+    let mem = FoamMemory::new(&p, 0.4).unwrap();
+    // Mean absolute change of the patch noise over 1 m along x (the wind) and along z.
+    let diff = |dx: f64, dz: f64| -> f64 {
+        points().map(|q| (mem.patches.raw(q[0] + dx, q[1] + dz, 0.0) - mem.patches.raw(q[0], q[1], 0.0)).abs()).sum()
+    };
+    let (along, across) = (diff(1.0, 0.0), diff(0.0, 1.0));
+    assert!(along < 0.5 * across, "along {along}, across {across}");
+}
+
+#[test]
+fn white_water_is_a_pure_function_of_place_and_time() {
+    let mem = memory();
+    let src = |s: &MemorySample| (0.5 + 0.5 * (s.time_s * 1.3).sin()).max(0.0);
+    let a = mem.compose([1.0, 2.0], 7.3, 0.1, 0.2, src);
+    let b = memory().compose([1.0, 2.0], 7.3, 0.1, 0.2, src);
+    assert_eq!(a, b);
+    assert!((0.0..=1.0).contains(&a.white) && a.white >= a.active && a.white >= a.residual);
+}
+
+/// On a tile, the foam repeats: the same survivals one tile away, and the patch variable still
+/// uniform.
+#[test]
+fn tiled_foam_repeats_over_its_tile() {
+    for (u10, dir) in [(8.0, 0.3), (18.0, 1.1)] {
+        let tile = 150.0;
+        let params = FoamMemoryParams { tile_m: Some(tile), ..FoamMemoryParams::for_wind(u10, dir, 5) };
+        let mem = FoamMemory::new(&params, 0.4).unwrap();
+        let (mut a, mut b) = ([0.0; MAX_MEMORY_INSTANTS], [0.0; MAX_MEMORY_INSTANTS]);
+        for u in [[1.0, 2.0], [-40.0, 77.0]] {
+            for shift in [[tile, 0.0], [0.0, tile], [-tile, 2.0 * tile]] {
+                let na = mem.survivals(u, 3.3, 0.0, &mut a);
+                let nb = mem.survivals([u[0] + shift[0], u[1] + shift[1]], 3.3, 0.0, &mut b);
+                assert_eq!(na, nb);
+                assert!(a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-9));
+                let (ea, eb) =
+                    (mem.edge_noise(u[0], u[1], 0.0).0, mem.edge_noise(u[0] + shift[0], u[1] + shift[1], 0.0).0);
+                assert!((ea - eb).abs() < 1e-9);
+            }
+        }
+        // The stretch and direction stay near the wind's.
+        let p = periodic_patches(tile, params.patch_wavelength_m, params.streak_stretch, dir);
+        let turn = (p.n as f64).atan2(p.m as f64) - dir;
+        assert!(turn.abs() < 0.1, "{p:?}");
+        let s = p.g as f64 / p.stretch_divisor as f64;
+        assert!((s / params.streak_stretch).ln().abs() < 0.25, "{p:?}");
+        let in_range = points()
+            .filter(|u| {
+                let m = mem.patches.at(u[0], u[1], 0.0);
+                m < 0.3
+            })
+            .count();
+        let share = in_range as f64 / points().count() as f64;
+        assert!((share - 0.3).abs() < 0.03, "{share}");
+    }
+}
+
+#[test]
+fn the_bisection_finds_the_threshold() {
+    let alpha = calibrate_threshold(0.3, (-1.0, 1.0), 1e-10, |a| 0.5 * (1.0 + a));
+    assert!((alpha - (-0.4)).abs() < 1e-9);
+}
+
+proptest::proptest! {
+    #[test]
+    fn the_bisection_meets_any_monotone_cover(
+        root in -3.0..3.0f64, width in 1e-3..2.0f64, target in 0.01..0.99f64, tol in 1e-8..1e-2f64,
+    ) {
+        // A logistic cover through `target` at `root`.
+        let shift = width * (target / (1.0 - target)).ln();
+        let cover = |a: f64| 1.0 / (1.0 + (-(a - root + shift) / width).exp());
+        let alpha = calibrate_threshold(target, (-5.0, 5.0), tol, cover);
+        proptest::prop_assert!((alpha - root).abs() <= tol, "{} against {}", alpha, root);
+    }
+}
+
+#[test]
+fn bad_parameters_are_named() {
+    let e = FoamMemory::new(&FoamMemoryParams { streak_stretch: 0.5, ..FoamMemoryParams::default() }, 0.4);
+    assert!(matches!(e, Err(FoamError::OutOfRange(brine_core::OutOfRange { name: "streak_stretch", .. }))));
+    let e = FoamMemory::new(&FoamMemoryParams { step_s: 10.0, ..FoamMemoryParams::default() }, 0.4);
+    assert!(matches!(e, Err(FoamError::OutOfRange(brine_core::OutOfRange { name: "step_s", .. }))));
+}

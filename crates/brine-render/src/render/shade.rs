@@ -1,0 +1,387 @@
+//! The per-pixel composition: what arrives at the camera along one ray — sea surface, white water, water column, floor, crests, atmosphere, spray and sky.
+
+use super::*;
+
+/// Radiance (linear sRGB, kcd m⁻²) arriving at the camera along the unit direction `d` whose
+/// primary ray found `hit`, and the sample's output variables.
+pub(super) fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, hit: Option<Hit>, cx: &mut Counters) -> Sample {
+    let origin = world.camera.position;
+    if world.underwater {
+        return underwater_radiance(world, field, d, hit.map(|h| (h.t, h.point)), cx);
+    }
+    let faded;
+    let mut weight = 1.0;
+    let (t, p, n, variance) = match hit {
+        Some(hit) => {
+            let (n, v) = field.hit_geometry(hit.point, d, hit.t, world);
+            faded = v;
+            if world.reference && world.detail.is_some() {
+                // The detail normals are not displaced geometry: a sample of the traced surface
+                // stands for a facet of area dA/(n·n_g) seen at v·n, against dA seen at v·n_g.
+                weight = projected_area_weight(-d, n, field.normal(hit.point, d, 0.0, world));
+            }
+            (hit.t, hit.point, n, &faded)
+        }
+        // Beyond the trace distance: the mean plane, with every wave's slopes in the BRDF.
+        None if d.y < 0.0 && world.camera.position.y / -d.y < horizon_distance(world.camera.position.y) => {
+            let t = world.camera.position.y / -d.y;
+            (t, origin + t * d, DVec3::Y, &world.variance_total)
+        }
+        None => {
+            // The sky's own aerosol is Preetham's turbidity: spray is not added to sky rays.
+            let started = cx.clock();
+            let l = sky_radiance(world, d);
+            cx.lap(Stage::Sky, started);
+            return Sample { radiance: l, aov: Aov { depth: f32::INFINITY, ..Aov::default() }, weight: 1.0 };
+        }
+    };
+    let shade = shade_surface(world, field, p, d, t, n, variance, cx);
+    let aov = Aov {
+        depth: t as f32,
+        normal: n.as_vec3().to_array(),
+        foam: shade.foam as f32,
+        whitecap: shade.whitecap as f32,
+        glint: shade.glint as f32,
+        ..Aov::default()
+    };
+    let started = cx.clock();
+    let l = spray(world, d, t, aerial(world, d, t, shade.radiance));
+    cx.lap(Stage::Atmosphere, started);
+    Sample { radiance: l, aov, weight }
+}
+
+/// Mean radius of the Earth (m).
+pub(super) const EARTH_RADIUS_M: f64 = 6.371e6;
+
+/// Distance to the sea horizon from a height `h` above the sea, `√(2Rh + h²)` (m): the Earth's
+/// curvature hides the sea beyond it, so rays that would meet the mean plane farther away see the
+/// sky just above the horizon.
+pub(super) fn horizon_distance(h: f64) -> f64 {
+    let h = h.max(0.01);
+    (2.0 * EARTH_RADIUS_M * h + h * h).sqrt()
+}
+
+/// Sea spray between the eye and the sea `t` metres along `d`:
+/// Beer–Lambert transmittance and single scattering of sun and sky light by the drops
+/// (brine-foam `SprayRay`, Darles et al. 2007 §4.2 corrected). Drops are much larger than the
+/// wavelength, so the extinction is grey; the in-scattered light takes the sun's and sky's colour.
+pub(super) fn spray(world: &World, d: DVec3, t: f64, l0: DVec3) -> DVec3 {
+    let Some(medium) = &world.spray else { return l0 };
+    let y0 = world.camera.position.y.max(0.0);
+    let top = medium.params().max_height_m;
+    let (len, y1) = (t, (y0 + d.y * t).clamp(0.0, top));
+    let sun = world.sky.sun();
+    let scattering = SprayScattering::default();
+    let lit = |sun_irradiance: f64, sky_radiance: f64| {
+        let mut ray = SprayRay::new(
+            medium,
+            &scattering,
+            &SprayLighting {
+                sun_irradiance,
+                sin_sun_elevation: sun.direction.y.clamp(0.01, 1.0),
+                cos_view_sun: d.dot(sun.direction),
+                sky_radiance,
+            },
+        );
+        ray.step(y0, y1, len, 1.0);
+        (ray.radiance(1.0) - ray.radiance(0.0), ray.radiance(0.0))
+    };
+    let (transmittance, in_sun) = lit(if sun.direction.y > 0.0 { 1.0 } else { 0.0 }, 0.0);
+    let (_, in_sky) = lit(0.0, 1.0);
+    let sky_mean = world.sky.horizontal_irradiance_rgb() / std::f64::consts::PI;
+    l0 * transmittance + sun.irradiance_rgb * in_sun + sky_mean * in_sky
+}
+
+/// The share of the sun's and the moon's direct light that reaches a sea point through the
+/// clouds (cloud shadows; brine-sky `Sky::cloud_transmittance`), each in `[0, 1]`.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct DirectLight {
+    sun: f64,
+    moon: f64,
+}
+
+impl DirectLight {
+    pub(super) fn at(world: &World, p: DVec3) -> Self {
+        let sky = &world.sky;
+        Self {
+            sun: sky.cloud_transmittance(p, sky.sun().direction),
+            moon: sky.moon().map_or(1.0, |m| sky.cloud_transmittance(p, m.direction)),
+        }
+    }
+
+    /// `E_d(0⁻)` and its direct part under this light: the discs' shares scaled.
+    pub(super) fn e_below(&self, world: &World) -> (DVec3, DVec3) {
+        let moon = world.e_below_direct - world.e_below_sun;
+        let direct = world.e_below_sun * self.sun + moon * self.moon;
+        (world.e_below - world.e_below_direct + direct, direct)
+    }
+}
+
+/// The shading of a surface point.
+pub(super) struct SurfaceShade {
+    radiance: DVec3,
+    foam: f64,
+    whitecap: f64,
+    /// The sun's glint per unit of its irradiance (sr⁻¹, luminance), for the `glint` AOV.
+    glint: f64,
+}
+
+/// Aerial perspective of the segment from the eye along `d` over `t` metres:
+/// `L = L₀ F_ex + L_in` (Hoffman & Preetham 2002, brine-sky).
+pub(super) fn aerial(world: &World, d: DVec3, t: f64, l0: DVec3) -> DVec3 {
+    if !world.aerial_perspective {
+        return l0;
+    }
+    let ap = world.sky.aerial_perspective(world.camera.position.y.max(0.0), d, t);
+    l0 * ap.extinction + ap.inscatter
+}
+
+/// Everything seen along `d` above the sea: sky, clouds, sun and moon discs.
+pub(super) fn sky_radiance(world: &World, d: DVec3) -> DVec3 {
+    world.sky.background_rgb(d)
+}
+
+/// Where a ray through the water from `p` along the unit `d` meets the floor: `(distance, point)`.
+pub(super) fn floor_hit(world: &World, p: DVec3, d: DVec3, cx: &mut Counters) -> Option<(f64, DVec3)> {
+    let floor = world.floor.as_ref()?;
+    let field = floor.shape.at_time(0.0);
+    let lowered = Lowered::new(&field, floor.depth);
+    let ray = Ray::new(p, d).ok()?;
+    let options = TraceOptions { t_max: 50.0 * floor.depth + 100.0, ..world.trace };
+    trace(&lowered, &ray, &options, &mut cx.secondary).map(|h| (h.t, h.point))
+}
+
+/// Radiance leaving the floor at `point`: Lambertian, lit by the diffuse part of `E_d` and by the
+/// refracted sun on the floor's own slope (`n_f·(−t)/(−t_y)` times its horizontal irradiance),
+/// both attenuated by `e^{−K_d z}` down to its depth (brine-optics `lambertian_floor_radiance`).
+pub(super) fn floor_radiance(world: &World, point: DVec3, light: DirectLight) -> DVec3 {
+    let floor = world.floor.as_ref().expect("floor_radiance needs a floor");
+    let depth = (-point.y).max(0.0);
+    let n = floor.shape.at_time(0.0).normal(point.x, point.z);
+    let t = world.sun_below;
+    let slope_gain = (n.dot(-t)).max(0.0) / (-t.y).max(1e-3);
+    let (e_below, direct) = light.e_below(world);
+    let diffuse = e_below - direct;
+    world.water.lambertian_floor_radiance(floor.albedo, direct * slope_gain + diffuse, depth)
+}
+
+/// Upwelling radiance just below the surface along the downward refracted ray `t` from the
+/// surface point `p`: Darles et al. 2007 Eq. 8–11 (corrected, docs/equations.md §7) with the floor
+/// traced by the same sphere tracer.
+pub(super) fn water_column_radiance(world: &World, p: DVec3, t: DVec3, light: DirectLight, cx: &mut Counters) -> DVec3 {
+    let cos_theta = (-t.y).clamp(0.0, 1.0);
+    let (e_below, _) = light.e_below(world);
+    match floor_hit(world, p, t, cx) {
+        Some((s, q)) => world.water.refracted_ray_radiance(e_below, cos_theta, s, floor_radiance(world, q, light)),
+        None => world.water.refracted_ray_radiance(e_below, cos_theta, f64::INFINITY, DVec3::ZERO),
+    }
+}
+
+/// Radiance leaving the sea surface toward the camera at `p`: Fresnel-weighted sky reflection, the
+/// sun through the ocean BRDF of the unresolved slopes, and the water column through `1 − F` and
+/// the `n²` radiance law (Chen et al. 2007 §3.4; Bruneton et al. 2010 §5; Darles et al. 2007 §4.3).
+#[allow(clippy::too_many_arguments)]
+pub(super) fn shade_surface(
+    world: &World,
+    field: &SeaField<'_>,
+    p: DVec3,
+    d: DVec3,
+    t: f64,
+    normal: DVec3,
+    variance: &SlopeVariance,
+    cx: &mut Counters,
+) -> SurfaceShade {
+    let started = cx.clock();
+    let v = -d;
+    // Grazing views can see a facet from behind; tilt its normal toward the viewer just enough.
+    let mut n = normal;
+    let cos_v = v.dot(n);
+    if cos_v < 1e-3 {
+        n = (n + (1e-3 - cos_v) * v).normalize();
+    }
+    let cos_v = v.dot(n).max(1e-3);
+    // Local wind frame: z along the normal, x downwind.
+    let x = (world.wind - world.wind.dot(n) * n).normalize_or(n.any_orthonormal_vector());
+    let y = n.cross(x);
+    let to_local = |a: DVec3| DVec3::new(a.dot(x), a.dot(y), a.dot(n));
+    // The sky is looked up once, at the mirror direction of the resolved facet, through the
+    // reflection lobe of the unresolved waves (brine-sky `FilteredSky`, a Gaussian of twice their
+    // slope deviation: reflection doubles the facets' tilt), and weighted by the reflectance of
+    // the rough surface they make: the exact Fresnel factor times R(θ_v, σ_v)/R(θ_v, 0) of
+    // Bruneton et al.'s integral (brine-optics `RoughReflectance`), so that the distant, rough sea
+    // is no mirror at grazing views. The filter is normalised: a uniform sky reflects as before.
+    let sigma_v = variance.along(to_local(v)).sqrt();
+    let f = (fresnel_dielectric(cos_v, 1.0, WATER_IOR)
+        * crate::world::rough_reflectance().roughness_factor(cos_v, sigma_v))
+    .clamp(0.0, 1.0);
+    let mut r = reflect(d, n);
+    if r.y < 1e-3 {
+        // A reflection pointing into the sea would hit another wave; take the horizon sky.
+        r = DVec3::new(r.x, 1e-3, r.z).normalize();
+    }
+    let lobe = 2.0 * (0.5 * (variance.sigma_x2() + variance.sigma_y2())).sqrt();
+    let sky = world.filtered_sky.radiance(r, lobe, |r| world.sky.radiance_rgb(r));
+    // Sun glint and moon glitter through the BRDF of the unresolved slopes (brine-optics
+    // `reflected_source_radiance`: a point source or the disc's integral, as the disc's image needs).
+    let glint = |disc: &brine_sky::Disc, rules: &SunDisc| {
+        let l = disc.direction;
+        if l.dot(n) > 0.0 && disc.irradiance_rgb != DVec3::ZERO {
+            let r = reflected_source_radiance(to_local(v), to_local(l), variance, 1.0, rules);
+            disc.irradiance_rgb * r
+        } else {
+            DVec3::ZERO
+        }
+    };
+    let light = DirectLight::at(world, p);
+    let sun_glint = glint(world.sky.sun(), &world.discs.0);
+    let luminance = |c: DVec3| c.dot(DVec3::new(0.2126, 0.7152, 0.0722));
+    let sun_irradiance = luminance(world.sky.sun().irradiance_rgb);
+    let glint_aov = if sun_irradiance > 0.0 { luminance(sun_glint) / sun_irradiance } else { 0.0 };
+    let sun = sun_glint * light.sun
+        + world.sky.moon().zip(world.discs.1.as_ref()).map_or(DVec3::ZERO, |(m, d)| glint(m, d)) * light.moon;
+    cx.lap(Stage::Surface, started);
+    let started = cx.clock();
+    let below = match refract(d, n, 1.0, WATER_IOR) {
+        Some(t) => water_column_radiance(world, p, t, light, cx),
+        None => DVec3::ZERO,
+    };
+    cx.lap(Stage::Water, started);
+    let started = cx.clock();
+    let crest = crest_radiance(world, field, p, v, n, cx) * light.sun;
+    cx.lap(Stage::Subsurface, started);
+    let sea = f * sky + sun + (1.0 - f) * below / (WATER_IOR * WATER_IOR) + crest;
+    let started = cx.clock();
+    let shade = white_water(world, p, d, t, normal, sea, light);
+    cx.lap(Stage::WhiteWater, started);
+    SurfaceShade { glint: glint_aov, ..shade }
+}
+
+/// Foam (Darles et al. 2007 §4.1, Koepke 1984) and active whitecaps (Dupuy & Bruneton 2012) over
+/// the sea radiance at `p`, seen along `d` from `t` metres.
+pub(super) fn white_water(
+    world: &World,
+    p: DVec3,
+    d: DVec3,
+    t: f64,
+    n: DVec3,
+    sea: DVec3,
+    light: DirectLight,
+) -> SurfaceShade {
+    let mut shade = SurfaceShade { radiance: sea, foam: 0.0, whitecap: 0.0, glint: 0.0 };
+    if world.foam.is_none() && world.whitecaps.is_none() && world.white_water.is_none() {
+        return shade;
+    }
+    // Pixel footprint on the sea: the pixel's angle at distance t, stretched by the grazing view
+    // (geometric mean of the two axes); a Gaussian footprint of the same area has σ = ℓ/√12.
+    let footprint = t * world.camera.pixel_angle() / d.y.abs().max(0.05).sqrt();
+    let sun = world.sky.sun();
+    let cos_sun = n.dot(sun.direction);
+    let e_sky = world.sky.horizontal_irradiance_rgb();
+    let e_moon = world.sky.moon().map_or(DVec3::ZERO, |m| m.irradiance_rgb * n.dot(m.direction).max(0.0)) * light.moon;
+    let e_sun = sun.irradiance_rgb * light.sun;
+    let lambert = |r: f64| -> DVec3 {
+        let f = |c: usize| brine_foam::foam_radiance(r, e_sun[c], cos_sun, e_sky[c] + e_moon[c]);
+        DVec3::new(f(0), f(1), f(2))
+    };
+    let cover = world.cover_at(p, n, footprint);
+    if let Some((white, brightness)) = cover.memory {
+        // Fresh foam (Koepke's R_f) where the crest breaks, dimming with the foam's age; ageing
+        // foam thins (Koepke's falling reflectance): the water shows through it. Thick foam in
+        // a lace is brighter than the mean (brightness above 1): opaque, and more reflective.
+        let c = white * brightness;
+        if c > 0.0 {
+            shade.radiance = shade.radiance * (1.0 - c.min(white)) + lambert(FRESH_FOAM_REFLECTANCE) * c;
+        }
+    }
+    if let Some(foam) = &world.foam {
+        shade.radiance = shade.radiance * (1.0 - cover.foam) + lambert(foam.reflectance) * cover.foam;
+    }
+    if world.whitecaps.is_some() {
+        shade.radiance = shade.radiance * (1.0 - cover.whitecap) + lambert(WHITECAP_REFLECTANCE) * cover.whitecap;
+    }
+    shade.foam = cover.foam;
+    shade.whitecap = cover.whitecap;
+    shade
+}
+
+/// Longest path through a crest followed for the dipole (m): beyond it the light is gone.
+pub(super) const MAX_CREST_THICKNESS_M: f64 = 8.0;
+
+/// Sun light through a thin crest (Jensen et al. 2001 dipole, brine-optics `crest_radiance`):
+/// the crest's thickness is the distance from `p` back along the sun's ray refracted by a level
+/// surface to where it entered the water, found by tracing inside the water with the same tracer.
+pub(super) fn crest_radiance(
+    world: &World,
+    field: &SeaField<'_>,
+    p: DVec3,
+    v: DVec3,
+    n: DVec3,
+    cx: &mut Counters,
+) -> DVec3 {
+    let Some(materials) = &world.crest else { return DVec3::ZERO };
+    let sun = world.sky.sun();
+    let l = sun.direction;
+    if sun.irradiance_rgb == DVec3::ZERO || l.dot(n) > 0.2 {
+        return DVec3::ZERO;
+    }
+    let Some(t_sun) = refract(-l, DVec3::Y, 1.0, WATER_IOR) else { return DVec3::ZERO };
+    let Ok(ray) = Ray::new(p - 1e-3 * n, -t_sun) else { return DVec3::ZERO };
+    let Some(exit) = field.trace_within(&ray, MAX_CREST_THICKNESS_M, world, &mut cx.secondary) else {
+        return DVec3::ZERO;
+    };
+    let n_entry = field.normal(exit.point, -t_sun, 0.0, world);
+    let cos_i = l.dot(n_entry);
+    if cos_i <= 0.0 {
+        return DVec3::ZERO;
+    }
+    let cos_o = v.dot(n).clamp(0.0, 1.0);
+    let e = sun.irradiance_rgb;
+    DVec3::new(
+        materials[0].crest_radiance(e.x, cos_i, cos_o, exit.t),
+        materials[1].crest_radiance(e.y, cos_i, cos_o, exit.t),
+        materials[2].crest_radiance(e.z, cos_i, cos_o, exit.t),
+    )
+}
+
+/// Diffuse radiance of the water body at depth `z` (m), `L_df(0) e^{−K_d z}`, toward a camera
+/// under water: the in-water "background" (docs/equations.md §7, isotropic approximation).
+pub(super) fn water_background(world: &World, z: f64) -> DVec3 {
+    let l0 = world.water.diffuse_upwelling_radiance(world.e_below);
+    l0 * (-world.water.k_d * z.max(0.0)).exp()
+}
+
+/// Radiance reaching a camera under water along `d`: the underside of the surface (Snell's window:
+/// the sky refracted through the surface inside the critical angle, total internal reflection of
+/// the water outside it) or the floor, attenuated by `e^{−c s}` over the path and filled in by the
+/// background radiance at the camera's depth (single-scattering equilibrium approximation).
+pub(super) fn underwater_radiance(
+    world: &World,
+    field: &SeaField<'_>,
+    d: DVec3,
+    surface: Option<(f64, DVec3)>,
+    cx: &mut Counters,
+) -> Sample {
+    let origin = world.camera.position;
+    let z_cam = -origin.y;
+    let background = water_background(world, z_cam);
+    let (s, source, aov) = if let Some((t, p)) = surface {
+        let n = field.normal(p, d, t, world);
+        let window = brine_optics::SnellWindow::new(d, n);
+        let above = match window.refracted {
+            Some(tr) => sky_radiance(world, if tr.y > 1e-3 { tr } else { DVec3::new(tr.x, 1e-3, tr.z).normalize() }),
+            None => DVec3::ZERO,
+        };
+        let l = window.radiance(above, water_background(world, 0.0));
+        (t, l, Aov { depth: t as f32, normal: (-n).as_vec3().to_array(), ..Aov::default() })
+    } else if let Some((t, q)) = floor_hit(world, origin, d, cx) {
+        (
+            t,
+            floor_radiance(world, q, DirectLight::at(world, q)),
+            Aov { depth: t as f32, normal: [0.0, 1.0, 0.0], ..Aov::default() },
+        )
+    } else {
+        return Sample { radiance: background, aov: Aov { depth: f32::INFINITY, ..Aov::default() }, weight: 1.0 };
+    };
+    let transmittance = (-world.water.c * s).exp();
+    Sample { radiance: source * transmittance + background * (DVec3::ONE - transmittance), aov, weight: 1.0 }
+}

@@ -1,0 +1,135 @@
+/// Two syntheses of the same trig polynomials (different packing): FFT rounding.
+const SAME_FIELDS: f64 = 1e-12;
+
+#[test]
+fn the_jacobian_fields_are_those_of_the_full_synthesis() {
+    let pm = crate::PiersonMoskowitz::from_u10(12.0).unwrap();
+    let spreading = crate::CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
+    let options = FftOptions { resolution: 64, ..FftOptions::for_spectrum(&pm, 2) };
+    let ocean = FftOcean::new(&pm, &spreading, &options).unwrap();
+    let full = ocean.rest_fields(3.7);
+    let jac = ocean.rest_jacobian_fields(3.7, 0.0);
+    assert_eq!(jac.len(), full.len());
+    for (a, b) in full.iter().zip(&jac) {
+        for i in 0..a.dxx.len() {
+            assert!((a.dxx[i] - b.dxx[i]).abs() < SAME_FIELDS);
+            assert!((a.dzz[i] - b.dzz[i]).abs() < SAME_FIELDS);
+            assert!((a.dxz[i] - b.dxz[i]).abs() < SAME_FIELDS);
+        }
+    }
+    // A footprint that washes out the second cascade's band keeps only the first.
+    assert_eq!(ocean.rest_jacobian_fields(3.7, GAUSSIAN_KEEP / (ocean.band(1).0 * 0.99)).len(), 1);
+    assert!(ocean.jacobian_variance_removed(0.0, 1.0).abs() < f64::MIN_POSITIVE);
+}
+
+use super::*;
+use crate::Elfouhaily;
+
+/// FFT rounding: ~10⁻¹⁵ of the sum of `|h̃|` times the largest factor (`k ≤ 0.6` rad/m here,
+/// at most 1 for `D`); 10⁻¹² with margin for the `N log N` butterflies.
+const FFT_ROUNDING_REL: f64 = 1e-12;
+
+/// `ω/(2π/T)` of a looped mode is an integer up to the rounding of `ω` (~10⁻¹⁵ relative of
+/// quotients up to ~10⁵).
+const MULTIPLE_ABS: f64 = 1e-9;
+
+/// Rounding of a frequency (rad/s, below 100).
+const ROUND_ABS: f64 = 1e-12;
+
+fn small_ocean(n: usize, loop_period: Option<f64>) -> FftOcean {
+    let e = Elfouhaily::fully_developed(8.0).unwrap();
+    let d = e.spreading(crate::Directions::Downwind);
+    let options = FftOptions {
+        resolution: n,
+        tile_sizes: vec![300.0, 300.0 / 6.854_101_966_249_685],
+        choppiness: 0.8,
+        loop_period,
+        seed: 9,
+        wind_direction: 0.4,
+        tiled: false,
+    };
+    FftOcean::new(&e, &d, &options).unwrap()
+}
+
+/// Direct evaluation of the trig polynomials at `(x, z)`:
+/// `(h, ∂h/∂x, ∂h/∂z, Dₓ, D_z, ∂Dₓ/∂x, ∂D_z/∂z, ∂Dₓ/∂z)`.
+fn direct(ocean: &FftOcean, c: usize, t: f64, x: f64, z: f64) -> [f64; 8] {
+    let mut out = [0.0; 8];
+    for ((kx, kz), (re, im)) in ocean.amplitudes_at(c, t) {
+        let h = Complex64::new(re, im);
+        let e = Complex64::from_polar(1.0, kx * x + kz * z);
+        let v = h * e; // h̃ e^{ik·x}
+        let iv = Complex64::new(-v.im, v.re);
+        let k = (kx * kx + kz * kz).sqrt();
+        out[0] += v.re;
+        out[1] += (iv * kx).re;
+        out[2] += (iv * kz).re;
+        out[3] += (iv * (kx / k)).re;
+        out[4] += (iv * (kz / k)).re;
+        out[5] -= (v * (kx * kx / k)).re;
+        out[6] -= (v * (kz * kz / k)).re;
+        out[7] -= (v * (kx * kz / k)).re;
+    }
+    out
+}
+
+#[test]
+fn fft_fields_equal_the_direct_trig_sums() {
+    let ocean = small_ocean(64, None);
+    let t = 3.7;
+    let fields = ocean.rest_fields(t);
+    for (c, f) in fields.iter().enumerate() {
+        let dx = f.tile_size / f.resolution as f64;
+        let scale: f64 = ocean.amplitudes_at(c, t).iter().map(|(_, (a, b))| a.hypot(*b)).sum::<f64>();
+        for &(i, j) in &[(0usize, 0usize), (3, 17), (63, 5), (32, 40), (9, 62)] {
+            let idx = j * 64 + i;
+            let d = direct(&ocean, c, t, i as f64 * dx, j as f64 * dx);
+            let got = [
+                f.height[idx],
+                f.slope_x[idx],
+                f.slope_z[idx],
+                f.displacement_x[idx],
+                f.displacement_z[idx],
+                f.dxx[idx],
+                f.dzz[idx],
+                f.dxz[idx],
+            ];
+            for q in 0..8 {
+                assert!(
+                    (got[q] - d[q]).abs() < FFT_ROUNDING_REL * scale,
+                    "cascade {c} field {q} at ({i}, {j}): {} vs {}",
+                    got[q],
+                    d[q]
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn seeding_is_keyed_by_the_wave_vector() {
+    let a = small_ocean(64, None);
+    let b = small_ocean(128, None);
+    for c in 0..2 {
+        for (nx, nz) in [(1, 0), (-3, 5), (7, -2), (0, 4)] {
+            let (x, y) = (a.amplitude(c, nx, nz), b.amplitude(c, nx, nz));
+            assert!(x == y, "cascade {c} ({nx}, {nz}): {x:?} vs {y:?}");
+        }
+    }
+    assert!(word_position(1, 2) != word_position(2, 1) && word_position(-1, 0) != word_position(1, 0));
+}
+
+#[test]
+fn looping_quantises_every_frequency() {
+    let ocean = small_ocean(64, Some(40.0));
+    let base = TAU / 40.0;
+    for c in 0..2 {
+        for m in &ocean.cascades[c].modes {
+            let q = m.omega / base;
+            assert!((q - q.round()).abs() < MULTIPLE_ABS && q >= 1.0 - ROUND_ABS);
+            // Rounded to the nearest multiple (or 1): off by at most half a step.
+            let exact = ocean.dispersion.omega(m.k);
+            assert!((m.omega - exact).abs() <= 0.5 * base + ROUND_ABS || (m.omega - base).abs() < ROUND_ABS);
+        }
+    }
+}
