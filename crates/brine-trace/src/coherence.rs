@@ -2,7 +2,7 @@
 
 use glam::DVec3;
 
-use crate::{Hit, LipschitzSum, Ray, TraceOptions, TraceStats, trace};
+use crate::{Hit, LipschitzSum, Ray, RaySpan, TraceOptions, TraceStats, trace};
 
 /// Nodes with at most this many rays trace their rays one by one (a cone costs about as much as
 /// the steps it saves for fewer rays).
@@ -112,7 +112,12 @@ impl<S: LipschitzSum + ?Sized> Tile<'_, '_, S> {
         let mut t_c = t_start;
         if let Ok(ray) = Ray::new(self.origin, axis) {
             let before = self.stats.evaluations;
-            t_c = self.surface.certify_cone(&ray, half_angle, t_start, self.options.t_max, self.options, self.stats);
+            t_c = self.surface.certify_cone(
+                RaySpan::new(&ray, t_start, self.options.t_max),
+                half_angle,
+                self.options,
+                self.stats,
+            );
             if let Some(c) = self.costs.as_deref_mut() {
                 let share = (self.stats.evaluations - before) as f64 / (w * h) as f64;
                 for y in y0..y0 + h {

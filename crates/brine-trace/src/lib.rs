@@ -125,7 +125,7 @@ pub use footprint::{
 };
 pub use lowered::Lowered;
 pub use options::{Hit, Method, Step, StepKind, TraceOptions, TraceOptionsError};
-pub use ray::{Ray, RayError};
+pub use ray::{Ray, RayError, RaySpan};
 pub use refine::{bisect_crossing, refine_crossing};
 pub use segment::{SEGMENT_GROWTH, local_lipschitz, trace_segments};
 pub use stats::TraceStats;

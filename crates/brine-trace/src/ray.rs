@@ -56,3 +56,22 @@ impl Ray {
         self.origin + t * self.direction
     }
 }
+
+/// The part of a ray to trace: `t ∈ [t_enter, t_exit]` (distances along the ray), already
+/// clipped to the surface's zero-set bounds by the caller.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RaySpan<'r> {
+    /// The ray.
+    pub ray: &'r Ray,
+    /// Start of the interval (distance along the ray, `≥ 0`).
+    pub t_enter: f64,
+    /// End of the interval; the interval is empty unless `t_enter < t_exit`.
+    pub t_exit: f64,
+}
+
+impl<'r> RaySpan<'r> {
+    /// `ray` on `[t_enter, t_exit]`.
+    pub const fn new(ray: &'r Ray, t_enter: f64, t_exit: f64) -> Self {
+        Self { ray, t_enter, t_exit }
+    }
+}

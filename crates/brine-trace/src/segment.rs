@@ -3,7 +3,7 @@
 
 use crate::options::log_step;
 use crate::tiered::refine_tiers;
-use crate::{Hit, Ray, RayTiers, Step, StepKind, TierBounds, TierScratch, TraceOptions, TraceStats};
+use crate::{Hit, RaySpan, RayTiers, Step, StepKind, TierBounds, TierScratch, TraceOptions, TraceStats};
 
 /// Growth factor `κ` of the candidate segment (Galin et al. 2020, Algorithm 2: after a step `tₖ`
 /// the next candidate segment is `κ tₖ`; `κ > 1` lets the segment grow after a step clamped to
@@ -76,8 +76,8 @@ pub fn local_lipschitz(bounds: &TierBounds, slope: f64, length: f64) -> f64 {
 /// - `scratch`: reusable buffers.
 /// - `tiers`: the function along the ray; their bounds must hold from the point where they are
 ///   read to `t_exit` (the [`RayTiers`] contract).
-/// - `ray`: the ray (only used to report the hit point).
-/// - `t_enter`, `t_exit`: the traced interval (m), already clipped.
+/// - `span`: the ray (only used to report the hit point) and the traced interval
+///   `[t_enter, t_exit]` (m), already clipped.
 /// - `options`: minimum step, tolerance, step cap, footprint (for bound refreshing).
 /// - `stats`: counters; one evaluation per point visited (all tiers), terms as reported by the
 ///   tiers.
@@ -89,17 +89,15 @@ pub fn local_lipschitz(bounds: &TierBounds, slope: f64, length: f64) -> f64 {
 /// # References
 /// Galin et al. 2020, Algorithm 2 (segment tracing: `tₖ = |f|/λ_S`, clamped to the segment `S`,
 /// next segment `κ tₖ`); Hart 1996 (sphere tracing).
-#[allow(clippy::too_many_arguments)]
 pub fn trace_segments<R: RayTiers + ?Sized>(
     scratch: &mut TierScratch,
     tiers: &mut R,
-    ray: &Ray,
-    t_enter: f64,
-    t_exit: f64,
+    span: RaySpan<'_>,
     options: &TraceOptions,
     stats: &mut TraceStats,
     mut log: Option<&mut Vec<Step>>,
 ) -> Option<Hit> {
+    let RaySpan { ray, t_enter, t_exit } = span;
     let n = tiers.tier_count();
     if n == 0 || !(t_enter < t_exit) {
         return None;

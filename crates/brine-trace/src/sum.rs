@@ -2,7 +2,7 @@
 
 use glam::DVec3;
 
-use crate::{Aabb, Hit, Ray, Step, TierScratch, TraceOptions, TraceStats};
+use crate::{Aabb, Hit, RaySpan, Step, TierScratch, TraceOptions, TraceStats};
 
 /// An implicit function `F(p) = Σᵢ nᵢ(p)` of `N` bounded, Lipschitz-continuous components.
 ///
@@ -112,7 +112,7 @@ pub trait LipschitzSum {
         Aabb::EVERYTHING
     }
 
-    /// Traces `ray` on `[t_enter, t_exit]` (already clipped to the zero-set bounds) with
+    /// Traces `span`, a ray on `[t_enter, t_exit]` (already clipped to the zero-set bounds) with
     /// [`crate::Method::Tiered`], or with [`crate::Method::Segment`] when `options.method` says so
     /// (both step on the same [`crate::RayTiers`]; [`crate::trace_tiers_with`] dispatches).
     ///
@@ -122,15 +122,13 @@ pub trait LipschitzSum {
     /// given, receives every step (see [`crate::trace_logged`]).
     fn trace_tiered(
         &self,
-        ray: &Ray,
-        t_enter: f64,
-        t_exit: f64,
+        span: RaySpan<'_>,
         options: &TraceOptions,
         stats: &mut TraceStats,
         log: Option<&mut Vec<Step>>,
     ) -> Option<Hit> {
-        let mut tiers = crate::ComponentTiers::new(self, ray, t_enter, t_exit, options.footprint_angle);
-        crate::trace_tiers(&mut tiers, ray, t_enter, t_exit, options, stats, log)
+        let mut tiers = crate::ComponentTiers::new(self, span.ray, span.t_enter, span.t_exit, options.footprint_angle);
+        crate::trace_tiers(&mut tiers, span, options, stats, log)
     }
 
     /// Image coherence: the largest `t_c` such that no ray from `ray`'s origin within
@@ -139,28 +137,11 @@ pub trait LipschitzSum {
     ///
     /// The default uses [`crate::ComponentTiers`] and gives up (returns `t_enter`) with footprint
     /// fading, whose weights differ from ray to ray; implementors may override it.
-    fn certify_cone(
-        &self,
-        ray: &Ray,
-        half_angle: f64,
-        t_enter: f64,
-        t_exit: f64,
-        options: &TraceOptions,
-        stats: &mut TraceStats,
-    ) -> f64 {
+    fn certify_cone(&self, span: RaySpan<'_>, half_angle: f64, options: &TraceOptions, stats: &mut TraceStats) -> f64 {
         if options.footprint_angle > 0.0 {
-            return t_enter;
+            return span.t_enter;
         }
-        let mut tiers = crate::ComponentTiers::new(self, ray, t_enter, t_exit, 0.0);
-        crate::certify_cone_with(
-            &mut TierScratch::default(),
-            &mut tiers,
-            ray,
-            half_angle,
-            t_enter,
-            t_exit,
-            options,
-            stats,
-        )
+        let mut tiers = crate::ComponentTiers::new(self, span.ray, span.t_enter, span.t_exit, 0.0);
+        crate::certify_cone_with(&mut TierScratch::default(), &mut tiers, span, half_angle, options, stats)
     }
 }

@@ -85,6 +85,6 @@ fn trace_impl<S: LipschitzSum + ?Sized>(
         }
         Method::Darles => darles_trace(surface, ray, t0, t1, options, stats, log),
         // Both trace the surface's tiers; `trace_tiers_with` dispatches on the method.
-        Method::Tiered | Method::Segment => surface.trace_tiered(ray, t0, t1, options, stats, log),
+        Method::Tiered | Method::Segment => surface.trace_tiered(crate::RaySpan::new(ray, t0, t1), options, stats, log),
     }
 }

@@ -3,7 +3,7 @@
 
 mod common;
 
-use brine_trace::{LipschitzSum, Method, Ray, TraceOptions, TraceStats, trace, trace_temporal, trace_tile};
+use brine_trace::{LipschitzSum, Method, Ray, RaySpan, TraceOptions, TraceStats, trace, trace_temporal, trace_tile};
 use brine_waves::{TracedTrochoids, TrochoidSum};
 use common::{check_first_crossing, dense_crossings, random_set};
 use glam::DVec3;
@@ -51,7 +51,7 @@ proptest! {
         let axis = DVec3::new(pitch.cos(), -pitch.sin(), 0.3).normalize();
         let ray = Ray::new(origin, axis).unwrap();
         let o = options(footprint);
-        let t_c = sea.certify_cone(&ray, half_angle, 0.0, o.t_max, &o, &mut TraceStats::default());
+        let t_c = sea.certify_cone(RaySpan::new(&ray, 0.0, o.t_max), half_angle, &o, &mut TraceStats::default());
         prop_assert!(t_c >= 0.0 && t_c <= o.t_max);
         // The origin is ΣA/2 + 0.5 m above the highest crest: the sea's override (not the trait's
         // default, which gives up under fading) certifies at least its first step.

@@ -8,7 +8,7 @@ mod common;
 use std::f64::consts::PI;
 use std::sync::OnceLock;
 
-use brine_trace::{LipschitzSum, Method, Ray, TraceOptions, TraceStats, footprint_weight, trace};
+use brine_trace::{LipschitzSum, Method, Ray, RaySpan, TraceOptions, TraceStats, footprint_weight, trace};
 use brine_waves::{Directions, Elfouhaily, FFT_DEFAULT_TILE_RATIO, FftFrame, FftOcean, FftOptions};
 use glam::DVec3;
 use proptest::prelude::*;
@@ -238,7 +238,7 @@ proptest! {
         let o = TraceOptions { method: Method::Tiered, t_max: 200.0, footprint_angle: footprint, ..TraceOptions::default() };
         // A cone can only start where its axis has not crossed (as in the quadtree).
         let t_enter = if f_along(frame, &ray, footprint, t_enter) > 0.0 { t_enter } else { 0.0 };
-        let t_c = frame.certify_cone(&ray, half_angle, t_enter, o.t_max, &o, &mut TraceStats::default());
+        let t_c = frame.certify_cone(RaySpan::new(&ray, t_enter, o.t_max), half_angle, &o, &mut TraceStats::default());
         prop_assert!(t_c >= t_enter && t_c <= o.t_max, "t_c = {t_c}");
         // A cone that certifies nothing (t_c = t_enter) claims nothing about its rays.
         for k in (0..8).filter(|_| t_c > t_enter) {
@@ -284,7 +284,12 @@ fn a_cone_holds_a_cascade_that_fades_at_a_trough() {
                     continue;
                 }
                 let half_angle = 1e-3;
-                let t_c = frame.certify_cone(&ray, half_angle, t_enter, opts.t_max, &opts, &mut TraceStats::default());
+                let t_c = frame.certify_cone(
+                    RaySpan::new(&ray, t_enter, opts.t_max),
+                    half_angle,
+                    &opts,
+                    &mut TraceStats::default(),
+                );
                 assert_cone_rays_clear(
                     &frame,
                     &ray,
@@ -343,8 +348,12 @@ fn a_cone_stops_at_its_reach_before_a_cascade_fades() {
                         ..TraceOptions::default()
                     };
                     let half_angle = 1e-4;
-                    let t_c =
-                        frame.certify_cone(&ray, half_angle, t_enter, opts.t_max, &opts, &mut TraceStats::default());
+                    let t_c = frame.certify_cone(
+                        RaySpan::new(&ray, t_enter, opts.t_max),
+                        half_angle,
+                        &opts,
+                        &mut TraceStats::default(),
+                    );
                     let what = format!("tile {tile}, dip {dip}, azimuth {azimuth}");
                     assert_cone_rays_clear(&frame, &ray, half_angle, footprint, t_enter, t_c, &what);
                     checked += 1;

@@ -1,7 +1,7 @@
 //! The tiered method: frequency pruning and the certified second-order step.
 
 use crate::options::log_step;
-use crate::{Hit, Ray, RayTiers, Step, StepBound, StepKind, TierBounds, TraceOptions, TraceStats, refine_crossing};
+use crate::{Hit, RaySpan, RayTiers, Step, StepBound, StepKind, TierBounds, TraceOptions, TraceStats, refine_crossing};
 
 mod refine;
 mod scratch;
@@ -37,14 +37,12 @@ const RELAXATION: f64 = 1.4;
 /// The first sign change on `[t_enter, t_exit]`, or `None`.
 pub fn trace_tiers<R: RayTiers + ?Sized>(
     tiers: &mut R,
-    ray: &Ray,
-    t_enter: f64,
-    t_exit: f64,
+    span: RaySpan<'_>,
     options: &TraceOptions,
     stats: &mut TraceStats,
     log: Option<&mut Vec<Step>>,
 ) -> Option<Hit> {
-    trace_tiers_with(&mut TierScratch::default(), tiers, ray, t_enter, t_exit, options, stats, log)
+    trace_tiers_with(&mut TierScratch::default(), tiers, span, options, stats, log)
 }
 
 /// The tiered method ([`crate::Method::Tiered`]) on a ray given as tiers `F = Σⱼ Tⱼ`, or segment
@@ -69,8 +67,8 @@ pub fn trace_tiers<R: RayTiers + ?Sized>(
 /// # Arguments
 /// - `scratch`: reusable buffers.
 /// - `tiers`: the function along the ray.
-/// - `ray`: the ray (only used to report the hit point).
-/// - `t_enter`, `t_exit`: the traced interval (m), already clipped.
+/// - `span`: the ray (only used to report the hit point) and the traced interval
+///   `[t_enter, t_exit]` (m), already clipped.
 /// - `options`: minimum step, tolerance, step cap, footprint (for bound refreshing).
 /// - `stats`: counters; one evaluation per point visited, terms as reported by the tiers.
 /// - `log`: receives each step when given.
@@ -83,21 +81,18 @@ pub fn trace_tiers<R: RayTiers + ?Sized>(
 /// frequencies); Keinert et al. 2014 (over-relaxation); docs/equations.md §2. The second-order bound
 /// holds on the step only, like the local bounds of segment tracing (Galin et al. 2020), but it is
 /// Brine's; segment tracing proper is [`crate::Method::Segment`].
-#[allow(clippy::too_many_arguments)]
 pub fn trace_tiers_with<R: RayTiers + ?Sized>(
     scratch: &mut TierScratch,
     tiers: &mut R,
-    ray: &Ray,
-    t_enter: f64,
-    t_exit: f64,
+    span: RaySpan<'_>,
     options: &TraceOptions,
     stats: &mut TraceStats,
     log: Option<&mut Vec<Step>>,
 ) -> Option<Hit> {
     if options.method == crate::Method::Segment {
-        return crate::trace_segments(scratch, tiers, ray, t_enter, t_exit, options, stats, log);
+        return crate::trace_segments(scratch, tiers, span, options, stats, log);
     }
-    match run(scratch, tiers, Span { ray, t_enter, t_exit }, options, stats, Mode::Ray(log)) {
+    match run(scratch, tiers, span, options, stats, Mode::Ray(log)) {
         Outcome::Hit(hit) => Some(hit),
         Outcome::Miss | Outcome::Free(_) => None,
     }
@@ -122,21 +117,18 @@ pub fn trace_tiers_with<R: RayTiers + ?Sized>(
 /// # References
 /// Darles et al. 2007 §3.3 (image coherence: unbounding spheres reused by neighbouring rays, in
 /// a quadtree); Hart 1996 (Lipschitz bound).
-#[allow(clippy::too_many_arguments)]
 pub fn certify_cone_with<R: RayTiers + ?Sized>(
     scratch: &mut TierScratch,
     tiers: &mut R,
-    ray: &Ray,
+    span: RaySpan<'_>,
     half_angle: f64,
-    t_enter: f64,
-    t_exit: f64,
     options: &TraceOptions,
     stats: &mut TraceStats,
 ) -> f64 {
-    match run(scratch, tiers, Span { ray, t_enter, t_exit }, options, stats, Mode::Cone(half_angle)) {
+    match run(scratch, tiers, span, options, stats, Mode::Cone(half_angle)) {
         Outcome::Free(t) => t,
-        Outcome::Miss => t_exit,
-        Outcome::Hit(_) => t_enter,
+        Outcome::Miss => span.t_exit,
+        Outcome::Hit(_) => span.t_enter,
     }
 }
 
@@ -159,23 +151,15 @@ enum Mode<'l> {
     Cone(f64),
 }
 
-/// The interval `[t_enter, t_exit]` (m) of a ray to trace, already clipped.
-#[derive(Debug, Clone, Copy)]
-struct Span<'r> {
-    ray: &'r Ray,
-    t_enter: f64,
-    t_exit: f64,
-}
-
 fn run<R: RayTiers + ?Sized>(
     scratch: &mut TierScratch,
     tiers: &mut R,
-    span: Span<'_>,
+    span: RaySpan<'_>,
     options: &TraceOptions,
     stats: &mut TraceStats,
     mode: Mode<'_>,
 ) -> Outcome {
-    let Span { ray, t_enter, t_exit } = span;
+    let RaySpan { ray, t_enter, t_exit } = span;
     let (mut log, cone) = match mode {
         Mode::Ray(log) => (log, 0.0),
         Mode::Cone(half_angle) => (None, half_angle),

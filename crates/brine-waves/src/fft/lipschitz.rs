@@ -9,8 +9,9 @@
 use std::cell::RefCell;
 
 use brine_trace::{
-    Aabb, FADE_CURVATURE, FADE_SLOPE, Hit, LipschitzSum, Ray, RayTiers, Step, TierBounds, TierSample, TierScratch,
-    TraceOptions, TraceStats, certify_cone_with, footprint_weight, footprint_weight_slope, trace_tiers_with,
+    Aabb, FADE_CURVATURE, FADE_SLOPE, Hit, LipschitzSum, Ray, RaySpan, RayTiers, Step, TierBounds, TierSample,
+    TierScratch, TraceOptions, TraceStats, certify_cone_with, footprint_weight, footprint_weight_slope,
+    trace_tiers_with,
 };
 use glam::DVec3;
 
@@ -82,18 +83,17 @@ impl LipschitzSum for FftFrame {
 
     fn trace_tiered(
         &self,
-        ray: &Ray,
-        t_enter: f64,
-        t_exit: f64,
+        span: RaySpan<'_>,
         options: &TraceOptions,
         stats: &mut TraceStats,
         log: Option<&mut Vec<Step>>,
     ) -> Option<Hit> {
+        let RaySpan { ray, t_exit, .. } = span;
         SCRATCH.with(|cell| {
             let mut guard = cell.borrow_mut();
             let (scratch, state) = &mut *guard;
             let mut tiers = CascadeTiers::new(self, state, ray, t_exit, options.footprint_angle, 0.0);
-            trace_tiers_with(scratch, &mut tiers, ray, t_enter, t_exit, options, stats, log)
+            trace_tiers_with(scratch, &mut tiers, span, options, stats, log)
         })
     }
 
@@ -101,29 +101,14 @@ impl LipschitzSum for FftFrame {
     /// (weights that differ from ray to ray) a cascade that fades for some ray of the cone before
     /// the cone's end is held at its lower bound `min(0, −max H)` (that of `w·n` for any weight
     /// `w ∈ [0, 1]`), the others are used whole; as for the trochoids, a downward cone then
-    /// certifies at most `CONE_REACH` (traced.rs) times where it starts or meets the slab.
-    fn certify_cone(
-        &self,
-        ray: &Ray,
-        half_angle: f64,
-        t_enter: f64,
-        t_exit: f64,
-        options: &TraceOptions,
-        stats: &mut TraceStats,
-    ) -> f64 {
-        let (o, d) = (ray.origin(), ray.direction());
-        let t_exit = if options.footprint_angle > 0.0 && d.y < 0.0 {
-            let top = self.height_bounds().1;
-            let slab = if o.y > top { (o.y - top) / -d.y } else { 0.0 };
-            t_exit.min(crate::tracing::traced::CONE_REACH * t_enter.max(slab).max(1.0))
-        } else {
-            t_exit
-        };
+    /// certifies at most `CONE_REACH` times where it starts or meets the slab (`cone_span`).
+    fn certify_cone(&self, span: RaySpan<'_>, half_angle: f64, options: &TraceOptions, stats: &mut TraceStats) -> f64 {
+        let span = crate::tracing::traced::cone_span(span, self.height_bounds().1, options.footprint_angle);
         SCRATCH.with(|cell| {
             let mut guard = cell.borrow_mut();
             let (scratch, state) = &mut *guard;
-            let mut tiers = CascadeTiers::new(self, state, ray, t_exit, options.footprint_angle, half_angle);
-            certify_cone_with(scratch, &mut tiers, ray, half_angle, t_enter, t_exit, options, stats)
+            let mut tiers = CascadeTiers::new(self, state, span.ray, span.t_exit, options.footprint_angle, half_angle);
+            certify_cone_with(scratch, &mut tiers, span, half_angle, options, stats)
         })
     }
 }

@@ -46,19 +46,18 @@ impl LipschitzSum for GerstnerField<'_> {
     /// faded one component at a time: they share the inversion); without, the two components.
     fn trace_tiered(
         &self,
-        ray: &brine_trace::Ray,
-        t_enter: f64,
-        t_exit: f64,
+        span: brine_trace::RaySpan<'_>,
         options: &brine_trace::TraceOptions,
         stats: &mut brine_trace::TraceStats,
         log: Option<&mut Vec<brine_trace::Step>>,
     ) -> Option<brine_trace::Hit> {
+        let brine_trace::RaySpan { ray, t_enter, t_exit } = span;
         if options.footprint_angle > 0.0 {
             let mut tiers = FadedGerstnerRay::new(self, ray, t_exit, options.footprint_angle);
-            brine_trace::trace_tiers(&mut tiers, ray, t_enter, t_exit, options, stats, log)
+            brine_trace::trace_tiers(&mut tiers, span, options, stats, log)
         } else {
             let mut tiers = brine_trace::ComponentTiers::new(self, ray, t_enter, t_exit, 0.0);
-            brine_trace::trace_tiers(&mut tiers, ray, t_enter, t_exit, options, stats, log)
+            brine_trace::trace_tiers(&mut tiers, span, options, stats, log)
         }
     }
 }

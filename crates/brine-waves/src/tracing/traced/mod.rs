@@ -9,8 +9,8 @@ use std::cell::RefCell;
 use std::f64::consts::TAU;
 
 use brine_trace::{
-    Aabb, FADE_CURVATURE, FADE_SLOPE, Hit, LipschitzSum, Ray, RayTiers, Step, TierBounds, TierSample, TierScratch,
-    TraceOptions, TraceStats, certify_cone_with, footprint_weight, trace_tiers_with,
+    Aabb, FADE_CURVATURE, FADE_SLOPE, Hit, LipschitzSum, Ray, RaySpan, RayTiers, Step, TierBounds, TierSample,
+    TierScratch, TraceOptions, TraceStats, certify_cone_with, footprint_weight, trace_tiers_with,
 };
 use glam::{DVec2, DVec3};
 use wide::{f32x8, f64x4};
@@ -458,6 +458,20 @@ impl TracedTrochoids {
 /// 1.4, **1.136 M at 1.5**, 1.137 M at 1.75, 1.139 M at 2, 1.157 M at 4, 1.193 M at 8.
 pub(crate) const CONE_REACH: f64 = 1.5;
 
+/// The part of `span` a cone of primary rays around it certifies: with footprint fading
+/// (`footprint_angle > 0`) a downward cone ends at [`CONE_REACH`] times where it starts or meets
+/// the slab below `top` (m), or 1 m, whichever is farthest; otherwise the whole span.
+pub(crate) fn cone_span(span: RaySpan<'_>, top: f64, footprint_angle: f64) -> RaySpan<'_> {
+    let RaySpan { ray, t_enter, t_exit } = span;
+    let (o, d) = (ray.origin(), ray.direction());
+    if footprint_angle > 0.0 && d.y < 0.0 {
+        let slab = if o.y > top { (o.y - top) / -d.y } else { 0.0 };
+        RaySpan::new(ray, t_enter, t_exit.min(CONE_REACH * t_enter.max(slab).max(1.0)))
+    } else {
+        span
+    }
+}
+
 impl LipschitzSum for TracedTrochoids {
     fn component_count(&self) -> usize {
         self.waves.len() + 1
@@ -538,45 +552,30 @@ impl LipschitzSum for TracedTrochoids {
 
     fn trace_tiered(
         &self,
-        ray: &Ray,
-        t_enter: f64,
-        t_exit: f64,
+        span: RaySpan<'_>,
         options: &TraceOptions,
         stats: &mut TraceStats,
         log: Option<&mut Vec<Step>>,
     ) -> Option<Hit> {
+        let RaySpan { ray, t_exit, .. } = span;
         SCRATCH.with(|cell| {
             let mut guard = cell.borrow_mut();
             let (scratch, state) = &mut *guard;
             let mut tiers = SeaTiers::new(self, state, ray, t_exit, options.footprint_angle, 0.0);
-            trace_tiers_with(scratch, &mut tiers, ray, t_enter, t_exit, options, stats, log)
+            trace_tiers_with(scratch, &mut tiers, span, options, stats, log)
         })
     }
 
-    fn certify_cone(
-        &self,
-        ray: &Ray,
-        half_angle: f64,
-        t_enter: f64,
-        t_exit: f64,
-        options: &TraceOptions,
-        stats: &mut TraceStats,
-    ) -> f64 {
+    fn certify_cone(&self, span: RaySpan<'_>, half_angle: f64, options: &TraceOptions, stats: &mut TraceStats) -> f64 {
         // With fading, a wave that fades for some ray of the cone before the cone's end is held at
         // −A: a downward cone certifies only up to CONE_REACH times where it starts or meets the
         // slab, so that the waves fading beyond are used whole; its children go on from there.
-        let (o, d) = (ray.origin(), ray.direction());
-        let t_exit = if options.footprint_angle > 0.0 && d.y < 0.0 {
-            let slab = if o.y > self.total_amplitude { (o.y - self.total_amplitude) / -d.y } else { 0.0 };
-            t_exit.min(CONE_REACH * t_enter.max(slab).max(1.0))
-        } else {
-            t_exit
-        };
+        let span = cone_span(span, self.total_amplitude, options.footprint_angle);
         SCRATCH.with(|cell| {
             let mut guard = cell.borrow_mut();
             let (scratch, state) = &mut *guard;
-            let mut tiers = SeaTiers::new(self, state, ray, t_exit, options.footprint_angle, half_angle);
-            certify_cone_with(scratch, &mut tiers, ray, half_angle, t_enter, t_exit, options, stats)
+            let mut tiers = SeaTiers::new(self, state, span.ray, span.t_exit, options.footprint_angle, half_angle);
+            certify_cone_with(scratch, &mut tiers, span, half_angle, options, stats)
         })
     }
 }
