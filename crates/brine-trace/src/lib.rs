@@ -42,6 +42,7 @@
 //! | `wᵢ(t)` | [`footprint_weight`] | 1 | fade weight `smoothstep(1, 1.5, Tᵢ/t)` |
 //! | `h(t)` | [`TraceOptions::min_step_at`] | m | minimum (probe) step |
 //! | `t` | [`Hit::t`] | m | distance along the unit ray direction |
+//! | `[t_enter, t_exit]` | [`RaySpan`] | m | the part of a ray traced, clipped to the zero-set bounds |
 //!
 //! ## What a hit is
 //!
