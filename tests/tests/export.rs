@@ -30,8 +30,8 @@ fn hits_and_queries(scene: &Scene, world: &World, near_m: f64) -> (usize, f64) {
             let a = frame.aovs[(y * scene.camera.width + x) as usize];
             let depth = f64::from(a.depth);
             if depth.is_finite() && depth < near_m {
-                let d = world.camera.direction(f64::from(x) + 0.5, f64::from(y) + 0.5);
-                let p: DVec3 = world.camera.position + depth * d;
+                let d = world.camera().direction(f64::from(x) + 0.5, f64::from(y) + 0.5);
+                let p: DVec3 = world.camera().position + depth * d;
                 points.push(QueryPoint { x: p.x, z: p.z, t: scene.sea.time_s });
                 hits.push(p);
             }
@@ -42,7 +42,7 @@ fn hits_and_queries(scene: &Scene, world: &World, near_m: f64) -> (usize, f64) {
         .iter()
         .zip(&results)
         .map(|(p, r)| {
-            let depth = (*p - world.camera.position).length();
+            let depth = (*p - world.camera().position).length();
             (p.y - r.height_m).abs() / ON_THE_SURFACE_M.max(TRACE_RELATIVE * depth)
         })
         .fold(0.0, f64::max);
@@ -70,7 +70,7 @@ fn queried_heights_are_the_rendered_surface() {
         scene.camera.width = 96;
         scene.camera.height = 54;
         let mut world = World::new(&scene).unwrap();
-        world.reference = true;
+        world.set_reference(true);
         let (n, worst) = hits_and_queries(&scene, &world, 1000.0);
         assert!(n > 1000, "{surface:?}: {n} hits");
         assert!(worst < 1.0, "{surface:?}: a reference hit {worst} tolerances off the queried surface");
@@ -91,7 +91,7 @@ fn baked_maps_tile_and_loop() {
         let world = World::on_lattice(&scene, Some(&lattice)).unwrap();
         let n = 32;
         // The surface one tile away is the same surface.
-        let frame = world.ocean.at_time(1.25);
+        let frame = world.ocean().at_time(1.25);
         for u in [DVec2::new(3.0, 7.0), DVec2::new(-11.0, 40.0)] {
             let a = frame.sample(u.x, u.y);
             for shift in [DVec2::new(tile, 0.0), DVec2::new(0.0, -tile), DVec2::new(2.0 * tile, tile)] {
@@ -146,7 +146,7 @@ fn meshes_are_valid() {
     assert_eq!(mesh.positions.len(), 41 * 41);
     // Every vertex lies on the rendered surface.
     for p in mesh.positions.iter().step_by(97) {
-        let h = world.sea.height(f64::from(p[0]), f64::from(p[2]));
+        let h = world.sea().height(f64::from(p[0]), f64::from(p[2]));
         assert!((h - f64::from(p[1])).abs() < 1e-5, "vertex off the surface by {}", h - f64::from(p[1]));
     }
     let dir = tempfile::tempdir().unwrap();

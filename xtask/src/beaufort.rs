@@ -204,7 +204,7 @@ fn glitter_variance(surface: &str, wind: f64) -> Result<f64, String> {
     let scene = Scene::from_toml_str(&text, "glitter.toml").map_err(|e| e.to_string())?;
     let world = brine_render::World::new(&scene).map_err(|e| e.to_string())?;
     let frame = brine_render::render(&scene, &RenderOptions::default(), &|| {}).map_err(|e| e.to_string())?;
-    let l = world.sky.sun().direction;
+    let l = world.sky().sun().direction;
     let n = (2.0 / GLITTER_BIN) as usize;
     let mut bins = vec![(0.0f64, 0usize); n * n];
     for j in 0..frame.height {
@@ -213,7 +213,7 @@ fn glitter_variance(surface: &str, wind: f64) -> Result<f64, String> {
             if !a.depth.is_finite() {
                 continue;
             }
-            let v = -world.camera.direction(f64::from(i) + 0.5, f64::from(j) + 0.5);
+            let v = -world.camera().direction(f64::from(i) + 0.5, f64::from(j) + 0.5);
             if v.y <= 0.0 {
                 continue;
             }
@@ -259,7 +259,7 @@ fn sky_r2(scene_text: &str, frame: &Frame) -> Result<(f64, f64), String> {
     let scene = Scene::from_toml_str(scene_text, "sky.toml").map_err(|e| e.to_string())?;
     let world = brine_render::World::new(&scene).map_err(|e| e.to_string())?;
     let y = |c: glam::DVec3| c.dot(glam::DVec3::new(0.2126, 0.7152, 0.0722));
-    let v = &world.variance_unresolved;
+    let v = world.variance_unresolved();
     let lobe = 2.0 * (0.5 * (v.sigma_x2() + v.sigma_y2())).sqrt();
     let (mut lum, mut mirror, mut blurred) = (Vec::new(), Vec::new(), Vec::new());
     for j in 0..frame.height {
@@ -269,15 +269,15 @@ fn sky_r2(scene_text: &str, frame: &Frame) -> Result<(f64, f64), String> {
             if !(NEAR_FIELD_M.0..=NEAR_FIELD_M.1).contains(&a.depth) || a.foam > 0.1 || a.whitecap > 0.1 {
                 continue;
             }
-            let d = world.camera.direction(f64::from(i) + 0.5, f64::from(j) + 0.5);
+            let d = world.camera().direction(f64::from(i) + 0.5, f64::from(j) + 0.5);
             let n = glam::DVec3::from_array(a.normal.map(f64::from));
             let mut r = brine_optics::reflect(d, n);
             if r.y < 1e-3 {
                 r = glam::DVec3::new(r.x, 1e-3, r.z).normalize();
             }
             lum.push(y(frame.pixels[k]));
-            mirror.push(y(world.sky.radiance_rgb(r)));
-            blurred.push(y(world.filtered_sky.radiance(r, lobe, |r| world.sky.radiance_rgb(r))));
+            mirror.push(y(world.sky().radiance_rgb(r)));
+            blurred.push(y(world.filtered_sky().radiance(r, lobe, |r| world.sky().radiance_rgb(r))));
         }
     }
     let r2 = |x: &[f64], z: &[f64]| {

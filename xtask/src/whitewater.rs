@@ -249,7 +249,7 @@ pub fn run(root: &Path) -> Result<(), String> {
             let text = scene_text(surface, 16.0, 1, HEIGHT_M, 0.5 * f64::from(i));
             let scene = Scene::from_toml_str(&text, "whitewater").map_err(|e| e.to_string())?;
             let world = brine_render::World::new(&scene).map_err(|e| e.to_string())?;
-            let Some(ww) = &world.white_water else { return Err("no white water at 16 m/s".into()) };
+            let Some(ww) = world.white_water() else { return Err("no white water at 16 m/s".into()) };
             let side = match ww {
                 brine_render::WhiteWaterSea::Fft(m) => m.source().now().largest_tile(),
                 brine_render::WhiteWaterSea::Trochoids(_) => 2000.0,
@@ -259,7 +259,7 @@ pub fn run(root: &Path) -> Result<(), String> {
             for a in 0..n {
                 for b in 0..n {
                     let u = glam::DVec2::new((a as f64 + 0.5) / n as f64, (b as f64 + 0.5) / n as f64) * side;
-                    sum += ww.at(u, world.time, 0.0).white;
+                    sum += ww.at(u, world.time(), 0.0).white;
                 }
             }
             series.push(sum / (n * n) as f64);

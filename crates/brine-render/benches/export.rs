@@ -64,7 +64,8 @@ fn main() {
         // The surface alone (no white water): what the geometry costs.
         let surface = time(3, || {
             use rayon::prelude::*;
-            let v: Vec<f64> = points.par_iter().with_min_len(256).map(|p| world.sea.sample(p.x, p.z).height).collect();
+            let v: Vec<f64> =
+                points.par_iter().with_min_len(256).map(|p| world.sea().sample(p.x, p.z).height).collect();
             std::hint::black_box(v);
         });
         (query, surface)

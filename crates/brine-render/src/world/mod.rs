@@ -67,79 +67,139 @@ pub enum WorldError {
 /// Everything the per-pixel shading needs, built once per frame.
 pub struct World {
     /// The fitted wave set.
-    pub set: TrochoidSet,
+    pub(crate) set: TrochoidSet,
     /// The sea of the scene as a model of time (brine-waves `Ocean`): what bakes, meshes and
     /// queries freeze at other instants.
-    pub ocean: Ocean,
+    pub(crate) ocean: Ocean,
     /// The traced surface at the frame's time (brine-waves `SeaFrame`).
-    pub sea: SeaFrame,
+    pub(crate) sea: SeaFrame,
     /// Time of the frame (s).
-    pub time: f64,
+    pub(crate) time: f64,
     /// Sky, sun, moon, clouds and aerial perspective, for any sun elevation.
-    pub sky: Sky,
+    pub(crate) sky: Sky,
     /// The sky with its clouds prefiltered by angular Gaussians: what the rough sea reflects
     /// (brine-sky `FilteredSky`).
-    pub filtered_sky: FilteredSky,
+    pub(crate) filtered_sky: FilteredSky,
     /// Aerial perspective between the eye and the sea is on.
-    pub aerial_perspective: bool,
+    pub(crate) aerial_perspective: bool,
     /// Unit horizontal wind direction (the BRDF's x axis).
-    pub wind: DVec3,
+    pub(crate) wind: DVec3,
     /// Slope variances of the waves drawn neither as geometry nor as detail normals (Cox–Munk
     /// total minus the fitted set and the detail band).
-    pub variance_unresolved: SlopeVariance,
+    pub(crate) variance_unresolved: SlopeVariance,
     /// The detail normals of a trochoid, Gerstner or sine sea: the spectrum's waves between the
     /// traced band and the 1 cm wave, read at the hit through the pixel footprint (brine-waves
     /// `DetailWaves`); `None` for the FFT sea (its cascades already reach that far) and a calm.
-    pub detail: Option<DetailSlopes>,
+    pub(crate) detail: Option<DetailSlopes>,
     /// The FFT sea's slopes mip-mapped for footprint reads (LEAN mapping): the mean shading
     /// gradient over each pixel and the slopes the pixel hides, for the BRDF.
-    pub fft_slopes: Option<FftSlopeFilter>,
+    pub(crate) fft_slopes: Option<FftSlopeFilter>,
     /// Slope variances of the whole sea (Cox–Munk), used beyond the trace distance.
-    pub variance_total: SlopeVariance,
+    pub(crate) variance_total: SlopeVariance,
     /// Optical properties of the water per channel.
-    pub water: WaterRgb,
+    pub(crate) water: WaterRgb,
     /// Downwelling irradiance just below a flat surface, `E_d(0⁻)` (klx per channel).
-    pub e_below: DVec3,
+    pub(crate) e_below: DVec3,
     /// The sun's (and moon's) share of `e_below` (klx per channel), arriving along
     /// [`World::sun_below`].
-    pub e_below_direct: DVec3,
+    pub(crate) e_below_direct: DVec3,
     /// The sun's share of `e_below_direct` (the rest is the moon's).
-    pub e_below_sun: DVec3,
+    pub(crate) e_below_sun: DVec3,
     /// Unit direction of the sun's light refracted into the water (pointing down); straight down
     /// when the sun has set.
-    pub sun_below: DVec3,
+    pub(crate) sun_below: DVec3,
     /// The sea floor, if the water is not deep.
-    pub floor: Option<Floor>,
+    pub(crate) floor: Option<Floor>,
     /// `true` when the camera is below the sea surface.
-    pub underwater: bool,
+    pub(crate) underwater: bool,
     /// Foam on crests, when on and the wind makes any.
-    pub foam: Option<Foam>,
+    pub(crate) foam: Option<Foam>,
     /// Active whitecaps, when on alone (or with a raw threshold) and the wind makes any.
-    pub whitecaps: Option<Whitecaps>,
+    pub(crate) whitecaps: Option<Whitecaps>,
     /// Active whitecaps with the foam they leave, when foam and whitecaps are both on.
-    pub white_water: Option<WhiteWaterSea>,
+    pub(crate) white_water: Option<WhiteWaterSea>,
     /// The spray medium, when on.
-    pub spray: Option<SprayMedium>,
+    pub(crate) spray: Option<SprayMedium>,
     /// Dipole materials of the water per channel (R, G, B) for light through thin crests, when
     /// sub-surface scattering is on.
-    pub crest: Option<[DipoleMaterial; 3]>,
+    pub(crate) crest: Option<[DipoleMaterial; 3]>,
     /// Quadrature rules over the sun's and the moon's discs, for glints on calm water
     /// (brine-optics `reflected_disc_radiance`).
-    pub discs: (SunDisc, Option<SunDisc>),
+    pub(crate) discs: (SunDisc, Option<SunDisc>),
     /// Options of the tracer.
-    pub trace: TraceOptions,
+    pub(crate) trace: TraceOptions,
     /// The camera.
-    pub camera: Camera,
+    pub(crate) camera: Camera,
     /// Manual exposure (EV₁₀₀), or `None` for automatic.
-    pub exposure_ev: Option<f64>,
+    pub(crate) exposure_ev: Option<f64>,
     /// Compensation of the automatic exposure (EV, positive is brighter).
-    pub exposure_compensation_ev: f64,
+    pub(crate) exposure_compensation_ev: f64,
     /// Horizontal illuminance of sun, moon and sky at sea level (lx).
-    pub illuminance_lx: f64,
+    pub(crate) illuminance_lx: f64,
     /// The reference rendering: no wave faded with the pixel footprint, no normal read through
     /// it (the slopes a footprint would hide stay in the normals, for many samples per pixel to
     /// average), so that a supersampled frame shows what the filtering is meant to preserve.
-    pub reference: bool,
+    pub(crate) reference: bool,
+}
+
+/// What a caller outside the renderer reads of a world; the rest is the renderer's own.
+impl World {
+    /// The trochoid set fitted to the sea's spectrum (empty for the FFT sea, whose waves are its
+    /// cascades).
+    pub fn fitted_set(&self) -> &TrochoidSet {
+        &self.set
+    }
+
+    /// The sea as a model of time (bakes and animations take frames from it).
+    pub fn ocean(&self) -> &Ocean {
+        &self.ocean
+    }
+
+    /// The sea frozen at the world's time: the surface that is traced and queried.
+    pub fn sea(&self) -> &SeaFrame {
+        &self.sea
+    }
+
+    /// The world's time (s, on the scene's clock).
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// The sky model (sun, moon, sky radiance).
+    pub fn sky(&self) -> &Sky {
+        &self.sky
+    }
+
+    /// The sky dome prefiltered for reflections through the sea's roughness.
+    pub fn filtered_sky(&self) -> &FilteredSky {
+        &self.filtered_sky
+    }
+
+    /// The camera.
+    pub fn camera(&self) -> &Camera {
+        &self.camera
+    }
+
+    /// The slope variance (wind frame) of the waves not drawn, which the BRDF carries.
+    pub fn variance_unresolved(&self) -> &SlopeVariance {
+        &self.variance_unresolved
+    }
+
+    /// The white water (foam memory and whitecaps), when the scene has it.
+    pub fn white_water(&self) -> Option<&WhiteWaterSea> {
+        self.white_water.as_ref()
+    }
+
+    /// Whether this world renders as the reference (nothing faded or filtered with the pixel
+    /// footprint; `brine render --reference`).
+    pub fn reference(&self) -> bool {
+        self.reference
+    }
+
+    /// Renders this world as the reference (`true`) or as the filtered frame (`false`).
+    pub fn set_reference(&mut self, reference: bool) {
+        self.reference = reference;
+    }
 }
 
 /// White water at one point of the surface, as the renderer draws it there.
