@@ -21,6 +21,7 @@
 
 use std::time::Instant;
 
+use brine_texture::Pinhole;
 use brine_trace::{LipschitzSum, Method, Ray, TraceOptions, TraceStats, trace};
 use brine_waves::{
     Directions, Elfouhaily, FftFrame, FftOcean, FftOptions, FftSlopeFilter, FitOptions, Spectrum, TracedTrochoids,
@@ -44,46 +45,35 @@ fn ms(s: f64) -> String {
     format!("{:.1} ms", 1e3 * s)
 }
 
+/// A named view of the bench: brine-texture's pinhole camera (the renderer's) at a height,
+/// bearing and pitch.
 struct Camera {
     name: &'static str,
-    position: DVec3,
-    forward: DVec3,
-    right: DVec3,
-    up: DVec3,
-    tan_half: f64,
+    pinhole: Pinhole,
 }
 
 impl Camera {
     fn new(name: &'static str, height: f64, bearing_deg: f64, pitch_deg: f64) -> Self {
-        let (b, e) = (bearing_deg.to_radians(), pitch_deg.to_radians());
-        let forward = DVec3::new(b.sin() * e.cos(), e.sin(), -b.cos() * e.cos());
-        let right = forward.cross(DVec3::Y).normalize();
-        Self {
-            name,
-            position: DVec3::new(0.0, height, 0.0),
-            forward,
-            right,
-            up: right.cross(forward),
-            tan_half: (0.5 * FOV_DEG.to_radians()).tan(),
-        }
+        let position = DVec3::new(0.0, height, 0.0);
+        let pinhole = Pinhole::from_angles(position, bearing_deg, pitch_deg, FOV_DEG, WIDTH as u32, HEIGHT as u32)
+            .expect("a valid bench camera");
+        Self { name, pinhole }
     }
 
+    /// The rays through the centres of every `STRIDE`-th pixel.
     fn rays(&self) -> Vec<Ray> {
-        let aspect = WIDTH as f64 / HEIGHT as f64;
         let mut out = Vec::new();
         for y in (0..HEIGHT).step_by(STRIDE) {
             for x in (0..WIDTH).step_by(STRIDE) {
-                let sx = (2.0 * (x as f64 + 0.5) / WIDTH as f64 - 1.0) * self.tan_half * aspect;
-                let sy = (1.0 - 2.0 * (y as f64 + 0.5) / HEIGHT as f64) * self.tan_half;
-                let d = (self.forward + sx * self.right + sy * self.up).normalize();
-                out.push(Ray::new(self.position, d).expect("finite camera ray"));
+                let d = self.pinhole.direction(x as f64 + 0.5, y as f64 + 0.5);
+                out.push(Ray::new(self.pinhole.position, d).expect("finite camera ray"));
             }
         }
         out
     }
 
     fn pixel_angle(&self) -> f64 {
-        2.0 * self.tan_half / HEIGHT as f64
+        self.pinhole.pixel_angle()
     }
 }
 

@@ -3,6 +3,7 @@
 
 use std::path::Path;
 
+use brine_texture::Pinhole;
 use brine_trace::{LipschitzSum, Method, Ray, TraceOptions, TraceStats, trace, trace_logged, trace_tile};
 use brine_waves::{CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, TracedTrochoids, TrochoidSet, fit_trochoids};
 use glam::DVec3;
@@ -15,35 +16,23 @@ const STRIDE: usize = 16;
 const WIDTH: usize = 640;
 const HEIGHT: usize = 480;
 
-/// The default scene's camera: 10 m up, bearing 100°, pitch −9°, 50° vertical field of view.
-struct Camera {
-    position: DVec3,
-    forward: DVec3,
-    right: DVec3,
-    up: DVec3,
-    tan_half: f64,
-}
+/// The default scene's view: brine-texture's pinhole camera (the renderer's), 10 m up, bearing
+/// 100°, pitch −9°, 50° field of view.
+struct Camera(Pinhole);
 
 impl Camera {
     fn default_scene() -> Self {
-        let (b, e) = (100f64.to_radians(), -9f64.to_radians());
-        let forward = DVec3::new(b.sin() * e.cos(), e.sin(), -b.cos() * e.cos());
-        let right = forward.cross(DVec3::Y).normalize();
-        Self {
-            position: DVec3::new(0.0, 10.0, 0.0),
-            forward,
-            right,
-            up: right.cross(forward),
-            tan_half: 25f64.to_radians().tan(),
-        }
+        let position = DVec3::new(0.0, 10.0, 0.0);
+        Self(Pinhole::from_angles(position, 100.0, -9.0, 50.0, WIDTH as u32, HEIGHT as u32).expect("a valid camera"))
     }
+
+    /// The direction through the centre of pixel `(x, y)`.
     fn direction(&self, x: usize, y: usize) -> DVec3 {
-        let sx = (2.0 * (x as f64 + 0.5) / WIDTH as f64 - 1.0) * self.tan_half * WIDTH as f64 / HEIGHT as f64;
-        let sy = (1.0 - 2.0 * (y as f64 + 0.5) / HEIGHT as f64) * self.tan_half;
-        (self.forward + sx * self.right + sy * self.up).normalize()
+        self.0.direction(x as f64 + 0.5, y as f64 + 0.5)
     }
+
     fn pixel_angle(&self) -> f64 {
-        2.0 * self.tan_half / HEIGHT as f64
+        self.0.pixel_angle()
     }
 }
 
@@ -94,13 +83,13 @@ fn evaluations(sea: &TracedTrochoids, camera: &Camera, variant: &Variant) -> (Ve
     if variant.3 {
         let mut hits = vec![None; dirs.len()];
         let mut costs = vec![0.0; dirs.len()];
-        trace_tile(sea, camera.position, &dirs, w, &o, &mut stats, &mut hits, Some(&mut costs));
+        trace_tile(sea, camera.0.position, &dirs, w, &o, &mut stats, &mut hits, Some(&mut costs));
         return (costs, hits.iter().map(Option::is_some).collect());
     }
     dirs.iter()
         .map(|d| {
             let before = stats.evaluations;
-            let hit = Ray::new(camera.position, *d).ok().and_then(|r| trace(sea, &r, &o, &mut stats));
+            let hit = Ray::new(camera.0.position, *d).ok().and_then(|r| trace(sea, &r, &o, &mut stats));
             ((stats.evaluations - before) as f64, hit.is_some())
         })
         .unzip()
@@ -177,7 +166,7 @@ fn growth_with_n(dir: &Path, camera: &Camera) -> Result<(), String> {
             let o = options(v.1, if v.2 { camera.pixel_angle() } else { 0.0 });
             let mut stats = TraceStats::default();
             for d in &dirs {
-                if let Ok(r) = Ray::new(camera.position, *d) {
+                if let Ok(r) = Ray::new(camera.0.position, *d) {
                     trace(&fast, &r, &o, &mut stats);
                 }
             }
@@ -208,7 +197,7 @@ fn growth_with_n(dir: &Path, camera: &Camera) -> Result<(), String> {
 
 /// `trace-steps.svg`: `F` along one grazing ray and the points where each method evaluates it.
 fn steps_along_a_ray(dir: &Path, sea: &TracedTrochoids, camera: &Camera) -> Result<(), String> {
-    let ray = Ray::new(camera.position, camera.direction(WIDTH / 2, 250)).map_err(|e| e.to_string())?;
+    let ray = Ray::new(camera.0.position, camera.direction(WIDTH / 2, 250)).map_err(|e| e.to_string())?;
     let mut series = Vec::new();
     let mut t_hit = 0.0;
     let mut t_start = f64::INFINITY;
