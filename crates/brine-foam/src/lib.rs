@@ -97,9 +97,9 @@ pub use history::{FoamHistory, FoamHistoryParams, FoamSample, FoamState, MAX_HIS
 pub use lace::{FoamLace, LACE_CELL_M, LACE_THICKNESS_CONTRAST};
 pub use medium::{ExtinctionEfficiency, SprayMedium, SprayParams};
 pub use memory::{
-    FOAM_DENSITY, FoamMemory, FoamMemoryParams, MAX_MEMORY_INSTANTS, MONAHAN_1971_DECAY_TIME_S, MemorySample,
-    PeriodicPatches, STREAK_STRETCH, STREAK_WINDS_M_S, WIND_DRIFT_FRACTION, WhiteWater, calibrate_threshold,
-    periodic_patches,
+    FOAM_DENSITY, FoamMemory, FoamMemoryParams, MAX_MEMORY_INSTANTS, MONAHAN_1971_DECAY_TIME_S, MemoryClock,
+    MemorySample, PeriodicPatches, STREAK_STRETCH, STREAK_WINDS_M_S, WIND_DRIFT_FRACTION, WhiteWater,
+    calibrate_threshold, periodic_patches,
 };
 pub use noise::FoamNoise;
 pub use radiance::{FRESH_FOAM_REFLECTANCE, KOEPKE_EFFICIENCY, KoepkeFoam, foam_radiance, surface_radiance};

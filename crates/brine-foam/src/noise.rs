@@ -11,6 +11,9 @@ use crate::error::{FoamError, check};
 /// each octave into `[−1, 1]`.
 const PERLIN_2D_BOUND: f64 = std::f64::consts::FRAC_1_SQRT_2;
 
+/// `1/`[`PERLIN_2D_BOUND`]: a product instead of a division in every octave.
+const PERLIN_2D_SCALE: f64 = 1.0 / PERLIN_2D_BOUND;
+
 /// Gradient-noise fractal ("fBm") over the horizontal plane, filtered by the pixel footprint.
 ///
 /// `ν(x, z; ℓ) = 1 + a · Σₒ fₒ(ℓ) wₒ nₒ(x/λₒ, z/λₒ)`, with Perlin gradient noise `nₒ ∈ [−1, 1]`
@@ -39,11 +42,17 @@ pub struct FoamNoise {
 
 /// A lattice of periods `{k₁(a, b) + k₂(0, c)}` of the noise in first-octave cell indices (the
 /// Hermite normal form of two period vectors): cell `(i, j)` and its translates are hashed alike.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 struct CellPeriod {
     a: i64,
     b: i64,
     c: i64,
+    /// `1/(2ᵒa)` and `1/(2ᵒc)` of each octave `o`, for [`div_rem_euclid`].
+    inverses: [(f64, f64); FoamNoise::MAX_OCTAVES as usize],
+    /// Each octave's offset `(s, −s)`, `s = 17.31 o` cells, moved by a period of the octave into
+    /// `[0, 2ᵒa) × [0, 2ᵒc)`: the same noise, and a point reduced by [`Self::reduce_point`]
+    /// then lands within one period of the canonical cells.
+    shifts: [(f64, f64); FoamNoise::MAX_OCTAVES as usize],
 }
 
 impl CellPeriod {
@@ -63,14 +72,65 @@ impl CellPeriod {
         }
         let (g, s, t) = if r0 < 0 { (-r0, -s0, -t0) } else { (r0, s0, t0) };
         let c = det.abs() / g;
-        Some(Self { a: g, b: (s * p1[1] + t * p2[1]).rem_euclid(c), c })
+        let inverses = std::array::from_fn(|o| (1.0 / (g << o) as f64, 1.0 / (c << o) as f64));
+        let mut period = Self {
+            a: g,
+            b: (s * p1[1] + t * p2[1]).rem_euclid(c),
+            c,
+            inverses,
+            shifts: [(0.0, 0.0); FoamNoise::MAX_OCTAVES as usize],
+        };
+        for o in 0..FoamNoise::MAX_OCTAVES {
+            let shift = octave_shift(o);
+            period.shifts[o as usize] = period.reduce_point(shift, -shift, o);
+        }
+        Some(period)
+    }
+
+    /// The point `(x, z)` (octave-`o` cells) moved by a period of octave `o` into
+    /// `[0, 2ᵒa) × [0, 2ᵒc)`.
+    fn reduce_point(&self, x: f64, z: f64, o: u32) -> (f64, f64) {
+        let (a, b, c) = ((self.a << o) as f64, (self.b << o) as f64, (self.c << o) as f64);
+        let (inv_a, inv_c) = self.inverses[o as usize];
+        let k = lattice_floor(x * inv_a);
+        let (x, z) = (x - k * a, z - k * b);
+        // The product's rounding can leave the point a period out: one step back.
+        let (x, z) = if x < 0.0 {
+            (x + a, z + b)
+        } else if x >= a {
+            (x - a, z - b)
+        } else {
+            (x, z)
+        };
+        let z = z - lattice_floor(z * inv_c) * c;
+        let z = if z < 0.0 {
+            z + c
+        } else if z >= c {
+            z - c
+        } else {
+            z
+        };
+        (x.clamp(0.0, a), z.clamp(0.0, c))
     }
 
     /// The canonical representative of cell `(i, j)` at octave `o` (periods scaled by `2ᵒ`).
     fn reduce(&self, i: i64, j: i64, o: u32) -> (i64, i64) {
         let (a, b, c) = (self.a << o, self.b << o, self.c << o);
-        let k = i.div_euclid(a);
-        (i - k * a, (j - k * b).rem_euclid(c))
+        let (inv_a, inv_c) = self.inverses[o as usize];
+        // A reduced point's cells are within a period of the canonical ones: no division then.
+        let (k, i) = match i {
+            _ if (0..a).contains(&i) => (0, i),
+            _ if (a..2 * a).contains(&i) => (1, i - a),
+            _ => div_rem_euclid(i, a, inv_a),
+        };
+        let j = j - k * b;
+        let j = match j {
+            _ if (0..c).contains(&j) => j,
+            _ if (c..2 * c).contains(&j) => j - c,
+            _ if (-c..0).contains(&j) => j + c,
+            _ => div_rem_euclid(j, c, inv_c).1,
+        };
+        (i, j)
     }
 
     /// [`Self::reduce`] of `(i₀ + di, j₀ + dj)` for a reduced `(i₀, j₀)` and `di, dj ∈ {0, 1}`:
@@ -83,8 +143,33 @@ impl CellPeriod {
             i -= a;
             j -= b;
         }
-        (i, j.rem_euclid(c))
+        // `j₀ ∈ [0, c)` and `b ∈ [0, c)`, so `j ∈ (−c, c]`: one period at most, no division.
+        if j < 0 {
+            j += c;
+        } else if j >= c {
+            j -= c;
+        }
+        (i, j)
     }
+}
+
+/// `(⌊x/m⌋, x − m⌊x/m⌋)` for `m > 0` and `|x| < 2⁵⁰`, given `inv_m ≈ 1/m`: `div_euclid` and
+/// `rem_euclid` by a float product corrected by one step (an integer division costs several times
+/// more, and the periodic noise makes two per octave). `x·inv_m` is within `|x|·2⁻⁵¹ < ½` of
+/// `x/m`, so its floor is off by one at most.
+#[inline]
+fn div_rem_euclid(x: i64, m: i64, inv_m: f64) -> (i64, i64) {
+    debug_assert!(m > 0);
+    let mut q = lattice_floor(x as f64 * inv_m) as i64;
+    let mut r = x - q * m;
+    if r < 0 {
+        r += m;
+        q -= 1;
+    } else if r >= m {
+        r -= m;
+        q += 1;
+    }
+    (q, r)
 }
 
 impl FoamNoise {
@@ -159,19 +244,32 @@ impl FoamNoise {
         if self.amplitude <= 0.0 {
             return 1.0;
         }
-        let mut sum = 0.0;
         // Octave `o` reads the lattice at `x/λₒ = (x/λ₀)·2ᵒ`: scaling by a power of two is exact,
         // so one division serves every octave.
         let (xs, zs) = (x / self.wavelength, z / self.wavelength);
+        // λₒ/ℓ = (λ₀/ℓ)·2⁻ᵒ: one division for every octave's fade, too.
+        let ratio = if footprint_m > 0.0 { self.wavelength / footprint_m } else { f64::INFINITY };
+        // A periodic noise reads the point moved by a period into the canonical cells, each
+        // octave's offset too ([`CellPeriod::shifts`]): the same values, and no division per
+        // octave to find the canonical cell.
+        let (xs, zs) = match &self.period {
+            Some(per) => per.reduce_point(xs, zs, 0),
+            None => (xs, zs),
+        };
+        let mut sum = 0.0;
         for o in 0..self.octaves {
-            let (up, down) = (f64::from(1u32 << o), libm::ldexp(1.0, -(o as i32)));
-            let fade = if footprint_m > 0.0 { smoothstep(1.0, 1.5, self.wavelength * down / footprint_m) } else { 1.0 };
+            let down = OCTAVE_SCALE[o as usize];
+            let fade = smoothstep(1.0, 1.5, ratio * down);
             if fade <= 0.0 {
                 break; // Later octaves are shorter still.
             }
             // Offset each octave so their lattices do not line up at the origin.
-            let shift = 17.31 * f64::from(o);
-            sum += fade * down * self.gradient_noise(xs * up + shift, zs * up - shift, o);
+            let up = f64::from(1u32 << o);
+            let (sx, sz) = match &self.period {
+                Some(per) => per.shifts[o as usize],
+                None => (octave_shift(o), -octave_shift(o)),
+            };
+            sum += fade * down * self.gradient_noise(xs * up + sx, zs * up + sz, o);
         }
         (1.0 + self.amplitude * sum / self.weight_sum).clamp(1.0 - self.amplitude, 1.0 + self.amplitude)
     }
@@ -191,9 +289,9 @@ impl FoamNoise {
     pub fn resolved_variance_share(&self, footprint_m: f64) -> f64 {
         debug_assert!(footprint_m >= 0.0);
         let (mut kept, mut total) = (0.0, 0.0);
+        let ratio = self.wavelength / footprint_m.max(f64::MIN_POSITIVE);
         for o in 0..self.octaves {
-            let lambda = libm::ldexp(self.wavelength, -(o as i32));
-            let fade = smoothstep(1.0, 1.5, lambda / footprint_m.max(f64::MIN_POSITIVE));
+            let fade = smoothstep(1.0, 1.5, ratio * OCTAVE_SCALE[o as usize]);
             let w2 = libm::ldexp(1.0, -2 * (o as i32));
             kept += fade * fade * w2;
             total += w2;
@@ -227,28 +325,55 @@ impl FoamNoise {
         let n11 = grad(h11, dx - 1.0, dz - 1.0);
         let a = n00 + u * (n10 - n00);
         let b = n01 + u * (n11 - n01);
-        ((a + v * (b - a)) / PERLIN_2D_BOUND).clamp(-1.0, 1.0)
+        ((a + v * (b - a)) * PERLIN_2D_SCALE).clamp(-1.0, 1.0)
     }
 }
+
+/// The offset `s` (cells) of octave `o`'s lattice, along `(1, −1)`: so the octaves' lattices do
+/// not line up at the origin.
+fn octave_shift(o: u32) -> f64 {
+    17.31 * f64::from(o)
+}
+
+/// `2⁻ᵒ`, the wavelength (and weight) of octave `o` relative to the first.
+const OCTAVE_SCALE: [f64; FoamNoise::MAX_OCTAVES as usize] = {
+    let mut s = [1.0; FoamNoise::MAX_OCTAVES as usize];
+    let mut o = 1;
+    while o < s.len() {
+        s[o] = s[o - 1] * 0.5;
+        o += 1;
+    }
+    s
+};
 
 /// Perlin's quintic fade `6t⁵ − 15t⁴ + 10t³`.
 fn fade(t: f64) -> f64 {
     t * t * t * (t * (t * 6.0 - 15.0) + 10.0)
 }
 
-/// Dot product of the offset with one of eight unit gradients chosen by the hash.
-fn grad(hash: u8, x: f64, z: f64) -> f64 {
+/// The eight unit gradients a cell corner's hash picks, as `(sₓ, s_z, d)`: the gradient's dot
+/// product with an offset `(x, z)` is `(sₓx + s_z z)·d` (exact up to the final product, as
+/// `sₓ, s_z ∈ {0, ±1}`). The four axis gradients have `d = 1`, the four diagonals `d = √2/2`; a
+/// table read rather than a branch on a random hash, which the processor cannot predict.
+const GRADIENTS: [(f64, f64, f64); 8] = {
     const D: f64 = std::f64::consts::FRAC_1_SQRT_2;
-    match hash & 7 {
-        0 => x,
-        1 => -x,
-        2 => z,
-        3 => -z,
-        4 => D * (x + z),
-        5 => D * (x - z),
-        6 => D * (-x + z),
-        _ => -D * (x + z),
-    }
+    [
+        (1.0, 0.0, 1.0),
+        (-1.0, 0.0, 1.0),
+        (0.0, 1.0, 1.0),
+        (0.0, -1.0, 1.0),
+        (1.0, 1.0, D),
+        (1.0, -1.0, D),
+        (-1.0, 1.0, D),
+        (-1.0, -1.0, D),
+    ]
+};
+
+/// Dot product of the offset `(x, z)` with the unit gradient the hash picks ([`GRADIENTS`]).
+#[inline]
+fn grad(hash: u8, x: f64, z: f64) -> f64 {
+    let (sx, sz, d) = GRADIENTS[usize::from(hash & 7)];
+    (sx * x + sz * z) * d
 }
 
 /// `smoothstep(e0, e1, x)`: 0 below `e0`, 1 above `e1`, `3t² − 2t³` between.
@@ -317,6 +442,45 @@ mod tests {
                         per.reduce(i + di, j + dj, o),
                         "({i}, {j}) + ({di}, {dj}), octave {o}"
                     );
+                }
+            }
+        }
+    }
+
+    /// A periodic noise read at the point moved into its canonical cells (with each octave's offset
+    /// moved likewise) is the noise read where the point is: the sum written out here reads every
+    /// octave at its unmoved lattice point, the cells reduced by division.
+    #[test]
+    fn the_reduced_point_reads_the_same_noise() {
+        let n = FoamNoise::new(0.8, 2.0, 5, 3).unwrap().periodic([7, -3], [2, 5]).unwrap();
+        let direct = |x: f64, z: f64| {
+            let (xs, zs) = (x / 2.0, z / 2.0);
+            let sum: f64 = (0..5)
+                .map(|o| {
+                    let (up, shift) = (f64::from(1u32 << o), octave_shift(o));
+                    OCTAVE_SCALE[o as usize] * n.gradient_noise(xs * up + shift, zs * up - shift, o)
+                })
+                .sum();
+            (1.0 + 0.8 * sum / n.weight_sum).clamp(0.2, 1.8)
+        };
+        for (x, z) in [(0.3, 0.7), (-13.1, 4.4), (101.0, -57.5), (1234.5, 987.6), (-0.001, -0.002)] {
+            assert!((n.value(x, z, 0.0) - direct(x, z)).abs() < 1e-9, "({x}, {z})");
+        }
+    }
+
+    /// The float division with its correction is integer division, at the ends of its range too.
+    #[test]
+    fn float_division_matches_integer_division() {
+        let xs: [i64; 12] =
+            [0, 1, -1, 7, -7, 41, -41, 123_456_789, -987_654_321, (1 << 50) - 1, -(1 << 50) + 1, 1 << 40];
+        for m in [1i64, 2, 3, 7, 41, 1 << 12, 1_000_003, (1 << 31) - 1] {
+            for &x in &xs {
+                for dx in -3..=3 {
+                    let x = x + dx * m;
+                    if x.abs() < 1 << 50 {
+                        let q = div_rem_euclid(x, m, 1.0 / m as f64);
+                        assert_eq!(q, (x.div_euclid(m), x.rem_euclid(m)), "{x} / {m}");
+                    }
                 }
             }
         }

@@ -70,9 +70,17 @@ pub fn erf_fast(x: f64) -> f64 {
 /// Abramowitz M., Stegun I. 1964, *Handbook of Mathematical Functions*, Eq. 7.1.26.
 #[inline]
 pub fn erf_abramowitz_stegun(x: f64) -> f64 {
+    /// `|x|` from which the approximation is ±1 in `f64`: at 6, `poly e^{−36} < 0.26 · 2.4×10⁻¹⁶`,
+    /// below half an ulp of 1 (`1.1×10⁻¹⁶`).
+    const SATURATED: f64 = 6.0;
     const P: f64 = 0.327_591_1;
     const A: [f64; 5] = [0.254_829_592, -0.284_496_736, 1.421_413_741, -1.453_152_027, 1.061_405_429];
     let ax = x.abs();
+    if ax >= SATURATED {
+        // `poly e^{−x²} < 10⁻¹⁶`: `1 − ` it rounds to 1, and `e^{−x²}` would take the slow
+        // underflow path of the system's `exp` once it leaves the normal range (`x > 26.6`).
+        return x.signum();
+    }
     let t = 1.0 / (1.0 + P * ax);
     let poly = t * (A[0] + t * (A[1] + t * (A[2] + t * (A[3] + t * A[4]))));
     let r = 1.0 - poly * (-ax * ax).exp();
@@ -181,6 +189,32 @@ mod tests {
 
     /// `erf(erf⁻¹ y) − y`: Newton's method converges to a few ulps of `y`.
     const INVERSE_ROUNDING: f64 = 1e-14;
+
+    /// The saturated branch changes no value: the rational form itself is ±1 in `f64` from
+    /// `|x| = 6` on (its tail `poly e^{−x²}` is under half an ulp of 1), as is the true `erf`.
+    #[test]
+    fn the_saturated_tail_is_the_formula_rounded() {
+        let formula = |x: f64| {
+            let t = 1.0 / (1.0 + 0.327_591_1 * x);
+            let poly = t
+                * (0.254_829_592
+                    + t * (-0.284_496_736 + t * (1.421_413_741 + t * (-1.453_152_027 + t * 1.061_405_429))));
+            1.0 - poly * (-x * x).exp()
+        };
+        // Bit comparisons: the point is that no rounding differs.
+        let bits = |x: f64| x.to_bits();
+        for x in [6.0, 6.5, 8.0, 12.0, 26.0] {
+            assert_eq!(bits(formula(x)), bits(1.0), "x = {x}");
+            assert_eq!(bits(erf_abramowitz_stegun(x)), bits(1.0));
+            assert_eq!(bits(erf_abramowitz_stegun(-x)), bits(-1.0));
+            assert_eq!(bits(libm::erf(x)), bits(1.0));
+        }
+        // Just below, the formula still differs from 1 by the tail: the branch starts at the
+        // first point where it may.
+        assert!(formula(5.5) < 1.0 && bits(erf_abramowitz_stegun(5.5)) == bits(formula(5.5)));
+        assert_eq!(bits(erf_abramowitz_stegun(f64::INFINITY)), bits(1.0));
+        assert_eq!(bits(erf_abramowitz_stegun(1e300)), bits(1.0));
+    }
 
     #[test]
     fn inverse_round_trips() {

@@ -206,6 +206,8 @@ pub struct FoamMemory {
     tau: f64,
     tau_r: f64,
     step: f64,
+    /// `e^{−Δt/τ}`, the area decay from one instant to the next.
+    step_decay: f64,
     length: f64,
     count: usize,
     drift: [f64; 2],
@@ -306,6 +308,7 @@ impl FoamMemory {
             tau,
             tau_r: tau * efficiency / (1.0 - efficiency),
             step,
+            step_decay: libm::exp(-step / tau),
             length: step * (count - 1) as f64,
             count,
             drift: params.drift_m_s,
@@ -448,20 +451,44 @@ impl FoamMemory {
     /// - `out`: receives `Sⱼ ∈ [0, 1]`.
     pub fn survivals(&self, u: [f64; 2], t: f64, footprint_m: f64, out: &mut [f64]) -> usize {
         debug_assert!(t.is_finite() && footprint_m >= 0.0);
-        let r = 1.0 - self.patches.resolved_share(footprint_m);
-        let m = self.patches.at(u[0], u[1], footprint_m);
-        let mut used = 0;
-        let a0 = self.instant(t, 0).1;
+        self.survivals_from(self.thresholds(self.instant(t, 0).1), u, footprint_m, out)
+    }
+
+    /// [`Self::survivals`] at a time of `clock` (the same values, without the per-point
+    /// exponential).
+    pub fn survivals_at(&self, clock: &MemoryClock, u: [f64; 2], footprint_m: f64, out: &mut [f64]) -> usize {
+        debug_assert!(footprint_m >= 0.0);
+        self.survivals_from(clock.theta[..clock.count].iter().copied(), u, footprint_m, out)
+    }
+
+    /// The survival thresholds `θⱼ = ρ e^{−aⱼ/τ} min(1, (T − aⱼ)/Δt)` (0 past the memory's
+    /// length `T`) of the instants whose newest is `a₀` old (s), newest first.
+    fn thresholds(&self, a0: f64) -> impl Iterator<Item = f64> + '_ {
         // e^{−aⱼ/τ} by recurrence: aⱼ = a₀ + jΔt.
-        let (mut decay, ratio) = (libm::exp(-a0 / self.tau), libm::exp(-self.step / self.tau));
-        for j in 0..self.count.min(out.len()) {
+        (0..self.count).scan(libm::exp(-a0 / self.tau), move |decay, j| {
             let age = a0 + j as f64 * self.step;
             let theta = if age <= self.length {
-                FOAM_DENSITY * decay * ((self.length - age) / self.step).min(1.0)
+                FOAM_DENSITY * *decay * ((self.length - age) / self.step).min(1.0)
             } else {
                 0.0
             };
-            decay *= ratio;
+            *decay *= self.step_decay;
+            Some(theta)
+        })
+    }
+
+    /// The survivals for the thresholds `θⱼ` ([`Self::thresholds`]).
+    fn survivals_from(
+        &self,
+        thetas: impl Iterator<Item = f64>,
+        u: [f64; 2],
+        footprint_m: f64,
+        out: &mut [f64],
+    ) -> usize {
+        let r = 1.0 - self.patches.resolved_share(footprint_m);
+        let m = self.patches.at(u[0], u[1], footprint_m);
+        let mut used = 0;
+        for (j, theta) in thetas.take(out.len()).enumerate() {
             let survival = (1.0 - r) * smoothstep(theta + EDGE_SOFTNESS, theta - EDGE_SOFTNESS, m) + r * theta;
             out[j] = if survival < NEGLIGIBLE_SURVIVAL { 0.0 } else { survival };
             if out[j] > 0.0 {
@@ -471,6 +498,31 @@ impl FoamMemory {
             }
         }
         used
+    }
+
+    /// The memory seen from time `t` (s, finite): what [`Self::survivals_at`] and
+    /// [`Self::combine_at`] share between every point at that time — and at every time whose
+    /// newest lattice instant is as old ([`MemoryClock::holds`]).
+    pub fn clock(&self, t: f64) -> MemoryClock {
+        debug_assert!(t.is_finite());
+        let age0_s = self.instant(t, 0).1;
+        let mut clock = MemoryClock {
+            age0_s,
+            count: self.count,
+            theta: [0.0; MAX_MEMORY_INSTANTS],
+            brightness: [0.0; MAX_MEMORY_INSTANTS],
+        };
+        for (j, theta) in self.thresholds(age0_s).enumerate() {
+            clock.theta[j] = theta;
+            clock.brightness[j] = self.brightness(age0_s, j);
+        }
+        clock
+    }
+
+    /// `e^{−aⱼ/τ_R}`, `aⱼ = a₀ + jΔt`: the brightness of the foam of instant `j` when the newest
+    /// is `a₀` old (s).
+    fn brightness(&self, a0: f64, j: usize) -> f64 {
+        libm::exp(-(a0 + j as f64 * self.step) / self.tau_r)
     }
 
     /// White water from the active cover now and at the lattice instants.
@@ -485,13 +537,29 @@ impl FoamMemory {
     /// # Returns
     /// [`WhiteWater`]: `residual = 1 − Πⱼ(1 − AⱼSⱼ)`, `white = 1 − (1 − active)(1 − residual)`.
     pub fn combine(&self, t: f64, active: f64, survivals: &[f64], sources: &[f64]) -> WhiteWater {
+        let a0 = self.instant(t, 0).1;
+        self.combine_with(|j| self.brightness(a0, j), active, survivals, sources)
+    }
+
+    /// [`Self::combine`] at a time of `clock`.
+    pub fn combine_at(&self, clock: &MemoryClock, active: f64, survivals: &[f64], sources: &[f64]) -> WhiteWater {
+        self.combine_with(|j| clock.brightness[j], active, survivals, sources)
+    }
+
+    fn combine_with(
+        &self,
+        brightness: impl Fn(usize) -> f64,
+        active: f64,
+        survivals: &[f64],
+        sources: &[f64],
+    ) -> WhiteWater {
         debug_assert_eq!(survivals.len(), sources.len());
         let active = active.clamp(0.0, 1.0);
         let (mut clear, mut bright) = (1.0, 0.0);
         for (j, (&s, &a)) in survivals.iter().zip(sources).enumerate() {
             let c = (a.clamp(0.0, 1.0) * s).min(1.0);
             if c > 0.0 {
-                bright += clear * c * libm::exp(-self.instant(t, j).1 / self.tau_r);
+                bright += clear * c * brightness(j);
                 clear *= 1.0 - c;
             }
         }
@@ -540,6 +608,26 @@ impl FoamMemory {
             }
         }
         self.combine(t, active, &surv[..n], &src[..n])
+    }
+}
+
+/// A [`FoamMemory`] seen from one time: each lattice instant's survival threshold and foam
+/// brightness, the same for every point at that time ([`FoamMemory::clock`]); a frame computes
+/// it once instead of once a pixel.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MemoryClock {
+    /// `a₀`, the age of the newest lattice instant (s): all the clock depends on.
+    age0_s: f64,
+    count: usize,
+    theta: [f64; MAX_MEMORY_INSTANTS],
+    brightness: [f64; MAX_MEMORY_INSTANTS],
+}
+
+impl MemoryClock {
+    /// Whether the clock serves time `t` of `memory` (its newest lattice instant as old, bit for
+    /// bit, as the one it was made for).
+    pub fn holds(&self, memory: &FoamMemory, t: f64) -> bool {
+        memory.instant(t, 0).1.to_bits() == self.age0_s.to_bits()
     }
 }
 

@@ -66,6 +66,25 @@ fn streaks_are_longer_along_the_wind() {
     assert!(along < 0.5 * across, "along {along}, across {across}");
 }
 
+/// A clock made once for a time gives, bit for bit, the survivals and white water each point
+/// computes alone, at that time; a time whose newest instant is another age is not its.
+#[test]
+fn the_clock_gives_what_each_point_computes() {
+    let mem = memory();
+    let t = 7.3;
+    let clock = mem.clock(t);
+    assert!(clock.holds(&mem, t) && !clock.holds(&mem, t + 0.1));
+    for (i, p) in points().step_by(97).enumerate() {
+        let footprint = [0.0, 0.05, 0.4, 3.0][i % 4];
+        let (mut a, mut b) = ([0.0; MAX_MEMORY_INSTANTS], [0.0; MAX_MEMORY_INSTANTS]);
+        let n = mem.survivals(p, t, footprint, &mut a);
+        assert_eq!(mem.survivals_at(&clock, p, footprint, &mut b), n);
+        assert_eq!(a.map(f64::to_bits), b.map(f64::to_bits), "{p:?}");
+        let sources: Vec<f64> = (0..n).map(|j| ((j as f64 + p[0]) * 0.37).sin().abs()).collect();
+        assert_eq!(mem.combine(t, 0.1, &a[..n], &sources), mem.combine_at(&clock, 0.1, &a[..n], &sources));
+    }
+}
+
 #[test]
 fn white_water_is_a_pure_function_of_place_and_time() {
     let mem = memory();

@@ -552,7 +552,7 @@ impl World {
                     };
                     let now = breaking_at(s.time_s);
                     let calibrated = WhiteWaterModel::new(reference, memory, s_b, EDGE_SHARE, monahan, &options)?;
-                    WhiteWaterSea::Fft(calibrated.with_source(now).with_forward_face(forward))
+                    WhiteWaterSea::Fft(calibrated.with_source(now).with_forward_face(forward).for_time(s.time_s))
                 }
                 _ => {
                     let stats = JacobianStatistics::new(&set)?;
@@ -562,7 +562,8 @@ impl World {
                     let options = WhiteWaterOptions { seed: s.seed, ..WhiteWaterOptions::default() };
                     WhiteWaterSea::Trochoids(
                         WhiteWaterModel::new(stats, memory, s_b, EDGE_SHARE, monahan, &options)?
-                            .with_forward_face(forward),
+                            .with_forward_face(forward)
+                            .for_time(s.time_s),
                     )
                 }
             })

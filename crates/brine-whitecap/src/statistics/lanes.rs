@@ -99,44 +99,117 @@ impl PresentSums {
     }
 }
 
-/// The `f32` sums of [`JacobianStatistics::mean_history`] at each instant.
+/// The `f32` sums `(p, q, r)` of [`JacobianStatistics::mean_history`] at each instant, over the
+/// octets.
 struct HistorySums {
     count: usize,
-    p: [f32x8; MAX_HISTORY_INSTANTS],
-    q: [f32x8; MAX_HISTORY_INSTANTS],
-    r: [f32x8; MAX_HISTORY_INSTANTS],
+    sums: [[[f32; 8]; 3]; MAX_HISTORY_INSTANTS],
+}
+
+thread_local! {
+    /// One set of history sums per thread, reused: only the instants a call reads are cleared
+    /// (clearing all 64 was a measurable share of a query).
+    static HISTORY_SUMS: std::cell::RefCell<HistorySums> =
+        const { std::cell::RefCell::new(HistorySums { count: 0, sums: [[[0.0; 8]; 3]; MAX_HISTORY_INSTANTS] }) };
 }
 
 impl HistorySums {
-    fn new(instants: usize) -> Self {
-        let zero = [f32x8::ZERO; MAX_HISTORY_INSTANTS];
-        Self { count: instants.min(MAX_HISTORY_INSTANTS), p: zero, q: zero, r: zero }
+    /// Runs `f` with this thread's sums cleared for `instants` instants.
+    fn with<R>(instants: usize, f: impl FnOnce(&mut HistorySums) -> R) -> R {
+        HISTORY_SUMS.with_borrow_mut(|h| {
+            h.count = instants.min(MAX_HISTORY_INSTANTS);
+            h.sums[..h.count].fill([[0.0; 8]; 3]);
+            f(h)
+        })
     }
 
     /// Adds one octet's waves of filtered amplitudes `ag` from the cosine and sine `(c, s)` at
     /// instant 0, rotated by `turn = (cos δ, sin δ)` from one instant to the next.
     #[inline]
-    fn add(&mut self, ag: f32x8, o: &Octet, (mut c, mut sn): (f32x8, f32x8), (cd, sd): (f32x8, f32x8)) {
-        let (w0, w1, w2) = (ag * o.dd[0], ag * o.dd[1], ag * o.dd[2]);
-        for i in 0..self.count {
-            self.p[i] -= w0 * c;
-            self.q[i] -= w1 * c;
-            self.r[i] -= w2 * c;
-            (c, sn) = (c * cd - sn * sd, sn * cd + c * sd);
-        }
+    fn add(&mut self, ag: f32x8, o: &Octet, (c, sn): (f32x8, f32x8), (cd, sd): (f32x8, f32x8)) {
+        let w = [ag * o.dd[0], ag * o.dd[1], ag * o.dd[2]].map(f32x8::to_array);
+        let rotation = Rotation { c: c.to_array(), s: sn.to_array(), cd: cd.to_array(), sd: sd.to_array() };
+        rotate_and_add(&mut self.sums[..self.count], &w, &rotation);
     }
 
     /// `μⱼ` into `out`.
     fn finish(&self, out: &mut [f64]) {
-        for (i, o) in out.iter_mut().enumerate().take(self.count) {
-            let (pi, qi, ri) = (
-                1.0 + f64::from(self.p[i].reduce_add()),
-                f64::from(self.q[i].reduce_add()),
-                1.0 + f64::from(self.r[i].reduce_add()),
-            );
+        for (o, [p, q, r]) in out.iter_mut().zip(&self.sums[..self.count]) {
+            let sum = |v: &[f32; 8]| f64::from(f32x8::new(*v).reduce_add());
+            let (pi, qi, ri) = (1.0 + sum(p), sum(q), 1.0 + sum(r));
             *o = pi * ri - qi * qi;
         }
     }
+}
+
+/// An octet's cosines and sines at instant 0 and the rotation from one instant to the next.
+#[derive(Clone, Copy)]
+struct Rotation {
+    c: [f32; 8],
+    s: [f32; 8],
+    cd: [f32; 8],
+    sd: [f32; 8],
+}
+
+/// The history's inner loop: at each instant, `(p, q, r) −= w c`, then `(c, s)` turned by
+/// `(cos δ, sin δ)`. Plain lanes, compiled for the widest vectors the processor has and chosen
+/// at run time (AVX: one instruction for the eight lanes, SSE2: two); the operations and their
+/// order are the same on every route, so are the roundings (Rust never fuses a product and a sum).
+#[multiversion::multiversion(targets("x86_64+avx"))]
+fn rotate_and_add(sums: &mut [[[f32; 8]; 3]], w: &[[f32; 8]; 3], rotation: &Rotation) {
+    let Rotation { mut c, mut s, cd, sd } = *rotation;
+    for [p, q, r] in sums.iter_mut() {
+        for l in 0..8 {
+            p[l] -= w[0][l] * c[l];
+            q[l] -= w[1][l] * c[l];
+            r[l] -= w[2][l] * c[l];
+            let turned = c[l] * cd[l] - s[l] * sd[l];
+            s[l] = s[l] * cd[l] + c[l] * sd[l];
+            c[l] = turned;
+        }
+    }
+}
+
+/// The footprint gains of a run of octets at one footprint, kept per thread: a query, a bake
+/// or a calibration asks the same footprint point after point, and the gains cost one `exp` per
+/// octet. Keyed by the footprint, the filter and the octets' wavenumbers themselves (the gains
+/// depend on nothing else), so no stale entry can be read.
+struct GainCache {
+    footprint_bits: u64,
+    filter: FootprintFilter,
+    k: Vec<f32x8>,
+    gains: Vec<f32x8>,
+}
+
+thread_local! {
+    static GAIN_CACHE: std::cell::RefCell<GainCache> = const {
+        std::cell::RefCell::new(GainCache {
+            footprint_bits: u64::MAX,
+            filter: FootprintFilter::Gaussian,
+            k: Vec::new(),
+            gains: Vec::new(),
+        })
+    };
+}
+
+/// Runs `f` with the gains of `octets` at `footprint_m` (from this thread's cache when the same
+/// octets asked for the same footprint last).
+fn with_gains<R>(octets: &[Octet], footprint_m: f64, filter: FootprintFilter, f: impl FnOnce(&[f32x8]) -> R) -> R {
+    GAIN_CACHE.with_borrow_mut(|c| {
+        let hit = c.footprint_bits == footprint_m.to_bits()
+            && c.filter == filter
+            && c.k.len() == octets.len()
+            && c.k.iter().zip(octets).all(|(k, o)| k.simd_eq(o.k).all());
+        if !hit {
+            c.footprint_bits = footprint_m.to_bits();
+            c.filter = filter;
+            c.k.clear();
+            c.k.extend(octets.iter().map(|o| o.k));
+            c.gains.clear();
+            c.gains.extend(octets.iter().map(|o| o.gain(footprint_m, filter)));
+        }
+        f(&c.gains)
+    })
 }
 
 impl Octet {
@@ -231,13 +304,17 @@ impl JacobianStatistics {
         out: &mut [f64],
     ) {
         debug_assert!(footprint_m >= 0.0 && rotation.rot.len() == self.octets.len());
-        let mut history = HistorySums::new(out.len());
         let n = self.active_count(footprint_m, filter);
-        for (j, (o, &turn)) in self.octets[..n.div_ceil(8)].iter().zip(&rotation.rot).enumerate() {
-            let (sn, c) = o.reduced_phase(u0, t0).sin_cos();
-            history.add(o.a * live_lanes(j, n) * o.gain(footprint_m, filter), o, (c, sn), turn);
-        }
-        history.finish(out);
+        let octets = &self.octets[..n.div_ceil(8)];
+        with_gains(octets, footprint_m, filter, |gains| {
+            HistorySums::with(out.len(), |history| {
+                for (j, ((o, &turn), &gain)) in octets.iter().zip(&rotation.rot).zip(gains).enumerate() {
+                    let (sn, c) = o.reduced_phase(u0, t0).sin_cos();
+                    history.add(o.a * live_lanes(j, n) * gain, o, (c, sn), turn);
+                }
+                history.finish(out);
+            })
+        });
     }
 
     /// [`Self::moments_at`] in `f32` lanes, eight waves at a time: the renderer's route (about
@@ -258,10 +335,13 @@ impl JacobianStatistics {
         debug_assert!(footprint_m >= 0.0);
         let n = self.active_count(footprint_m, filter);
         let mut present = PresentSums::default();
-        for (j, o) in self.octets[..n.div_ceil(8)].iter().enumerate() {
-            let cos = o.reduced_phase(u, t).cos();
-            present.add(o, live_lanes(j, n), o.gain(footprint_m, filter), cos);
-        }
+        let octets = &self.octets[..n.div_ceil(8)];
+        with_gains(octets, footprint_m, filter, |gains| {
+            for (j, (o, &gain)) in octets.iter().zip(gains).enumerate() {
+                let cos = o.reduced_phase(u, t).cos();
+                present.add(o, live_lanes(j, n), gain, cos);
+            }
+        });
         present.finish(&self.tail[n])
     }
 
@@ -293,17 +373,22 @@ impl JacobianStatistics {
         debug_assert!(footprint_m >= 0.0);
         debug_assert!(rotation.rot.len() == self.octets.len() && offset.rot.len() == self.octets.len());
         let n = self.active_count(footprint_m, filter);
-        let (mut present, mut history) = (PresentSums::default(), HistorySums::new(out.len()));
-        for (j, ((o, &turn), &(c0, s0))) in
-            self.octets[..n.div_ceil(8)].iter().zip(&rotation.rot).zip(&offset.rot).enumerate()
-        {
-            let (sin, cos) = o.reduced_phase(u, t).sin_cos();
-            let (live, gain) = (live_lanes(j, n), o.gain(footprint_m, filter));
-            present.add(o, live, gain, cos);
-            // The history: from the present phase advanced by the age of instant 0.
-            history.add(o.a * live * gain, o, (cos * c0 - sin * s0, sin * c0 + cos * s0), turn);
-        }
-        history.finish(out);
+        let mut present = PresentSums::default();
+        let octets = &self.octets[..n.div_ceil(8)];
+        with_gains(octets, footprint_m, filter, |gains| {
+            HistorySums::with(out.len(), |history| {
+                for (j, (((o, &turn), &(c0, s0)), &gain)) in
+                    octets.iter().zip(&rotation.rot).zip(&offset.rot).zip(gains).enumerate()
+                {
+                    let (sin, cos) = o.reduced_phase(u, t).sin_cos();
+                    let live = live_lanes(j, n);
+                    present.add(o, live, gain, cos);
+                    // The history: from the present phase advanced by the age of instant 0.
+                    history.add(o.a * live * gain, o, (cos * c0 - sin * s0, sin * c0 + cos * s0), turn);
+                }
+                history.finish(out);
+            })
+        });
         present.finish(&self.tail[n])
     }
 }

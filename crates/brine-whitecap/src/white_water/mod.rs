@@ -1,7 +1,7 @@
 //! White water: Dupuy & Bruneton's active whitecaps and the foam they leave behind
 //! (brine-foam `FoamMemory`), calibrated together on Monahan's coverage.
 
-use brine_foam::{FoamMemory, MAX_MEMORY_INSTANTS, WhiteWater};
+use brine_foam::{FoamMemory, MAX_MEMORY_INSTANTS, MemoryClock, WhiteWater};
 use glam::DVec2;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -260,6 +260,8 @@ pub struct WhiteWaterModel<S> {
     alpha0: f64,
     ln_levels: Vec<f64>,
     alphas: Vec<f64>,
+    /// The memory seen from a frame's time ([`Self::for_time`]).
+    clock: Option<Box<MemoryClock>>,
 }
 
 /// Standard normal distribution function of `d/√var` (a step for `var = 0`): the coverage law
@@ -332,6 +334,7 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
             alpha0: 0.0,
             ln_levels: WHITE_WATER_FOOTPRINTS_M.iter().map(|s| s.ln()).collect(),
             alphas: vec![0.0; WHITE_WATER_FOOTPRINTS_M.len()],
+            clock: None,
         };
         if target <= 0.0 || target >= 1.0 {
             // Nothing or everything white: no threshold to find.
@@ -392,7 +395,8 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
     /// left inside the pixel, and the edge noise (with the footprint of the breaking waves); its
     /// means at the memory's instants go to `history` (its length: how many are read).
     fn breaking(&self, u: DVec2, t: f64, s: f64, history: &mut [f64]) -> (f64, f64, f64) {
-        let s_eff = s.hypot(self.breaking_footprint);
+        // `√(s² + s_b²)` (a square root of a square is exact, so `s = 0` gives `s_b`).
+        let s_eff = (s * s + self.breaking_footprint * self.breaking_footprint).sqrt();
         let lattice = Lattice {
             t0: self.memory.instant(t, 0).0,
             step_s: self.memory.step(),
@@ -468,7 +472,17 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
             alpha0: self.alpha0,
             ln_levels: self.ln_levels,
             alphas: self.alphas,
+            clock: self.clock,
         }
+    }
+
+    /// The same model with the memory's thresholds and brightnesses at time `t` (s) computed
+    /// once: [`Self::at`] at `t` (or at any time as far past a lattice instant) reads them
+    /// instead of recomputing them point by point (the same values); other times compute their
+    /// own.
+    pub fn for_time(mut self, t: f64) -> Self {
+        self.clock = Some(Box::new(self.memory.clock(t)));
+        self
     }
 
     /// The whitecaps drawn `offset` (m) ahead of where the breaking variable is lowest: on the
@@ -519,15 +533,22 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
             return WhiteWater { active: 1.0, residual: 0.0, white: 1.0, brightness: 1.0 };
         }
         let alpha = self.alpha_for_footprint(footprint_m);
+        let clock = self.clock.as_deref().filter(|c| c.holds(&self.memory, t));
         let mut surv = [0.0; MAX_MEMORY_INSTANTS];
-        let n = self.memory.survivals(u.to_array(), t, footprint_m, &mut surv);
+        let n = match clock {
+            Some(c) => self.memory.survivals_at(c, u.to_array(), footprint_m, &mut surv),
+            None => self.memory.survivals(u.to_array(), t, footprint_m, &mut surv),
+        };
         let mut src = [0.0; MAX_MEMORY_INSTANTS];
         let (x0, var, e) = self.breaking(u, t, footprint_m, &mut src[..n]);
         let active = phi(alpha - x0, var);
         for j in 0..n {
             src[j] = if surv[j] > 0.0 { phi(alpha - src[j] - self.edge_std * e, var) } else { 0.0 };
         }
-        let mut ww = self.memory.combine(t, active, &surv[..n], &src[..n]);
+        let mut ww = match clock {
+            Some(c) => self.memory.combine_at(c, active, &surv[..n], &src[..n]),
+            None => self.memory.combine(t, active, &surv[..n], &src[..n]),
+        };
         if self.windrow_cover > 0.0 {
             ww = self.memory.with_windrows(ww, self.windrow(u, footprint_m));
         }

@@ -72,6 +72,10 @@ struct Tier {
     wavenumber_f32: [f32; LANES],
     /// `ωᵢ` (rad s⁻¹), for the particle kinematics.
     omega: [f32; LANES],
+    /// `(Qᵢ/kᵢ²) kᵢ`, x and z (m): the particle displacement per unit `sin θᵢ`.
+    displacement_factor: [[f32; LANES]; 2],
+    /// `kᵢ` (x, z) and `1/kᵢ²` in f32, for the particle kinematics.
+    kinematic_k: [[f32; LANES]; 3],
     /// Real waves in this tier.
     count: u32,
     /// `Σ Aᵢ` of the f32 amplitudes the kernel uses (m).
@@ -155,6 +159,8 @@ impl TracedTrochoids {
                 series: Vec::new(),
                 wavenumber_f32: [0.0; LANES],
                 omega: [0.0; LANES],
+                displacement_factor: [[0.0; LANES]; 2],
+                kinematic_k: [[0.0; LANES]; 3],
                 count: chunk.len() as u32,
                 amplitude_sum: 0.0,
                 spread: 0.0,
@@ -181,6 +187,16 @@ impl TracedTrochoids {
                 t.slope_covariance[1][l] = mss * d.x * d.y;
                 t.slope_covariance[2][l] = mss * d.y * d.y;
                 t.wavenumber_f32[l] = w.wavenumber() as f32;
+                let k2 = t.wavenumber[l] * t.wavenumber[l];
+                t.kinematic_k[0][l] = t.kx[l] as f32;
+                t.kinematic_k[1][l] = t.kz[l] as f32;
+                t.kinematic_k[2][l] = if t.wavenumber[l] > 0.0 { (1.0 / k2) as f32 } else { 0.0 };
+                let f = if k2 > 0.0 { f64::from(t.steepness[l]) / k2 } else { 0.0 };
+                t.displacement_factor = [0, 1].map(|c| {
+                    let mut row = t.displacement_factor[c];
+                    row[l] = (f * [t.kx[l], t.kz[l]][c]) as f32;
+                    row
+                });
                 // f32 amplitude rounding (6×10⁻⁸ relative) and the 8-lane f32 sum are inside the
                 // factor 2 of PROFILE_ERROR's margin; the bound adds them explicitly anyway.
                 t.error += a * PROFILE_ERROR * (1.0 + 1.0 / (1.0 - q * q).sqrt()) + a * 1e-6;
@@ -254,67 +270,13 @@ impl TracedTrochoids {
     /// deformation `I − Σ Qᵢ d̂ᵢd̂ᵢᵀ cos θᵢ` and vertical acceleration `−Σ Aᵢωᵢ² cos θᵢ`, within
     /// the kernel's f32 error of the f64 sums.
     pub(crate) fn kinematics(&self, x: f64, z: f64) -> Kinematics {
-        let mut k = Kinematics::default();
-        for t in &self.tiers {
-            let mut s = [0.0; LANES];
-            for l in 0..LANES {
-                s[l] = t.kx[l] * x + t.kz[l] * z + t.offset[l];
-            }
-            let q = f32x8::new(t.steepness);
-            let (c, g) = profile8(reduce_phases(&s), q, &t.series, t.mode);
-            let a = f32x8::new(t.amplitude);
-            let w = f32x8::new(t.omega);
-            let (ac, ag) = (a * c, a * g);
-            let sn = g * (f32x8::ONE - q * c);
-            let mut kx = [0f32; LANES];
-            let mut kz = [0f32; LANES];
-            let mut inv_k2 = [0f32; LANES];
-            for l in 0..LANES {
-                kx[l] = t.kx[l] as f32;
-                kz[l] = t.kz[l] as f32;
-                inv_k2[l] =
-                    if t.wavenumber[l] > 0.0 { (1.0 / (t.wavenumber[l] * t.wavenumber[l])) as f32 } else { 0.0 };
-            }
-            let (kx, kz, inv_k2) = (f32x8::new(kx), f32x8::new(kz), f32x8::new(inv_k2));
-            let qc = q * c * inv_k2;
-            let v = qc * w;
-            let d = q * sn * inv_k2;
-            let r = |v: f32x8| f64::from(v.reduce_add());
-            k.height += r(ac);
-            k.gradient -= DVec2::new(r(ag * kx), r(ag * kz));
-            k.height_rate += r(ag * w);
-            k.velocity += DVec2::new(r(v * kx), r(v * kz));
-            k.displacement -= DVec2::new(r(d * kx), r(d * kz));
-            k.deformation -= DVec3::new(r(qc * kx * kx), r(qc * kx * kz), r(qc * kz * kz));
-            k.vertical_acceleration -= r(ac * w * w);
-        }
-        k.deformation += DVec3::new(1.0, 0.0, 1.0);
-        k
+        kinematics_of(&self.tiers, x, z)
     }
 
     /// `−Σ (Qᵢ/kᵢ) d̂ᵢ sin(kᵢ·u + offᵢ)`: each wave's particle displacement at rest phase
     /// `kᵢ·u + offᵢ` (f32 lanes, the phase reduced in f64).
     pub(crate) fn rest_displacement(&self, u: DVec2) -> DVec2 {
-        let mut d = DVec2::ZERO;
-        for t in &self.tiers {
-            let mut s = [0f32; LANES];
-            let mut fx = [0f32; LANES];
-            let mut fz = [0f32; LANES];
-            for l in 0..LANES {
-                let p = t.kx[l] * u.x + t.kz[l] * u.y + t.offset[l];
-                s[l] = (p - TAU * (p / TAU).round()) as f32;
-                let k2 = t.wavenumber[l] * t.wavenumber[l];
-                let f = if k2 > 0.0 { f64::from(t.steepness[l]) / k2 } else { 0.0 };
-                fx[l] = (f * t.kx[l]) as f32;
-                fz[l] = (f * t.kz[l]) as f32;
-            }
-            let sn = f32x8::new(s).sin();
-            d -= DVec2::new(
-                f64::from((sn * f32x8::new(fx)).reduce_add()),
-                f64::from((sn * f32x8::new(fz)).reduce_add()),
-            );
-        }
-        d
+        rest_displacement_of(&self.tiers, u)
     }
 
     /// Height of wave `i` alone by the scalar twin of the kernel.
@@ -578,6 +540,77 @@ impl LipschitzSum for TracedTrochoids {
             certify_cone_with(scratch, &mut tiers, span, half_angle, options, stats)
         })
     }
+}
+
+/// [`TracedTrochoids::kinematics`] over `tiers`: compiled for the widest vectors the processor
+/// has and chosen at run time (the phases' `f64` lanes then run four at a time); the operations
+/// and their order, so the roundings, are the same on every route.
+#[multiversion::multiversion(targets("x86_64+avx"))]
+fn kinematics_of(tiers: &[Tier], x: f64, z: f64) -> Kinematics {
+    let mut k = Kinematics::default();
+    // Every sum but the height's is kept in lanes over the tiers and reduced once (the height
+    // is reduced per tier, as `Self::height`, so that the two agree bit for bit).
+    let mut lanes = [f32x8::ZERO; 11];
+    for t in tiers {
+        let mut s = [0.0; LANES];
+        for l in 0..LANES {
+            s[l] = t.kx[l] * x + t.kz[l] * z + t.offset[l];
+        }
+        let q = f32x8::new(t.steepness);
+        let (c, g) = profile8(reduce_phases(&s), q, &t.series, t.mode);
+        let a = f32x8::new(t.amplitude);
+        let w = f32x8::new(t.omega);
+        let (ac, ag) = (a * c, a * g);
+        let sn = g * (f32x8::ONE - q * c);
+        let [kx, kz, inv_k2] = t.kinematic_k.map(f32x8::new);
+        let qc = q * c * inv_k2;
+        let v = qc * w;
+        let d = q * sn * inv_k2;
+        k.height += f64::from(ac.reduce_add());
+        for (sum, term) in lanes.iter_mut().zip([
+            ag * kx,
+            ag * kz,
+            ag * w,
+            v * kx,
+            v * kz,
+            d * kx,
+            d * kz,
+            qc * kx * kx,
+            qc * kx * kz,
+            qc * kz * kz,
+            ac * w * w,
+        ]) {
+            *sum += term;
+        }
+    }
+    let [gx, gz, rate, vx, vz, dx, dz, mxx, mxz, mzz, acc] = lanes.map(|v| f64::from(v.reduce_add()));
+    k.gradient = -DVec2::new(gx, gz);
+    k.height_rate = rate;
+    k.velocity = DVec2::new(vx, vz);
+    k.displacement = -DVec2::new(dx, dz);
+    k.deformation = DVec3::new(1.0 - mxx, -mxz, 1.0 - mzz);
+    k.vertical_acceleration = -acc;
+    k
+}
+
+/// [`TracedTrochoids::rest_displacement`] over `tiers`, multiversioned as [`kinematics_of`].
+#[multiversion::multiversion(targets("x86_64+avx"))]
+fn rest_displacement_of(tiers: &[Tier], u: DVec2) -> DVec2 {
+    let mut d = DVec2::ZERO;
+    for t in tiers {
+        let mut s = [0f32; LANES];
+        for l in 0..LANES {
+            let p = t.kx[l] * u.x + t.kz[l] * u.y + t.offset[l];
+            // Whole turns off by the 1.5·2⁵² rounding trick (`f64::round` is a library call on
+            // the SSE2 baseline); ties go to even, which changes no phase's sine.
+            const MAGIC: f64 = 6_755_399_441_055_744.0;
+            s[l] = (p - TAU * ((p * (1.0 / TAU) + MAGIC) - MAGIC)) as f32;
+        }
+        let sn = f32x8::new(s).sin();
+        let [fx, fz] = t.displacement_factor;
+        d -= DVec2::new(f64::from((sn * f32x8::new(fx)).reduce_add()), f64::from((sn * f32x8::new(fz)).reduce_add()));
+    }
+    d
 }
 
 #[cfg(test)]
