@@ -34,8 +34,8 @@ use crate::solar_tables::{K_OZONE, interpolate, solar_radiance};
 use crate::sun::OZONE_CM;
 use crate::{MIN_COS_VIEW, xyz_to_linear_srgb};
 
-/// Mean Earth radius (m).
-pub const EARTH_RADIUS_M: f64 = 6_371_000.0;
+/// Mean Earth radius (m), brine-core's.
+pub use brine_core::EARTH_RADIUS_M;
 /// Top of the model atmosphere (m above the ground).
 pub const ATMOSPHERE_TOP_M: f64 = 100_000.0;
 /// Ozone layer: tent profile from 10 to 40 km, peak at 25 km (m).

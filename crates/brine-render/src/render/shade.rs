@@ -22,10 +22,12 @@ pub(super) fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, hit: Optio
             }
             (hit.t, hit.point, n, &faded)
         }
-        // Beyond the trace distance: the mean plane, with every wave's slopes in the BRDF.
-        None if d.y < 0.0 && world.camera.position.y / -d.y < horizon_distance(world.camera.position.y) => {
-            let t = world.camera.position.y / -d.y;
-            (t, origin + t * d, DVec3::Y, &world.variance_total)
+        // Beyond the trace distance: the Earth's curved mean sea (brine-core), with every wave's
+        // slopes in the BRDF about its tilted normal; the point is on the sea (height 0).
+        None if let Some(t) = brine_core::mean_sea_distance(origin.y, d.y) => {
+            let p = origin + t * d;
+            let n = DVec3::from_array(brine_core::mean_sea_normal(origin.y, d.to_array(), t));
+            (t, DVec3::new(p.x, 0.0, p.z), n, &world.variance_total)
         }
         None => {
             // The sky's own aerosol is Preetham's turbidity: spray is not added to sky rays.
@@ -48,17 +50,6 @@ pub(super) fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, hit: Optio
     let l = spray(world, d, t, aerial(world, d, t, shade.radiance));
     cx.lap(Stage::Atmosphere, started);
     Sample { radiance: l, aov, weight }
-}
-
-/// Mean radius of the Earth (m).
-pub(super) const EARTH_RADIUS_M: f64 = 6.371e6;
-
-/// Distance to the sea horizon from a height `h` above the sea, `√(2Rh + h²)` (m): the Earth's
-/// curvature hides the sea beyond it, so rays that would meet the mean plane farther away see the
-/// sky just above the horizon.
-pub(super) fn horizon_distance(h: f64) -> f64 {
-    let h = h.max(0.01);
-    (2.0 * EARTH_RADIUS_M * h + h * h).sqrt()
 }
 
 /// Sea spray between the eye and the sea `t` metres along `d`:

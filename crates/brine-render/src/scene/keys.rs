@@ -315,7 +315,7 @@ pub const KEYS: &[KeySpec] = &[
         closed(10.0, 1e6),
         "m",
         "3000",
-        "waves are traced as geometry up to here; beyond, the mean plane with all slopes in the BRDF",
+        "waves are traced as geometry up to here; beyond, the Earth's curved mean sea with all slopes in the BRDF, out to the horizon",
     ),
     // [sea.fft]
     k(
