@@ -109,57 +109,52 @@ pub struct BakeMaps {
 /// # Returns
 /// The [`BakedFrame`].
 pub fn bake_frame(world: &World, t: f64, options: &BakeOptions) -> BakedFrame {
-    let frame_at;
-    let frame = if t.to_bits() == world.time.to_bits() {
-        &world.sea
-    } else {
-        frame_at = world.ocean.at_time(t);
-        &frame_at
-    };
-    let n = options.size;
-    let texel = options.tile_m / n as f64;
-    let up = options.up;
-    let f3 = |v: DVec3| v.as_vec3().to_array();
-    let mut maps = BakeMaps {
-        displacement: vec![[0.0; 3]; n * n],
-        normal: vec![[0.0; 3]; n * n],
-        foam: vec![0.0; n * n],
-        whitecap: vec![0.0; n * n],
-        jacobian: vec![0.0; n * n],
-        spray: vec![[0.0; 3]; n * n],
-    };
-    // Row by row, each texel written in place in every map.
-    let rows = maps
-        .displacement
-        .par_chunks_mut(n)
-        .zip(maps.normal.par_chunks_mut(n))
-        .zip(maps.foam.par_chunks_mut(n))
-        .zip(maps.whitecap.par_chunks_mut(n))
-        .zip(maps.jacobian.par_chunks_mut(n))
-        .zip(maps.spray.par_chunks_mut(n))
-        .enumerate();
-    rows.for_each(|(j, (((((disp, nrm), foam), wcap), jac), spray))| {
-        for i in 0..n {
-            let u = DVec2::new(i as f64, j as f64) * texel;
-            let d = frame.rest_displacement(u);
-            let x = u + d;
-            let s = frame.sample(x.x, x.y);
-            let p = DVec3::new(x.x, s.height, x.y);
-            let cover = world.cover_at_time(p, s.normal, t, texel);
-            let (mu, e) = s.minor_eigen();
-            let e3 = up.convert(DVec3::new(e.x, 0.0, e.y));
-            disp[i] = f3(up.convert(DVec3::new(d.x, s.height, d.y)));
-            nrm[i] = f3(up.convert(s.normal));
-            foam[i] = cover.foam as f32;
-            wcap[i] = cover.whitecap as f32;
-            jac[i] = s.jacobian as f32;
-            spray[i] = match up {
-                UpAxis::Y => [e3.x as f32, e3.z as f32, mu as f32],
-                UpAxis::Z => [e3.x as f32, e3.y as f32, mu as f32],
-            };
-        }
-    });
-    BakedFrame { size: n, time: t, maps }
+    world.with_sea_at(t, |frame| {
+        let n = options.size;
+        let texel = options.tile_m / n as f64;
+        let up = options.up;
+        let f3 = |v: DVec3| v.as_vec3().to_array();
+        let mut maps = BakeMaps {
+            displacement: vec![[0.0; 3]; n * n],
+            normal: vec![[0.0; 3]; n * n],
+            foam: vec![0.0; n * n],
+            whitecap: vec![0.0; n * n],
+            jacobian: vec![0.0; n * n],
+            spray: vec![[0.0; 3]; n * n],
+        };
+        // Row by row, each texel written in place in every map.
+        let rows = maps
+            .displacement
+            .par_chunks_mut(n)
+            .zip(maps.normal.par_chunks_mut(n))
+            .zip(maps.foam.par_chunks_mut(n))
+            .zip(maps.whitecap.par_chunks_mut(n))
+            .zip(maps.jacobian.par_chunks_mut(n))
+            .zip(maps.spray.par_chunks_mut(n))
+            .enumerate();
+        rows.for_each(|(j, (((((disp, nrm), foam), wcap), jac), spray))| {
+            for i in 0..n {
+                let u = DVec2::new(i as f64, j as f64) * texel;
+                let d = frame.rest_displacement(u);
+                let x = u + d;
+                let s = frame.sample(x.x, x.y);
+                let p = DVec3::new(x.x, s.height, x.y);
+                let cover = world.cover_at_time(p, s.normal, t, texel);
+                let (mu, e) = s.minor_eigen();
+                let e3 = up.convert(DVec3::new(e.x, 0.0, e.y));
+                disp[i] = f3(up.convert(DVec3::new(d.x, s.height, d.y)));
+                nrm[i] = f3(up.convert(s.normal));
+                foam[i] = cover.foam as f32;
+                wcap[i] = cover.whitecap as f32;
+                jac[i] = s.jacobian as f32;
+                spray[i] = match up {
+                    UpAxis::Y => [e3.x as f32, e3.z as f32, mu as f32],
+                    UpAxis::Z => [e3.x as f32, e3.y as f32, mu as f32],
+                };
+            }
+        });
+        BakedFrame { size: n, time: t, maps }
+    })
 }
 
 /// Encoding of the 16-bit PNG maps: `value = offset + scale × code/65535`.

@@ -122,25 +122,20 @@ fn grid_of(rows: usize, cols: usize, vertices: Vec<([f32; 3], [f32; 3], f32, f32
 /// # Returns
 /// The [`Mesh`].
 pub fn grid_mesh(world: &World, t: f64, grid: &MeshGrid) -> Mesh {
-    let frame_at;
-    let frame = if t.to_bits() == world.time.to_bits() {
-        &world.sea
-    } else {
-        frame_at = world.ocean.at_time(t);
-        &frame_at
-    };
-    let n = grid.count() as usize;
-    let origin = grid.center - DVec2::splat(0.5 * (n - 1) as f64 * grid.spacing_m);
-    let vertices: Vec<_> = (0..n * n)
-        .into_par_iter()
-        .with_min_len(1024)
-        .map(|k| {
-            let u = origin + DVec2::new((k % n) as f64, (k / n) as f64) * grid.spacing_m;
-            let x = u + frame.rest_displacement(u);
-            vertex(world, frame, x, grid.spacing_m)
-        })
-        .collect();
-    grid_of(n, n, vertices)
+    world.with_sea_at(t, |frame| {
+        let n = grid.count() as usize;
+        let origin = grid.center - DVec2::splat(0.5 * (n - 1) as f64 * grid.spacing_m);
+        let vertices: Vec<_> = (0..n * n)
+            .into_par_iter()
+            .with_min_len(1024)
+            .map(|k| {
+                let u = origin + DVec2::new((k % n) as f64, (k / n) as f64) * grid.spacing_m;
+                let x = u + frame.rest_displacement(u);
+                vertex(world, frame, x, grid.spacing_m)
+            })
+            .collect();
+        grid_of(n, n, vertices)
+    })
 }
 
 /// The sea of `world` at time `t` as the camera sees it: a polar grid around the camera's foot,
@@ -155,26 +150,21 @@ pub fn grid_mesh(world: &World, t: f64, grid: &MeshGrid) -> Mesh {
 /// The [`Mesh`] (Eulerian vertices: each on the traced surface above its grid point).
 pub fn camera_mesh(world: &World, t: f64, pixels: f64) -> Mesh {
     let (rings, angles, _) = camera_layout(world, pixels);
-    let frame_at;
-    let frame = if t.to_bits() == world.time.to_bits() {
-        &world.sea
-    } else {
-        frame_at = world.ocean.at_time(t);
-        &frame_at
-    };
-    let c = world.camera.position;
-    let alpha = world.camera.pixel_angle();
-    let cols = angles.len();
-    let vertices: Vec<_> = (0..rings.len() * cols)
-        .into_par_iter()
-        .with_min_len(1024)
-        .map(|k| {
-            let (r, a) = (rings[k / cols], angles[k % cols]);
-            let x = DVec2::new(c.x + r * a.cos(), c.z + r * a.sin());
-            vertex(world, frame, x, pixels * alpha * r)
-        })
-        .collect();
-    grid_of(rings.len(), cols, vertices)
+    world.with_sea_at(t, |frame| {
+        let c = world.camera.position;
+        let alpha = world.camera.pixel_angle();
+        let cols = angles.len();
+        let vertices: Vec<_> = (0..rings.len() * cols)
+            .into_par_iter()
+            .with_min_len(1024)
+            .map(|k| {
+                let (r, a) = (rings[k / cols], angles[k % cols]);
+                let x = DVec2::new(c.x + r * a.cos(), c.z + r * a.sin());
+                vertex(world, frame, x, pixels * alpha * r)
+            })
+            .collect();
+        grid_of(rings.len(), cols, vertices)
+    })
 }
 
 /// The radii and azimuths (atan2 in the x–z plane) of [`camera_mesh`] and its vertex count.

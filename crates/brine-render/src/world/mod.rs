@@ -160,6 +160,12 @@ impl World {
         &self.sea
     }
 
+    /// Runs `f` on the sea at time `t` (s): the world's own frame at its time, else the ocean
+    /// frozen at `t` (`Ocean::at_time`), made for the call.
+    pub fn with_sea_at<R>(&self, t: f64, f: impl FnOnce(&SeaFrame) -> R) -> R {
+        if t.to_bits() == self.time.to_bits() { f(&self.sea) } else { f(&self.ocean.at_time(t)) }
+    }
+
     /// The world's time (s, on the scene's clock).
     pub fn time(&self) -> f64 {
         self.time
