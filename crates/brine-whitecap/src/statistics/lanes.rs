@@ -103,22 +103,25 @@ impl PresentSums {
 /// octets.
 struct HistorySums {
     count: usize,
+    /// Whether an octet was added: the first writes the sums instead of adding to them.
+    started: bool,
     sums: [[[f32; 8]; 3]; MAX_HISTORY_INSTANTS],
 }
 
 thread_local! {
-    /// One set of history sums per thread, reused: only the instants a call reads are cleared
-    /// (clearing all 64 was a measurable share of a query).
-    static HISTORY_SUMS: std::cell::RefCell<HistorySums> =
-        const { std::cell::RefCell::new(HistorySums { count: 0, sums: [[[0.0; 8]; 3]; MAX_HISTORY_INSTANTS] }) };
+    /// One set of history sums per thread, reused, never cleared: the first octet of a call
+    /// writes them (clearing all 64 instants was a measurable share of a query).
+    static HISTORY_SUMS: std::cell::RefCell<HistorySums> = const {
+        std::cell::RefCell::new(HistorySums { count: 0, started: false, sums: [[[0.0; 8]; 3]; MAX_HISTORY_INSTANTS] })
+    };
 }
 
 impl HistorySums {
-    /// Runs `f` with this thread's sums cleared for `instants` instants.
+    /// Runs `f` with this thread's sums, empty, for `instants` instants.
     fn with<R>(instants: usize, f: impl FnOnce(&mut HistorySums) -> R) -> R {
         HISTORY_SUMS.with_borrow_mut(|h| {
             h.count = instants.min(MAX_HISTORY_INSTANTS);
-            h.sums[..h.count].fill([[0.0; 8]; 3]);
+            h.started = false;
             f(h)
         })
     }
@@ -129,11 +132,16 @@ impl HistorySums {
     fn add(&mut self, ag: f32x8, o: &Octet, (c, sn): (f32x8, f32x8), (cd, sd): (f32x8, f32x8)) {
         let w = [ag * o.dd[0], ag * o.dd[1], ag * o.dd[2]].map(f32x8::to_array);
         let rotation = Rotation { c: c.to_array(), s: sn.to_array(), cd: cd.to_array(), sd: sd.to_array() };
-        rotate_and_add(&mut self.sums[..self.count], &w, &rotation);
+        rotate_and_add(&mut self.sums[..self.count], &w, &rotation, !self.started);
+        self.started = true;
     }
 
     /// `μⱼ` into `out`.
-    fn finish(&self, out: &mut [f64]) {
+    fn finish(&mut self, out: &mut [f64]) {
+        if !self.started {
+            // No wave: the sums are 0.
+            self.sums[..self.count].fill([[0.0; 8]; 3]);
+        }
         for (o, [p, q, r]) in out.iter_mut().zip(&self.sums[..self.count]) {
             let sum = |v: &[f32; 8]| f64::from(f32x8::new(*v).reduce_add());
             let (pi, qi, ri) = (1.0 + sum(p), sum(q), 1.0 + sum(r));
@@ -151,18 +159,29 @@ struct Rotation {
     sd: [f32; 8],
 }
 
-/// The history's inner loop: at each instant, `(p, q, r) −= w c`, then `(c, s)` turned by
+/// The history's inner loop: at each instant, `(p, q, r) −= w c` (the first octet of a call
+/// writes `0 − w c` instead, the value a cleared sum would give), then `(c, s)` turned by
 /// `(cos δ, sin δ)`. Plain lanes, compiled for the widest vectors the processor has and chosen
 /// at run time (AVX: one instruction for the eight lanes, SSE2: two); the operations and their
 /// order are the same on every route, so are the roundings (Rust never fuses a product and a sum).
 #[multiversion::multiversion(targets("x86_64+avx"))]
-fn rotate_and_add(sums: &mut [[[f32; 8]; 3]], w: &[[f32; 8]; 3], rotation: &Rotation) {
+fn rotate_and_add(sums: &mut [[[f32; 8]; 3]], w: &[[f32; 8]; 3], rotation: &Rotation, first: bool) {
     let Rotation { mut c, mut s, cd, sd } = *rotation;
     for [p, q, r] in sums.iter_mut() {
+        if first {
+            for l in 0..8 {
+                p[l] = 0.0 - w[0][l] * c[l];
+                q[l] = 0.0 - w[1][l] * c[l];
+                r[l] = 0.0 - w[2][l] * c[l];
+            }
+        } else {
+            for l in 0..8 {
+                p[l] -= w[0][l] * c[l];
+                q[l] -= w[1][l] * c[l];
+                r[l] -= w[2][l] * c[l];
+            }
+        }
         for l in 0..8 {
-            p[l] -= w[0][l] * c[l];
-            q[l] -= w[1][l] * c[l];
-            r[l] -= w[2][l] * c[l];
             let turned = c[l] * cd[l] - s[l] * sd[l];
             s[l] = s[l] * cd[l] + c[l] * sd[l];
             c[l] = turned;
