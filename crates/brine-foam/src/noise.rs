@@ -202,7 +202,7 @@ impl FoamNoise {
         for (i, p) in perm.iter_mut().enumerate() {
             *p = table[i & 255];
         }
-        let weight_sum = (0..octaves).map(|o| libm::ldexp(1.0, -(o as i32))).sum();
+        let weight_sum = OCTAVE_SCALE[..octaves as usize].iter().sum();
         Ok(Self { perm, amplitude, wavelength: wavelength_m, octaves, weight_sum, period: None })
     }
 
@@ -290,9 +290,10 @@ impl FoamNoise {
         debug_assert!(footprint_m >= 0.0);
         let (mut kept, mut total) = (0.0, 0.0);
         let ratio = self.wavelength / footprint_m.max(f64::MIN_POSITIVE);
-        for o in 0..self.octaves {
-            let fade = smoothstep(1.0, 1.5, ratio * OCTAVE_SCALE[o as usize]);
-            let w2 = libm::ldexp(1.0, -2 * (o as i32));
+        for &scale in &OCTAVE_SCALE[..self.octaves as usize] {
+            let fade = smoothstep(1.0, 1.5, ratio * scale);
+            // `wₒ² ∝ 2⁻²ᵒ`, exact as a square of `2⁻ᵒ`.
+            let w2 = scale * scale;
             kept += fade * fade * w2;
             total += w2;
         }
