@@ -295,6 +295,91 @@ fn sky_r2(scene_text: &str, frame: &Frame) -> Result<(f64, f64), String> {
     Ok((r2(&lum, &blurred), r2(&lum, &mirror)))
 }
 
+/// Points of the tile-lag correlation, spread by the `R₂` sequence over a square of this side (m).
+const LAG_POINTS: usize = 20_000;
+const LAG_SQUARE_M: f64 = 2_000.0;
+
+/// Side of a pixel of the top-down view on the sea (m): 50 m up, a 60° field over [`TOP_DOWN_SIZE`] pixels.
+fn top_down_pixel_m() -> f64 {
+    2.0 * 50.0 * 30f64.to_radians().tan() / f64::from(TOP_DOWN_SIZE)
+}
+
+/// How much the FFT sea repeats: each cascade is periodic, so the sea's slopes correlate with
+/// themselves one tile `L_c` away by cascade `c`'s share of their variance, on top of what any
+/// sea of that spectrum correlates at that distance. Returns the largest share over the
+/// cascades: of the slopes a pixel of the top-down view shows (each cascade's gradient averaged
+/// over the pixel's footprint, as brine-waves `FftSlopeFilter` reads it), over [`LAG_POINTS`]
+/// points, and of the drawn surface itself (the cascades' gradient grids, no footprint).
+fn tile_lag_correlation(text: &str) -> Result<(f64, f64), String> {
+    let scene = Scene::from_toml_str(text, "lags.toml").map_err(|e| e.to_string())?;
+    let world = brine_render::World::new(&scene).map_err(|e| e.to_string())?;
+    let brine_waves::FrameSurface::Fft(frame) = world.sea().surface() else {
+        return Err("tile lags: not an FFT sea".into());
+    };
+    let sigma = top_down_pixel_m() / brine_waves::BOX_WIDTH_PER_SIGMA;
+    // The R₂ low-discrepancy sequence (Roberts 2018): an even cover, no seed.
+    let (a1, a2) = (0.754_877_666_246_692_7, 0.569_840_290_998_053_3);
+    let points: Vec<(f64, f64)> = (0..LAG_POINTS)
+        .map(|i| {
+            let i = i as f64 + 1.0;
+            (LAG_SQUARE_M * (0.5 + a1 * i).fract(), LAG_SQUARE_M * (0.5 + a2 * i).fract())
+        })
+        .collect();
+    let variance = |v: &mut dyn Iterator<Item = (f64, f64)>| {
+        let (mut n, mut sx, mut sz, mut sxx) = (0.0, 0.0, 0.0, 0.0);
+        for (x, z) in v {
+            (n, sx, sz, sxx) = (n + 1.0, sx + x, sz + z, sxx + x * x + z * z);
+        }
+        sxx / n - (sx / n).powi(2) - (sz / n).powi(2)
+    };
+    let (mut seen, mut drawn) = (Vec::new(), Vec::new());
+    for c in frame.cascades() {
+        let g = c.gradients();
+        drawn.push(variance(&mut g.iter().map(|g| (f64::from(g[0]), f64::from(g[1])))));
+        let base = g.iter().map(|g| [f64::from(g[0]), f64::from(g[1])]).collect();
+        let pyramid = brine_waves::FftPyramid::<2>::new(c.resolution(), c.spacing(), base);
+        seen.push(variance(&mut points.iter().map(|&(x, z)| {
+            let m = pyramid.footprint_mean(x, z, sigma);
+            (m[0], m[1])
+        })));
+    }
+    let largest_share = |v: &[f64]| v.iter().copied().fold(0.0, f64::max) / v.iter().sum::<f64>();
+    Ok((largest_share(&seen), largest_share(&drawn)))
+}
+
+/// Shortest wave the detail figure can count, in near-field footprints: a box of side `w`
+/// averages a wave of length `2w` to `2/π` of its slope (`sinc(π w/λ)`), so 0.41 of its slope
+/// variance; shorter waves keep less.
+const VISIBLE_WAVE_FOOTPRINTS: f64 = 2.0;
+
+/// What the detail figure can reach: the share of Cox & Munk's total that Elfouhaily et al.
+/// (1997)'s spectrum, the one published model of the short wind waves (whose total slope
+/// variance follows Cox & Munk's), holds in waves longer than [`VISIBLE_WAVE_FOOTPRINTS`] times
+/// the median pixel footprint `α t/√|d_y|` of the near field. Returns the share and that footprint (m).
+fn detail_reach(text: &str, frame: &Frame, wind: f64) -> Result<(f64, f64), String> {
+    let scene = Scene::from_toml_str(text, "reach.toml").map_err(|e| e.to_string())?;
+    let world = brine_render::World::new(&scene).map_err(|e| e.to_string())?;
+    let angle = world.filtering_angle();
+    let mut footprints = Vec::new();
+    for j in 0..frame.height {
+        for i in 0..frame.width {
+            let a = &frame.aovs[(j * frame.width + i) as usize];
+            if (NEAR_FIELD_M.0..=NEAR_FIELD_M.1).contains(&a.depth) {
+                let d = world.camera().direction(f64::from(i) + 0.5, f64::from(j) + 0.5);
+                footprints.push(angle * f64::from(a.depth) / d.y.abs().sqrt());
+            }
+        }
+    }
+    if footprints.is_empty() {
+        return Err("detail reach: no near-field pixel".into());
+    }
+    footprints.sort_by(f64::total_cmp);
+    let w = footprints[footprints.len() / 2];
+    let spectrum = brine_waves::Elfouhaily::fully_developed(wind).map_err(|e| e.to_string())?;
+    let (up, cross) = spectrum.slope_variances(std::f64::consts::TAU / (VISIBLE_WAVE_FOOTPRINTS * w));
+    Ok(((up + cross) / cox_munk_total(wind), w))
+}
+
 /// Winds of the energy comparison (m s⁻¹).
 const ENERGY_WINDS: [f64; 3] = [3.0, 10.0, 18.0];
 /// Image of the energy comparison (pixels) and the reference's samples per pixel.
@@ -342,6 +427,13 @@ pub fn run(root: &Path) -> Result<(), String> {
             let png = dir.join(format!("{name}.png"));
             brine_render::write_frame(&png, &frame, frame.exposure_ev, false).map_err(|e| e.to_string())?;
             let detail = slope_variance(&slopes(&frame, NEAR_FIELD_M)) / cox_munk_total(wind);
+            let (reach, _) = detail_reach(&text, &frame, wind)?;
+            let lags = if surface == "fft" {
+                let (seen, drawn) = tile_lag_correlation(&scene_text(surface, wind, true, 1))?;
+                format!(" · tile lags {seen:.2} (drawn {drawn:.2})")
+            } else {
+                String::new()
+            };
             let top = render(&scene_text(surface, wind, true, 1), &format!("{name}-top.toml"))?;
             let peaks = peak_share(&top);
             let sparkle = if wind <= SPARKLE_MAX_WIND {
@@ -358,7 +450,7 @@ pub fn run(root: &Path) -> Result<(), String> {
                 String::new()
             };
             cells.push(format!(
-                "![{surface} at {wind} m/s](beaufort/{name}.png)<br>detail {detail:.2} · peaks {peaks:.2}{sparkle}{sky}"
+                "![{surface} at {wind} m/s](beaufort/{name}.png)<br>detail {detail:.2} (reach {reach:.2}) · peaks {peaks:.2}{lags}{sparkle}{sky}"
             ));
             let sun_name = format!("{name}-sun");
             let facing = render(&scene_text_facing(surface, wind, false, 1, true), &format!("{sun_name}.toml"))?;
@@ -399,10 +491,21 @@ pub fn run(root: &Path) -> Result<(), String> {
          Under each image, measured from the render's own output variables:\n\n\
          - **detail**: the slope variance of the shading normals 10–30 m from the eye, as a share of\n\
            Cox & Munk's clean-surface total at that wind. The rest of the slopes are in the BRDF:\n\
-           the pixel, 2–15 cm wide there, cannot show them.\n\
+           the pixel, 2–15 cm wide there, cannot show them. In brackets, what the figure can reach:\n\
+           the share of Cox & Munk's total that Elfouhaily et al. (1997)'s spectrum — the published\n\
+           model of the short wind waves, whose total follows Cox & Munk's — holds in waves longer than\n\
+           {VISIBLE_WAVE_FOOTPRINTS} median footprints of the near field (a pixel keeps 0.41 of the slope\n\
+           variance of a wave two footprints long, less of shorter ones). From 12 m/s most of Cox &\n\
+           Munk's total is in waves shorter than that: no sea filtered with its pixels shows half of it\n\
+           there, and one that showed more would sparkle.\n\
          - **peaks**: on a top-down view of the same sea (50 m up, 256 × 256 normals), the share of the\n\
            slope power in its {PEAKS} strongest wave vectors. A handful of crossing waves — a lattice of\n\
            glints — puts most of the power there; a sea of many waves little.\n\
+         - **tile lags** (FFT): how much the sea repeats. Each cascade is periodic, so one of its\n\
+           tiles away the slopes correlate with themselves by its share of their variance, on top of\n\
+           what any sea of the same spectrum correlates there. The figure is the largest share: of the\n\
+           slopes a pixel of the top-down view shows (averaged over its {px:.2} m footprint, {LAG_POINTS}\n\
+           points), and (in brackets) of the drawn surface, down to its millimetre waves.\n\
          - **sparkle** (2 and 5 m/s): the high-pass noise of the far field (150 m to 2.5 km) at 1\n\
            sample per pixel over that at {SPARKLE_SPP}: near 1 when each pixel is filtered over its\n\
            footprint, large when sub-pixel glints alias.\n\
@@ -431,7 +534,8 @@ pub fn run(root: &Path) -> Result<(), String> {
          | surface | U₁₀ (m/s) | 4th | 5th | 6th | 7th | 8th | 9th | 10th |\n|---|---|---|---|---|---|---|---|---|\n{energy}",
         ew = ENERGY_SIZE.0,
         eh = ENERGY_SIZE.1,
-        espp = ENERGY_SIZE.2
+        espp = ENERGY_SIZE.2,
+        px = top_down_pixel_m()
     );
     let path = root.join("docs/beaufort.md");
     std::fs::write(&path, page).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
