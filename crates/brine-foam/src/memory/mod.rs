@@ -51,6 +51,10 @@ const WELL_CONDITIONED: f64 = 1e-6;
 /// Survivals below this are skipped (the source is not evaluated there).
 const NEGLIGIBLE_SURVIVAL: f64 = 1e-4;
 
+/// Offset (m) of the lace that draws the foam's ageing from the one that draws its cover: a few
+/// hundred first-octave cells, in no ratio to the cell, so that the two are independent.
+const AGEING_LACE_OFFSET_M: [f64; 2] = [271.828_182_8, -314.159_265_4];
+
 /// Parameters of the foam memory.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FoamMemoryParams {
@@ -372,14 +376,24 @@ impl FoamMemory {
     /// White water drawn as lace ([`FoamLace::cover`]) at rest position `(x, z)` for a Gaussian
     /// footprint `σ` (m): the white cover `w` becomes `c`, of the same area mean; the active
     /// cover scales with it, `a′ = a c/w`, and the residual is what makes
-    /// `1 − (1 − a′)(1 − residual′) = c` (where `a′` is within 10⁻⁶ of 1 the residual scales with `c/w` instead); the brightness takes the lace's thickness shading
-    /// ([`FoamLace::cover_and_shade`], mean 1 over the foam). Unchanged without a lace.
+    /// `1 − (1 − a′)(1 − residual′) = c` (where `a′` is within 10⁻⁶ of 1 the residual scales
+    /// with `c/w` instead).
+    ///
+    /// The brightness `b` (Koepke's falling reflectance of ageing foam, over fresh foam's) is
+    /// drawn as holes opening in the foam rather than as a uniform dimming: a second lace,
+    /// independent of the first (a few hundred cells away), of cover `b`, so that where a
+    /// pixel resolves it old foam is a net of bright filaments around open water and where it does
+    /// not the pixel sees the mean `b`. Both laces' thickness shading
+    /// ([`FoamLace::cover_and_shade`], mean 1 over the foam) multiply the brightness. The area
+    /// means of the cover and of `cover × brightness` are unchanged. Unchanged without a lace.
     pub fn laced(&self, ww: WhiteWater, x: f64, z: f64, sigma_m: f64) -> WhiteWater {
         let Some(lace) = &self.lace else { return ww };
         if ww.white <= 0.0 {
             return ww;
         }
         let (c, shade) = lace.cover_and_shade(x, z, sigma_m, ww.white);
+        let [dx, dz] = AGEING_LACE_OFFSET_M;
+        let (thick, thick_shade) = lace.cover_and_shade(x + dx, z + dz, sigma_m, ww.brightness.clamp(0.0, 1.0));
         let active = (ww.active * c / ww.white).min(c);
         // `(c − a′)/(1 − a′)`; where the active cover is within 10⁻⁶ of 1 the union is white
         // whatever the residual, and the quotient is ill-conditioned: the residual scales.
@@ -388,7 +402,7 @@ impl FoamMemory {
         } else {
             (ww.residual * c / ww.white).min(1.0)
         };
-        WhiteWater { active, residual, white: c, brightness: ww.brightness * shade }
+        WhiteWater { active, residual, white: c, brightness: thick * thick_shade * shade }
     }
 
     /// `τ`, the decay time of the foam area (s).

@@ -158,3 +158,41 @@ fn bad_parameters_are_named() {
     let e = FoamMemory::new(&FoamMemoryParams { step_s: 10.0, ..FoamMemoryParams::default() }, 0.4);
     assert!(matches!(e, Err(FoamError::OutOfRange(brine_core::OutOfRange { name: "step_s", .. }))));
 }
+
+/// Ageing foam is drawn as holes, not as a dimming: over the sea the drawn reflectance
+/// `white × brightness` keeps its mean `w b` at every footprint (from a point to one that hides
+/// the lace), and where a pixel resolves the lace a point of old, dim foam is either bright foam
+/// (its brightness within the thickness shading of 1) or open water, but in the lace's softened
+/// edges: a band of `±0.3 min(b, 1 − b)` of its uniform variable, so at most `0.6 min(b, 1 − b)`
+/// of the area.
+#[test]
+fn ageing_foam_opens_holes_of_the_same_mean() {
+    let mem = memory();
+    let n = 40_000.0;
+    for (white, brightness, solid) in [(1.0, 0.3, true), (1.0, 0.6, true), (0.5, 0.4, false)] {
+        let ww = WhiteWater { active: 0.0, residual: white, white, brightness };
+        for sigma in [0.0, 0.04, 0.12, 1.0] {
+            let mean = points().map(|p| {
+                let l = mem.laced(ww, p[0], p[1], sigma);
+                l.white * l.brightness
+            });
+            let mean = mean.sum::<f64>() / n;
+            assert!(
+                (mean - white * brightness).abs() < AREA_TOL,
+                "w {white}, b {brightness}, σ {sigma}: mean {mean}, expected {}",
+                white * brightness
+            );
+        }
+        if solid {
+            // Thickness shading of both laces: 1 ± 0.2 each.
+            let (lo, hi) = (0.8 * 0.8, 1.2 * 1.2);
+            let in_between =
+                points().map(|p| mem.laced(ww, p[0], p[1], 0.0).brightness).filter(|&b| b > 0.05 && b < lo).count()
+                    as f64
+                    / n;
+            let edges = 0.6 * brightness.min(1.0 - brightness);
+            assert!(in_between < edges + AREA_TOL, "b {brightness}: {in_between} of the points dim but not open");
+            assert!(points().all(|p| mem.laced(ww, p[0], p[1], 0.0).brightness <= hi + 1e-12));
+        }
+    }
+}

@@ -276,9 +276,10 @@ pub(super) fn white_water(
     };
     let cover = world.cover_at(p, n, footprint);
     if let Some((white, brightness)) = cover.memory {
-        // Fresh foam (Koepke's R_f) where the crest breaks, dimming with the foam's age; ageing
-        // foam thins (Koepke's falling reflectance): the water shows through it. Thick foam in
-        // a lace is brighter than the mean (brightness above 1): opaque, and more reflective.
+        // Fresh foam (Koepke's R_f) where the crest breaks; ageing foam thins (Koepke's falling
+        // reflectance): the water shows through it, through holes where the pixel resolves its
+        // lace (brightness 0 there). Thick foam in a lace is brighter than the mean (brightness
+        // above 1): opaque, and more reflective.
         let c = white * brightness;
         if c > 0.0 {
             shade.radiance = shade.radiance * (1.0 - c.min(white)) + lambert(FRESH_FOAM_REFLECTANCE) * c;
