@@ -205,13 +205,8 @@ pub(super) fn shade_surface(
     let f = (fresnel_dielectric(cos_v, 1.0, WATER_IOR)
         * crate::world::rough_reflectance().roughness_factor(cos_v, sigma_v))
     .clamp(0.0, 1.0);
-    let mut r = reflect(d, n);
-    if r.y < 1e-3 {
-        // A reflection pointing into the sea would hit another wave; take the horizon sky.
-        r = DVec3::new(r.x, 1e-3, r.z).normalize();
-    }
-    let lobe = 2.0 * (0.5 * (variance.sigma_x2() + variance.sigma_y2())).sqrt();
-    let sky = world.filtered_sky.radiance(r, lobe, |r| world.sky.radiance_rgb(r));
+    let r = reflect(d, n);
+    let escape = reflection_escape(world, variance, r);
     // Sun glint and moon glitter through the BRDF of the unresolved slopes (brine-optics
     // `reflected_source_radiance`: a point source or the disc's integral, as the disc's image needs).
     let glint = |disc: &brine_sky::Disc, rules: &SunDisc| {
@@ -240,11 +235,85 @@ pub(super) fn shade_surface(
     let started = cx.clock();
     let crest = crest_radiance(world, field, p, v, n, cx) * light.sun;
     cx.lap(Stage::Subsurface, started);
+    // The reflected ray leaves over the waves drawn around the point: it escapes to the sky with
+    // Smith's probability for their slopes ([`reflection_escape`]), else it meets another wave.
+    let started = cx.clock();
+    let lobe = 2.0 * (0.5 * (variance.sigma_x2() + variance.sigma_y2())).sqrt();
+    let sky =
+        if escape > 0.0 { world.filtered_sky.radiance(r, lobe, |r| world.sky.radiance_rgb(r)) } else { DVec3::ZERO };
+    let sky =
+        if escape < 1.0 { escape * sky + (1.0 - escape) * met_wave_radiance(world, r, below, &light) } else { sky };
+    cx.lap(Stage::Surface, started);
     let sea = f * sky + sun + (1.0 - f) * below / (WATER_IOR * WATER_IOR) + crest;
     let started = cx.clock();
     let shade = white_water(world, p, d, t, normal, sea, light);
     cx.lap(Stage::WhiteWater, started);
     SurfaceShade { glint: glint_aov, ..shade }
+}
+
+/// Slopes below this variance (dimensionless) mask no reflected ray.
+const MIN_MASKING_VARIANCE: f64 = 1e-6;
+
+/// `r` in the mean sea's wind frame: `(downwind, crosswind, up)`, for [`SlopeVariance::along`].
+fn in_wind_frame(world: &World, r: DVec3) -> DVec3 {
+    DVec3::new(r.dot(world.wind), r.dot(DVec3::Y.cross(world.wind)), r.y)
+}
+
+/// Probability that a ray reflected along the unit `r` at a hit escapes the waves drawn around
+/// it: Smith's `1/(1 + Λ(r_y, σ_d²))` (brine-optics `smith_lambda`) for the slope variance `σ_d²`
+/// of the waves drawn there — the sea's total less the BRDF's `variance`, along `r`'s azimuth —
+/// over the mean sea, 0 for a direction pointing into the sea; averaged over the elevations of
+/// the pixel's reflection lobe (`±√3 σ_r` and `r_y`, weights 1/6, 4/6, 1/6; `σ_r = 2σ_s`, as the
+/// filtered sky's). 1 where nothing is drawn. The slopes in the BRDF mask inside its own rough
+/// reflectance already.
+///
+/// # References
+/// Smith B.G. 1967, IEEE Trans. Antennas Propag. 15(5) (the shadowing function); Bruneton E.,
+/// Neyret F., Holzschuch N. 2010, Eq. 6 (its Gaussian-slope form).
+pub(super) fn reflection_escape(world: &World, variance: &SlopeVariance, r: DVec3) -> f64 {
+    let s = in_wind_frame(world, r);
+    let drawn = world.variance_total.along(s) - variance.along(s);
+    if !(drawn > MIN_MASKING_VARIANCE) {
+        return 1.0;
+    }
+    // The pixel reflects a lobe of directions, not one: the escape is averaged over the lobe's
+    // spread of elevations, `σ_r = 2σ_s` of the BRDF's slopes (three-point Gauss–Hermite), so a
+    // distant pixel whose mirror direction grazes the waves does not flip between 0 and 1 with
+    // its facet.
+    let spread = 2.0 * (0.5 * (variance.sigma_x2() + variance.sigma_y2())).sqrt();
+    let escape = |elevation: f64| {
+        if elevation <= 0.0 { 0.0 } else { 1.0 / (1.0 + brine_optics::smith_lambda(elevation.min(1.0), drawn)) }
+    };
+    let h = 3f64.sqrt() * spread;
+    (4.0 * escape(r.y) + escape(r.y - h) + escape(r.y + h)) / 6.0
+}
+
+/// Radiance of the wave a reflected ray along the unit `r` meets, on average: the mean sea seen
+/// at the ray's grazing angle `μ = max(|r_y|, 10⁻³)` with every slope in its BRDF — the sky at
+/// `(r_x, μ, r_z)` through their lobe times Fresnel and the rough factor of the sea's total slopes,
+/// the sun's glint and the moon's glitter through the BRDF of those slopes (under the hit's cloud
+/// shadow `light`) — and the water below it, taken as the hit's own `below`.
+pub(super) fn met_wave_radiance(world: &World, r: DVec3, below: DVec3, light: &DirectLight) -> DVec3 {
+    let up = DVec3::new(r.x, r.y.abs().max(1e-3), r.z).normalize();
+    let total = &world.variance_total;
+    let sigma = total.along(in_wind_frame(world, up)).sqrt();
+    let f = (fresnel_dielectric(up.y, 1.0, WATER_IOR)
+        * crate::world::rough_reflectance().roughness_factor(up.y, sigma))
+    .clamp(0.0, 1.0);
+    let lobe = 2.0 * (0.5 * total.total()).sqrt();
+    let sky = world.filtered_sky.radiance(up, lobe, |r| world.sky.radiance_rgb(r));
+    // Seen from the meeting point, the viewer is up the ray: `v = (−r_x, μ, −r_z)`.
+    let v = in_wind_frame(world, DVec3::new(-up.x, up.y, -up.z));
+    let glint = |disc: &brine_sky::Disc, rules: &SunDisc| {
+        if disc.direction.y > 0.0 && disc.irradiance_rgb != DVec3::ZERO {
+            disc.irradiance_rgb * reflected_source_radiance(v, in_wind_frame(world, disc.direction), total, 1.0, rules)
+        } else {
+            DVec3::ZERO
+        }
+    };
+    let discs = glint(world.sky.sun(), &world.discs.0) * light.sun
+        + world.sky.moon().zip(world.discs.1.as_ref()).map_or(DVec3::ZERO, |(m, d)| glint(m, d)) * light.moon;
+    f * sky + discs + (1.0 - f) * below / (WATER_IOR * WATER_IOR)
 }
 
 /// Foam (Darles et al. 2007 §4.1, Koepke 1984) and active whitecaps (Dupuy & Bruneton 2012) over

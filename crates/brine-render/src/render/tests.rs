@@ -157,3 +157,65 @@ fn detail_normals_shade_the_near_field_and_keep_their_slopes() {
     approx::assert_relative_eq!(kept / n, expected.x + expected.z, max_relative = DRAW_REL);
     assert!(gain > 0.1 * (expected.x + expected.z), "drawn {gain}, band {}", expected.x + expected.z);
 }
+
+/// A reflection escapes the drawn waves with Smith's probability: never deep into the sea,
+/// always where nothing is drawn, and in between Smith's `1/(1 + Λ)` for the drawn slopes averaged
+/// over the pixel's reflection lobe — so between its values at the lobe's two ends, `r_y ± √3 σ_r`
+/// — more often the higher the ray leaves (Smith 1967's `Λ` is decreasing in the elevation).
+#[test]
+fn reflections_escape_the_drawn_waves_as_smith_says() {
+    const ROUNDING: f64 = 1e-12;
+    let world = World::new(&Scene::default_scene()).expect("the default scene is valid");
+    let total = world.variance_total;
+    let up = |e: f64| DVec3::new(e.cos(), e.sin(), 0.0);
+    // Everything in the BRDF: nothing drawn masks the ray.
+    assert!((reflection_escape(&world, &total, up(0.01)) - 1.0).abs() < ROUNDING);
+    // Almost nothing in the BRDF (a lobe of ±0.02 rad): the sea's whole variance masks the ray.
+    let brdf = SlopeVariance::new(5e-5, 5e-5).expect("valid");
+    let h = 3f64.sqrt() * 2.0 * 5e-5f64.sqrt();
+    assert!(reflection_escape(&world, &brdf, up(-0.05)).abs() < ROUNDING);
+    let mut last = 0.0;
+    for e in [0.001, 0.01, 0.05, 0.1, 0.3, 0.6] {
+        let r = up(e);
+        let s = DVec3::new(r.dot(world.wind), r.dot(DVec3::Y.cross(world.wind)), r.y);
+        let drawn = total.along(s) - brdf.along(s);
+        let smith = |y: f64| if y <= 0.0 { 0.0 } else { 1.0 / (1.0 + brine_optics::smith_lambda(y, drawn)) };
+        let got = reflection_escape(&world, &brdf, r);
+        assert!(
+            got >= smith(r.y - h) - ROUNDING && got <= smith(r.y + h) + ROUNDING,
+            "elevation {e}: {got} outside [{}, {}]",
+            smith(r.y - h),
+            smith(r.y + h)
+        );
+        assert!(got > last, "elevation {e}: {got} after {last}");
+        last = got;
+    }
+}
+
+/// Crests do not mirror the horizon: on a 12 m/s trochoid sea seen from 10 m (foam and light
+/// through the crests off), almost no pixel of the middle distance is 1.5 times brighter than the
+/// pixels above and below it. Taking the horizon sky for every reflection pointing into the sea
+/// drew 1.6 % of them so: horizontal threads along the backs of crests seen edge-on.
+#[test]
+fn crests_do_not_mirror_the_horizon() {
+    const THREADS: f64 = 2e-3;
+    let text = "[camera]\nposition = [0.0, 10.0, 0.0]\npitch_deg = -8.0\nyaw_deg = 0.0\nwidth = 640\nheight = 360\n\n\
+                [sea]\nwind_speed_m_s = 12.0\nwind_direction_deg = 20.0\nseed = 3\n\n\
+                [sky]\nsun_elevation_deg = 30.0\nsun_azimuth_deg = 90.0\n\n\
+                [phenomena]\nfoam = false\nwhitecaps = false\nsubsurface = false\n";
+    let scene = Scene::from_toml_str(text, "threads.toml").expect("a valid scene");
+    let frame = render(&scene, &RenderOptions::default(), &|| {}).expect("renders");
+    let w = frame.width as usize;
+    let y = |i: usize| frame.pixels[i].dot(DVec3::new(0.2126, 0.7152, 0.0722));
+    let (mut bright, mut all) = (0.0, 0.0);
+    for r in 140..200 {
+        for c in 1..w - 1 {
+            let i = r * w + c;
+            all += 1.0;
+            if y(i) > 1.5 * (y(i - w) + y(i + w)) / 2.0 {
+                bright += 1.0;
+            }
+        }
+    }
+    assert!(bright / all < THREADS, "{bright} of {all} pixels are threads");
+}
