@@ -491,7 +491,7 @@ pub fn run(root: &Path) -> Result<(), String> {
          Under each image, measured from the render's own output variables:\n\n\
          - **detail**: the slope variance of the shading normals 10–30 m from the eye, as a share of\n\
            Cox & Munk's clean-surface total at that wind. The rest of the slopes are in the BRDF:\n\
-           the pixel, 2–15 cm wide there, cannot show them. In brackets, what the figure can reach:\n\
+           the pixel, 5–13 cm wide there, cannot show them. In brackets, what the figure can reach:\n\
            the share of Cox & Munk's total that Elfouhaily et al. (1997)'s spectrum — the published\n\
            model of the short wind waves, whose total follows Cox & Munk's — holds in waves longer than\n\
            {VISIBLE_WAVE_FOOTPRINTS} median footprints of the near field (a pixel keeps 0.41 of the slope\n\
