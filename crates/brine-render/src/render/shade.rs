@@ -292,7 +292,13 @@ pub(super) fn reflection_escape(world: &World, variance: &SlopeVariance, r: DVec
 /// at the ray's grazing angle `μ = max(|r_y|, 10⁻³)` with every slope in its BRDF — the sky at
 /// `(r_x, μ, r_z)` through their lobe times Fresnel and the rough factor of the sea's total slopes,
 /// the sun's glint and the moon's glitter through the BRDF of those slopes (under the hit's cloud
-/// shadow `light`) — and the water below it, taken as the hit's own `below`.
+/// shadow `light`) — and the water below it, taken as the hit's own `below`. Radiances in linear
+/// sRGB (kcd m⁻²). An approximation of the renderer's, not of a paper: the wave met is shaded
+/// statistically, not traced; where a pixel resolves it, it is the mean of the seas it could be.
+///
+/// # References
+/// Bruneton E., Neyret F., Holzschuch N. 2010, CGF 29(2), Eq. 5–6 and §5.2 (the rough sea's
+/// reflectance, its BRDF and the filtered sky).
 pub(super) fn met_wave_radiance(world: &World, r: DVec3, below: DVec3, light: &DirectLight) -> DVec3 {
     let up = DVec3::new(r.x, r.y.abs().max(1e-3), r.z).normalize();
     let total = &world.variance_total;
