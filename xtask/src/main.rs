@@ -83,6 +83,8 @@ fn run(cli: Cli) -> Result<(), String> {
         Task::Ci => {
             cargo(&["fmt", "--all", "--", "--check"], &[])?;
             cargo(&["clippy", "--workspace", "--all-targets", "--locked", "--", "-D", "warnings"], &[])?;
+            // brine-waves as brine-whitecap takes it: without the tracer adapters.
+            cargo(&["clippy", "-p", "brine-waves", "--no-default-features", "--locked", "--", "-D", "warnings"], &[])?;
             cargo(&["test", "--workspace"], &[])
         }
         Task::Bench { names, list } => bench::run(&names, list),

@@ -11,6 +11,8 @@
 //! assert!((brine_core::G - 9.81).abs() < 1e-12);
 //! ```
 
+pub mod footprint;
+
 /// Standard gravity `g` (m s⁻²) as the wave models use it (the papers' 9.81; the CGPM's
 /// conventional value is 9.806 65).
 ///

@@ -1,25 +1,11 @@
 //! `cargo bench -p brine-ephem --bench ephem`: cost of one position, SPA against Schlyter's
 //! elements, measured side by side in one process (medians of repeated runs).
 
-use std::hint::black_box;
-use std::time::Instant;
-
 use brine_ephem::{Observer, Options, SunModel, Timestamp, moon_position, sun_position};
 
+/// Median time per call (ns) of `f(0) … f(n − 1)` over `reps` repetitions.
 fn median_ns(n: i64, reps: usize, mut f: impl FnMut(i64) -> f64) -> f64 {
-    let mut times: Vec<f64> = (0..reps)
-        .map(|_| {
-            let t = Instant::now();
-            let mut acc = 0.0;
-            for i in 0..n {
-                acc += f(i);
-            }
-            black_box(acc);
-            t.elapsed().as_nanos() as f64 / n as f64
-        })
-        .collect();
-    times.sort_by(f64::total_cmp);
-    times[reps / 2]
+    brine_testkit::timing::median_ns_per_call(n as usize, reps, |i| f(i as i64))
 }
 
 fn main() {

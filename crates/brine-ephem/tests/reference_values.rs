@@ -9,13 +9,7 @@ use brine_ephem::{
     Observer, Options, SunModel, moon_ecliptic, moon_position, parse_utc, schlyter_day, sun_orbit, sun_position,
 };
 
-/// Angle between two (altitude, azimuth) directions, degrees.
-fn separation_deg(alt1: f64, az1: f64, alt2: f64, az2: f64) -> f64 {
-    let (a1, a2) = (alt1.to_radians(), alt2.to_radians());
-    // Haversine form (acos loses precision for small angles).
-    let h = ((a2 - a1) / 2.0).sin().powi(2) + a1.cos() * a2.cos() * ((az2 - az1).to_radians() / 2.0).sin().powi(2);
-    (2.0 * h.sqrt().asin()).to_degrees()
-}
+use brine_testkit::directions::separation_deg;
 
 struct Row {
     utc: String,
@@ -31,11 +25,9 @@ struct Row {
 }
 
 fn rows() -> Vec<Row> {
-    let text = include_str!("data/reference_positions.csv");
-    text.lines()
-        .filter(|l| !l.starts_with('#') && !l.starts_with("utc"))
-        .map(|l| {
-            let f: Vec<&str> = l.split(',').collect();
+    brine_testkit::csv::records(include_str!("data/reference_positions.csv"))
+        .into_iter()
+        .map(|f| {
             let n = |i: usize| f[i].parse::<f64>().unwrap();
             Row {
                 utc: f[0].to_string(),

@@ -5,8 +5,8 @@
 use std::hint::black_box;
 
 use brine_foam::{
-    FoamExtension, FoamExtensionParams, FoamHistory, FoamHistoryParams, KoepkeFoam, SprayLighting, SprayMedium,
-    SprayParams, SprayRay, SprayScattering, SurfaceStatistics,
+    FoamExtension, FoamExtensionParams, FoamHistory, FoamHistoryParams, FoamPoint, KoepkeFoam, SprayLighting,
+    SprayMedium, SprayParams, SprayRay, SprayScattering, SurfaceStatistics,
 };
 use criterion::{Criterion, criterion_group, criterion_main};
 
@@ -18,10 +18,20 @@ fn foam(c: &mut Criterion) {
     let medium = SprayMedium::new(&SprayParams::default()).unwrap();
     let mut g = c.benchmark_group("foam");
     g.bench_function("foam_amount, noise on, near pixel", |b| {
-        b.iter(|| ext.foam_amount(0.01, black_box(1.1), 0.2, -0.1, black_box(13.7), 4.2, 0.05))
+        b.iter(|| {
+            ext.foam_amount(
+                0.01,
+                &black_box(FoamPoint { height: 1.1, slope: [0.2, -0.1], rest: [13.7, 4.2], footprint_m: 0.05 }),
+            )
+        })
     });
     g.bench_function("foam_amount, noise filtered out", |b| {
-        b.iter(|| ext.foam_amount(0.01, black_box(1.1), 0.2, -0.1, black_box(13.7), 4.2, 500.0))
+        b.iter(|| {
+            ext.foam_amount(
+                0.01,
+                &black_box(FoamPoint { height: 1.1, slope: [0.2, -0.1], rest: [13.7, 4.2], footprint_m: 500.0 }),
+            )
+        })
     });
     g.bench_function("history accumulate (17 instants, trivial source)", |b| {
         b.iter(|| history.accumulate(black_box(123.4), |s| 0.01 * (1.0 + (0.3 * s.time_s).sin())))

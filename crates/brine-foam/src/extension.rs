@@ -160,35 +160,36 @@ impl FoamExtension {
     ///
     /// # Arguments
     /// - `coverage`: whitecap coverage `W` of the sea (`[0, 1]`, from [`crate::whitecap_coverage`]).
-    /// - `height`: surface height `y` (m).
-    /// - `slope_x`, `slope_z`: surface gradient (dimensionless).
-    /// - `rest_x`, `rest_z`: undisplaced horizontal coordinates (m) where the noise is read, so that
-    ///   the pattern moves with the water.
-    /// - `footprint_m`: pixel footprint on the sea (m, `≥ 0`) that filters the noise.
+    /// - `point`: the surface point, its slopes and footprint ([`FoamPoint`]).
     ///
     /// # Returns
     /// `s′`, the fraction of the pixel covered by foam, in `[0, 1]`.
     ///
     /// # References
     /// Darles et al. 2007 §4.1.1 Eq. 3–4; docs/equations.md §5.
-    #[allow(clippy::too_many_arguments)]
-    pub fn foam_amount(
-        &self,
-        coverage: f64,
-        height: f64,
-        slope_x: f64,
-        slope_z: f64,
-        rest_x: f64,
-        rest_z: f64,
-        footprint_m: f64,
-    ) -> f64 {
+    pub fn foam_amount(&self, coverage: f64, point: &FoamPoint) -> f64 {
         debug_assert!((0.0..=1.0).contains(&coverage));
         if coverage <= 0.0 {
             return 0.0;
         }
+        let FoamPoint { height, slope: [slope_x, slope_z], rest: [rest_x, rest_z], footprint_m } = *point;
         let nu = self.noise.value(rest_x, rest_z, footprint_m);
         (coverage * nu * self.weight(height, slope_x, slope_z) / self.mean_weight).clamp(0.0, 1.0)
     }
+}
+
+/// A point of the surface where [`FoamExtension::foam_amount`] is read.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct FoamPoint {
+    /// Surface height `y` (m), finite.
+    pub height: f64,
+    /// Surface gradient `(∂h/∂x, ∂h/∂z)` (dimensionless), finite.
+    pub slope: [f64; 2],
+    /// Undisplaced horizontal coordinates `(x, z)` (m) where the noise is read, so that the
+    /// pattern moves with the water.
+    pub rest: [f64; 2],
+    /// Pixel footprint on the sea (m, `≥ 0`) that filters the noise.
+    pub footprint_m: f64,
 }
 
 /// `E[((y − y_min)/(y_max − y_min))ⁿ]` for a Gaussian height `N(0, σ²)` truncated to
@@ -276,7 +277,7 @@ mod tests {
                 // ±6 standard deviations of the x slope.
                 let sx = s.slope_variance_x.sqrt() * (-6.0 + 12.0 * (j as f64 + 0.5) / m as f64);
                 let px = (-0.5 * sx * sx / s.slope_variance_x).exp();
-                num += py * px * ext.foam_amount(w, y, sx, 0.0, 0.0, 0.0, 0.0);
+                num += py * px * ext.foam_amount(w, &FoamPoint { height: y, slope: [sx, 0.0], ..FoamPoint::default() });
                 den += py * px;
             }
         }
@@ -286,8 +287,12 @@ mod tests {
     #[test]
     fn crest_has_more_foam_than_trough() {
         let ext = FoamExtension::new(&FoamExtensionParams::default(), &surface()).unwrap();
-        let crest = ext.foam_amount(0.01, 1.5, 0.2, 0.0, 0.0, 0.0, 1e3);
-        let trough = ext.foam_amount(0.01, -1.5, 0.2, 0.0, 0.0, 0.0, 1e3);
+        let crest = ext
+            .foam_amount(0.01, &FoamPoint { height: 1.5, slope: [0.2, 0.0], footprint_m: 1e3, ..FoamPoint::default() });
+        let trough = ext.foam_amount(
+            0.01,
+            &FoamPoint { height: -1.5, slope: [0.2, 0.0], footprint_m: 1e3, ..FoamPoint::default() },
+        );
         assert!(crest > CREST_OVER_TROUGH * trough, "{crest} vs {trough}");
     }
 

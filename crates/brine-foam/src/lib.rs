@@ -92,7 +92,7 @@ pub use coverage::{
     CoverageParams, DARLES_ONSET_WIND_M_S, MAX_ABS_DELTA_T_C, MAX_WIND_M_S, WhitecapLaw, whitecap_coverage,
 };
 pub use error::FoamError;
-pub use extension::{FoamExtension, FoamExtensionParams, SurfaceStatistics};
+pub use extension::{FoamExtension, FoamExtensionParams, FoamPoint, SurfaceStatistics};
 pub use history::{FoamHistory, FoamHistoryParams, FoamSample, FoamState, MAX_HISTORY_SAMPLES};
 pub use lace::{FoamLace, LACE_CELL_M, LACE_THICKNESS_CONTRAST};
 pub use medium::{ExtinctionEfficiency, SprayMedium, SprayParams};

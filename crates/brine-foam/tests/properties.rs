@@ -2,8 +2,8 @@
 
 use brine_foam::{
     CoverageParams, DARLES_ONSET_WIND_M_S, ExtinctionEfficiency, FoamExtension, FoamExtensionParams, FoamHistory,
-    FoamHistoryParams, FoamNoise, KoepkeFoam, MAX_ABS_DELTA_T_C, MSD86_RADIUS_RANGE_UM, SprayLighting, SprayMedium,
-    SprayParams, SprayRay, SprayScattering, SurfaceStatistics, WhitecapLaw, msd86_flux, whitecap_coverage,
+    FoamHistoryParams, FoamNoise, FoamPoint, KoepkeFoam, MAX_ABS_DELTA_T_C, MSD86_RADIUS_RANGE_UM, SprayLighting,
+    SprayMedium, SprayParams, SprayRay, SprayScattering, SurfaceStatistics, WhitecapLaw, msd86_flux, whitecap_coverage,
 };
 use proptest::prelude::*;
 
@@ -118,7 +118,7 @@ proptest! {
         let p = FoamExtensionParams { exponent: n, noise_amplitude: a, seed, ..FoamExtensionParams::default() };
         let s = SurfaceStatistics { y_min: -2.0, y_max: 2.0, height_std: 0.6, slope_variance_x: 0.03, slope_variance_z: 0.02 };
         let ext = FoamExtension::new(&p, &s).unwrap();
-        let amount = ext.foam_amount(w, y, sx, sz, x, z, fp);
+        let amount = ext.foam_amount(w, &FoamPoint { height: y, slope: [sx, sz], rest: [x, z], footprint_m: fp });
         prop_assert!((0.0..=1.0).contains(&amount));
         let nu = FoamNoise::new(a, 10.0, 5, seed).unwrap().value(x, z, fp);
         prop_assert!(nu >= 1.0 - a - NOISE_ROUNDING && nu <= 1.0 + a + NOISE_ROUNDING);

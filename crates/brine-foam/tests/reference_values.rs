@@ -10,9 +10,7 @@ const FOUR_DIGITS: f64 = 6e-4;
 /// Rounding of the product 0.4 × 0.55 (one flop).
 const PRODUCT_ROUNDING: f64 = 1e-15;
 
-fn csv(text: &str) -> Vec<Vec<String>> {
-    text.lines().filter(|l| !l.starts_with('#')).skip(1).map(|l| l.split(',').map(str::to_owned).collect()).collect()
-}
+use brine_testkit::csv::records as csv;
 
 #[test]
 fn monahan_coverage_laws() {
@@ -21,7 +19,7 @@ fn monahan_coverage_laws() {
     for row in rows {
         let (u, dt, expected): (f64, f64, f64) =
             (row[1].parse().unwrap(), row[2].parse().unwrap(), row[3].parse().unwrap());
-        let law = match row[0].as_str() {
+        let law = match row[0] {
             "monahan-1980" => WhitecapLaw::Monahan1980,
             "monahan-1986-stability" => WhitecapLaw::Monahan1986Stability { delta_t_c: dt },
             "monahan-1986-wind" => WhitecapLaw::Monahan1986Wind,

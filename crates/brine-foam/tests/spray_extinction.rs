@@ -24,37 +24,7 @@ const OSCILLATING_REL: f64 = 1e-6;
 /// Rounding of `n(r, 0)` recomputed from its documented formula (a dozen flops).
 const CONCENTRATION_ROUNDING: f64 = 1e-13;
 
-/// Simpson's rule on `[a, b]` from its end and middle values.
-fn simpson(a: f64, b: f64, fa: f64, fm: f64, fb: f64) -> f64 {
-    (b - a) / 6.0 * (fa + 4.0 * fm + fb)
-}
-
-/// Adaptive Simpson quadrature (Lyness 1969) of `f` on `[a, b]` to the absolute accuracy `eps`,
-/// with Richardson's correction on each accepted panel.
-fn adaptive_simpson(f: &impl Fn(f64) -> f64, a: f64, b: f64, eps: f64) -> f64 {
-    fn recurse(
-        f: &impl Fn(f64) -> f64,
-        (a, b): (f64, f64),
-        (fa, fm, fb): (f64, f64, f64),
-        whole: f64,
-        eps: f64,
-        depth: u32,
-    ) -> f64 {
-        let m = 0.5 * (a + b);
-        let (lm, rm) = (0.5 * (a + m), 0.5 * (m + b));
-        let (flm, frm) = (f(lm), f(rm));
-        let left = simpson(a, m, fa, flm, fm);
-        let right = simpson(m, b, fm, frm, fb);
-        let delta = left + right - whole;
-        if depth == 0 || delta.abs() <= 15.0 * eps {
-            return left + right + delta / 15.0;
-        }
-        recurse(f, (a, m), (fa, flm, fm), left, 0.5 * eps, depth - 1)
-            + recurse(f, (m, b), (fm, frm, fb), right, 0.5 * eps, depth - 1)
-    }
-    let (fa, fm, fb) = (f(a), f(0.5 * (a + b)), f(b));
-    recurse(f, (a, b), (fa, fm, fb), simpson(a, b, fa, fm, fb), eps, 40)
-}
+use brine_testkit::quadrature::adaptive_simpson;
 
 /// Van de Hulst's anomalous-diffraction efficiency, written out here independently of the crate.
 fn q_anomalous(r_um: f64, wavelength_nm: f64, m: f64) -> f64 {
@@ -68,8 +38,8 @@ fn reference_extinction(medium: &SprayMedium, q_e: impl Fn(f64) -> f64) -> f64 {
     let p = medium.params();
     let f = |r: f64| q_e(r) * std::f64::consts::PI * (r * 1e-6) * (r * 1e-6) * medium.concentration(r, 0.0);
     // A first pass sets the scale of the absolute accuracy.
-    let scale = adaptive_simpson(&f, p.radius_min_um, p.radius_max_um, 1e-6 * f(p.radius_min_um));
-    adaptive_simpson(&f, p.radius_min_um, p.radius_max_um, REFERENCE_REL * scale)
+    let scale = adaptive_simpson(f, p.radius_min_um, p.radius_max_um, 1e-6 * f(p.radius_min_um));
+    adaptive_simpson(f, p.radius_min_um, p.radius_max_um, REFERENCE_REL * scale)
 }
 
 #[test]
@@ -121,6 +91,6 @@ fn optical_depth_is_the_height_integral_of_the_extinction() {
     let m = SprayMedium::new(&SprayParams::default()).unwrap();
     let z_max = m.params().max_height_m;
     let scale = m.extinction(0.0, 1.0) * z_max;
-    let tau = adaptive_simpson(&|z| m.extinction(z, 1.0), 0.0, z_max, REFERENCE_REL * scale);
+    let tau = adaptive_simpson(|z| m.extinction(z, 1.0), 0.0, z_max, REFERENCE_REL * scale);
     assert!((m.optical_depth() / tau - 1.0).abs() < SMOOTH_REL, "{} vs {tau}", m.optical_depth());
 }

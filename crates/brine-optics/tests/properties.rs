@@ -7,16 +7,9 @@ use brine_optics::*;
 use glam::DVec3;
 use proptest::prelude::*;
 
-/// Composite Gauss–Legendre integral of `f` over `[a, b]` with `panels` panels of 16 points.
+/// Composite Gauss–Legendre integral of `f` over `[a, b]`, `panels` panels of 16 points.
 fn integrate(a: f64, b: f64, panels: usize, f: &mut impl FnMut(f64) -> f64) -> f64 {
-    let (x, w) = gauss_legendre(16);
-    let h = (b - a) / panels as f64;
-    (0..panels)
-        .map(|p| {
-            let lo = a + h * p as f64;
-            x.iter().zip(&w).map(|(x, w)| 0.5 * h * w * f(lo + 0.5 * h * (x + 1.0))).sum::<f64>()
-        })
-        .sum()
+    brine_testkit::quadrature::gauss_legendre_composite(f, a, b, panels, 16)
 }
 
 /// Reference integral over facet slopes `ζ` of `g(ζ, n)` for facets facing `v`, in coordinates
@@ -50,9 +43,7 @@ const ROUNDING: f64 = 1e-12;
 /// Total internal reflection returns exactly 1; this allows for the last ulp of `1 − F` paths.
 const EXACT: f64 = 1e-15;
 
-fn dir(theta: f64, phi: f64) -> DVec3 {
-    DVec3::new(theta.sin() * phi.cos(), theta.sin() * phi.sin(), theta.cos())
-}
+use brine_testkit::directions::from_polar as dir;
 
 /// Transmitted fraction of the power from the Fresnel amplitude coefficients, computed here
 /// independently of the crate's `g` form:

@@ -4,14 +4,8 @@
 use approx::assert_relative_eq;
 use brine_optics::*;
 
-/// Rows `(wavelength, values…)` of an embedded CSV (comment lines start with `#`).
-fn rows(text: &str) -> Vec<Vec<f64>> {
-    text.lines()
-        .map(str::trim)
-        .filter(|l| !l.is_empty() && !l.starts_with('#') && !l.starts_with("wavelength"))
-        .map(|l| l.split(',').map(|f| f.parse().unwrap()).collect())
-        .collect()
-}
+/// Rows `(wavelength, values…)` of an embedded CSV.
+use brine_testkit::csv::numbers as rows;
 
 const POPE_FRY: &str = include_str!("../data/pope_fry_1997_pure_water_absorption.csv");
 const MOREL: &str = include_str!("../data/morel_1988_kd.csv");

@@ -9,9 +9,7 @@ use brine_optics::*;
 use glam::DVec3;
 use proptest::prelude::*;
 
-fn dir(theta: f64, phi: f64) -> DVec3 {
-    DVec3::new(theta.sin() * phi.cos(), theta.sin() * phi.sin(), theta.cos())
-}
+use brine_testkit::directions::from_polar as dir;
 
 /// Mirror direction of `l` about the mean normal `z`.
 fn specular(l: DVec3) -> DVec3 {
@@ -25,14 +23,7 @@ fn calm() -> SlopeVariance {
 
 /// Composite Gauss–Legendre integral of `f` over `[a, b]`, `panels` panels of 8 points.
 fn integrate(a: f64, b: f64, panels: usize, f: &mut impl FnMut(f64) -> f64) -> f64 {
-    let (x, w) = gauss_legendre(8);
-    let h = (b - a) / panels as f64;
-    (0..panels)
-        .map(|p| {
-            let lo = a + h * p as f64;
-            x.iter().zip(&w).map(|(x, w)| 0.5 * h * w * f(lo + 0.5 * h * (x + 1.0))).sum::<f64>()
-        })
-        .sum()
+    brine_testkit::quadrature::gauss_legendre_composite(f, a, b, panels, 8)
 }
 
 /// `∫ I(v) v_z dω_v` over the upper hemisphere: Gauss–Legendre in `μ_v` with a panel edge at the

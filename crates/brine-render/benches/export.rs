@@ -2,32 +2,14 @@
 //! 1 M-vertex mesh and a million point queries, on the threads this machine has; medians of 5
 //! (the world is built once, outside the timings, as `brine bake` builds it once per animation).
 
-use std::time::Instant;
-
 use brine_render::export::{BakeOptions, MeshGrid, QueryPoint, UpAxis, bake_frame, grid_mesh, query_points};
 use brine_render::{Scene, World};
+use brine_testkit::timing::median_seconds;
 use glam::DVec2;
 
 /// Runs of each task, of which the median is reported: this 2-core machine's single timings
 /// spread by about ±10 %.
 const RUNS: usize = 5;
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
-
-fn time(runs: usize, mut f: impl FnMut()) -> f64 {
-    median(
-        (0..runs)
-            .map(|_| {
-                let t = Instant::now();
-                f();
-                t.elapsed().as_secs_f64()
-            })
-            .collect(),
-    )
-}
 
 fn main() {
     // `cargo bench --bench export -- bake` (or mesh, query) runs one task, for profiling.
@@ -40,7 +22,7 @@ fn main() {
     let world = World::new(&scene).expect("the default scene builds");
     let options = BakeOptions { size: 1024, tile_m: 200.0, up: UpAxis::Y };
     let bake = if run("bake") {
-        time(RUNS, || {
+        median_seconds(RUNS, || {
             std::hint::black_box(bake_frame(&tiled, 0.5, &options));
         })
     } else {
@@ -48,7 +30,7 @@ fn main() {
     };
     let grid = MeshGrid { center: DVec2::ZERO, size_m: 499.5, spacing_m: 0.5 };
     let mesh = if run("mesh") {
-        time(RUNS, || {
+        median_seconds(RUNS, || {
             std::hint::black_box(grid_mesh(&world, scene.sea.time_s, &grid));
         })
     } else {
@@ -62,11 +44,11 @@ fn main() {
         })
         .collect();
     let (query, surface) = if run("query") {
-        let query = time(RUNS, || {
+        let query = median_seconds(RUNS, || {
             std::hint::black_box(query_points(&scene, &world, &points).expect("queries"));
         });
         // The surface alone (no white water): what the geometry costs.
-        let surface = time(RUNS, || {
+        let surface = median_seconds(RUNS, || {
             use rayon::prelude::*;
             let v: Vec<f64> =
                 points.par_iter().with_min_len(256).map(|p| world.sea().sample(p.x, p.z).height).collect();

@@ -13,9 +13,9 @@ use brine_render::{RenderOptions, Scene, World, render_world};
 /// Renders per variant; the median is reported.
 const RUNS: usize = 5;
 
+/// The median of `v`.
 fn median(v: &mut [f64]) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
+    brine_testkit::timing::median(v.to_vec())
 }
 
 /// Median whole-frame and setup times (s) of `scene`, with its summary and stage shares printed.

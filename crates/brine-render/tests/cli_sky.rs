@@ -54,12 +54,7 @@ fn num(m: &serde_json::Map<String, serde_json::Value>, key: &str) -> f64 {
     m[key].as_f64().unwrap_or_else(|| panic!("{key} is not a number: {:?}", m[key]))
 }
 
-/// Angle (degrees) between two directions given as (altitude, azimuth) in degrees (haversine).
-fn separation_deg(alt1: f64, az1: f64, alt2: f64, az2: f64) -> f64 {
-    let (a1, a2) = (alt1.to_radians(), alt2.to_radians());
-    let h = ((a2 - a1) / 2.0).sin().powi(2) + a1.cos() * a2.cos() * ((az2 - az1).to_radians() / 2.0).sin().powi(2);
-    (2.0 * h.sqrt().asin()).to_degrees()
-}
+use brine_testkit::directions::separation_deg;
 
 const PLACE: [&str; 6] = ["--lat", "43.6", "--lon", "1.44", "--time", "2024-06-21T12:00:00Z"];
 

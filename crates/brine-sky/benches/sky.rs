@@ -1,35 +1,13 @@
 //! `cargo bench -p brine-sky --bench sky`: per-call costs of the sky a renderer pays per pixel,
 //! and the constructor costs, measured side by side in one process (medians of repeated runs).
 
-use std::hint::black_box;
-use std::time::Instant;
-
 use brine_sky::{
     CloudParams, DaylightModel, HosekWilkieSky, MoonParams, PreethamSky, SEA_GROUND_ALBEDO, Sky, SkyParams, Sun,
 };
 use glam::DVec3;
 
-fn dir(elevation_deg: f64, azimuth_deg: f64) -> DVec3 {
-    let (e, a) = (elevation_deg.to_radians(), azimuth_deg.to_radians());
-    DVec3::new(a.sin() * e.cos(), e.sin(), -a.cos() * e.cos())
-}
-
-/// Median time per call (ns) of `f` over `reps` repetitions of `n` calls.
-fn median_ns(n: usize, reps: usize, mut f: impl FnMut(usize) -> DVec3) -> f64 {
-    let mut times: Vec<f64> = (0..reps)
-        .map(|_| {
-            let t = Instant::now();
-            let mut acc = DVec3::ZERO;
-            for i in 0..n {
-                acc += f(i);
-            }
-            black_box(acc);
-            t.elapsed().as_nanos() as f64 / n as f64
-        })
-        .collect();
-    times.sort_by(f64::total_cmp);
-    times[reps / 2]
-}
+use brine_testkit::directions::from_elevation_azimuth_deg as dir;
+use brine_testkit::timing::median_ns_per_call as median_ns;
 
 fn main() {
     let views: Vec<DVec3> = (0..4096).map(|i| dir((i % 90) as f64, (i * 37 % 360) as f64)).collect();

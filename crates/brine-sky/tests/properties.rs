@@ -4,10 +4,7 @@ use brine_sky::{CloudLayers, CloudParams, MoonParams, PreethamSky, Scattering, S
 use glam::{DVec2, DVec3};
 use proptest::prelude::*;
 
-fn dir(elevation_deg: f64, azimuth_deg: f64) -> DVec3 {
-    let (e, a) = (elevation_deg.to_radians(), azimuth_deg.to_radians());
-    DVec3::new(a.sin() * e.cos(), e.sin(), -a.cos() * e.cos())
-}
+use brine_testkit::directions::from_elevation_azimuth_deg as dir;
 
 /// Mirror of `v` across the vertical plane containing the sun direction `s`.
 fn mirror(v: DVec3, s: DVec3) -> DVec3 {

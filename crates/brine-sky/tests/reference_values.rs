@@ -11,16 +11,15 @@ use brine_sky::{
     PerezCoefficients, henyey_greenstein, mie_beta, perez, rayleigh_beta, rayleigh_phase, zenith_chromaticity_xy,
     zenith_luminance,
 };
+use brine_testkit::check::{Tolerance, close};
 
 /// Rows of `tests/data/sheet_oracles.csv`.
 const N_ORACLES: usize = 13;
 
 #[test]
 fn sheet_oracles() {
-    let text = include_str!("data/sheet_oracles.csv");
     let mut n = 0;
-    for line in text.lines().filter(|l| !l.starts_with('#') && !l.starts_with("kind")) {
-        let f: Vec<&str> = line.split(',').collect();
+    for f in brine_testkit::csv::records(include_str!("data/sheet_oracles.csv")) {
         let num = |i: usize| f[i].parse::<f64>().unwrap_or(f64::NAN);
         let (t, ts) = (num(1), num(2).to_radians());
         let got = match f[0] {
@@ -38,8 +37,8 @@ fn sheet_oracles() {
             other => panic!("unknown oracle {other}"),
         };
         let (want, tol) = (num(6), num(7));
-        let err = if f[8] == "rel" { (got / want - 1.0).abs() } else { (got - want).abs() };
-        assert!(err < tol, "{line}: got {got}");
+        let what = f.join(",");
+        close(&what, got, want, Tolerance::parse(f[8], tol)).unwrap_or_else(|e| panic!("{e}"));
         n += 1;
     }
     assert_eq!(n, N_ORACLES);

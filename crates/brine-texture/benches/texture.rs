@@ -14,18 +14,7 @@ use brine_texture::{
 };
 use glam::DVec3;
 
-/// Median wall time of `runs` calls of `f` (s).
-fn median(runs: usize, mut f: impl FnMut()) -> f64 {
-    let mut t: Vec<f64> = (0..runs)
-        .map(|_| {
-            let s = Instant::now();
-            f();
-            s.elapsed().as_secs_f64()
-        })
-        .collect();
-    t.sort_by(f64::total_cmp);
-    t[runs / 2]
-}
+use brine_testkit::timing::median_seconds as median;
 
 /// Lai & Wu §IV: 0.187 s (Fig. 6) and 0.281 s (Fig. 8) per 384×384 frame.
 const PAPER_S: [f64; 2] = [0.187, 0.281];

@@ -334,8 +334,7 @@ impl PhotoOcean {
         let small_ex = Exemplar::new(small);
         let sequence = basis_sequence(
             &small_ex,
-            params.small_size,
-            params.small_size,
+            (params.small_size, params.small_size),
             params.frames,
             sp,
             params.min_shift,

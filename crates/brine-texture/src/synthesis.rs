@@ -191,6 +191,15 @@ pub(crate) struct Previous<'a> {
     pub(crate) min_shift: usize,
 }
 
+/// The cell whose source [`pick_source`] picks: its index, its colour on the chessboard and the
+/// canvas filled so far (empty for the black cells).
+#[derive(Clone, Copy)]
+struct Target<'a> {
+    canvas: &'a [[f32; 3]],
+    cell: usize,
+    black: bool,
+}
+
 /// Picks the source of one cell.
 ///
 /// - Black cell, no previous frame: uniformly random window.
@@ -199,17 +208,15 @@ pub(crate) struct Previous<'a> {
 ///   source), excluding sources closer than `min_shift` to the previous one.
 /// - White cell: the spatial candidates of the O-shaped zone; with a previous frame, the
 ///   `min_candidates` best (or all within tolerance) are re-ranked by the temporal distance.
-#[allow(clippy::too_many_arguments)]
 fn pick_source(
     ex: &Exemplar,
     board: &Chessboard,
-    canvas: &[[f32; 3]],
-    cell: usize,
-    black: bool,
+    target: Target<'_>,
     params: &SynthesisParams,
     previous: Option<Previous<'_>>,
     rng: &mut impl Rng,
 ) -> (usize, usize) {
+    let Target { canvas, cell, black } = target;
     let p = board.patch;
     let (nx, ny) = ex.positions(p);
     let n = nx * ny;
@@ -274,18 +281,21 @@ pub(crate) fn chessboard_fill(
     let p = board.patch;
     let (ncx, ncy) = board.cells();
     let mut sources = vec![(0usize, 0usize); ncx * ncy];
+    // The sources of the cells of one colour, each from its own random stream.
+    let pick = |canvas: &[[f32; 3]], black: bool| -> Vec<(usize, (usize, usize))> {
+        board
+            .cells_of(black)
+            .par_iter()
+            .map(|&cell| {
+                let mut rng = streams.cell(cell as u64);
+                let q = pick_source(ex, board, Target { canvas, cell, black }, params, previous, &mut rng);
+                tick();
+                (cell, q)
+            })
+            .collect()
+    };
     // Pass 1: black cells, feathered where their windows meet at corners.
-    let black = board.cells_of(true);
-    let empty: Vec<[f32; 3]> = Vec::new();
-    let picks: Vec<(usize, (usize, usize))> = black
-        .par_iter()
-        .map(|&cell| {
-            let mut rng = streams.cell(cell as u64);
-            let q = pick_source(ex, board, &empty, cell, true, params, previous, &mut rng);
-            tick();
-            (cell, q)
-        })
-        .collect();
+    let picks = pick(&[], true);
     let mut acc = vec![[0.0f32; 3]; w * h];
     let mut weight = vec![0.0f32; w * h];
     for &(cell, (qx, qy)) in &picks {
@@ -309,16 +319,7 @@ pub(crate) fn chessboard_fill(
         .map(|(a, &wt)| if wt > 0.0 { a.map(|v| (v / wt).clamp(0.0, 255.0)) } else { [0.0; 3] })
         .collect();
     // Pass 2: white cells, matched on their O-shaped zone, feathered across it.
-    let white = board.cells_of(false);
-    let picks: Vec<(usize, (usize, usize))> = white
-        .par_iter()
-        .map(|&cell| {
-            let mut rng = streams.cell(cell as u64);
-            let q = pick_source(ex, board, &canvas, cell, false, params, previous, &mut rng);
-            tick();
-            (cell, q)
-        })
-        .collect();
+    let picks = pick(&canvas, false);
     for &(cell, (qx, qy)) in &picks {
         sources[cell] = (qx, qy);
         let o = board.window_origin(cell);

@@ -62,15 +62,14 @@ pub fn synthesize_sequence(
     check("frames", frames as f64, (1..=4096).contains(&frames), "[1, 4096]")?;
     check("min_shift", min_shift as f64, min_shift <= 64, "[0, 64] texels")?;
     let ex = Exemplar::new(exemplar);
-    Ok(basis_sequence(&ex, width, height, frames, params, min_shift, seed, &|| {}))
+    Ok(basis_sequence(&ex, (width, height), frames, params, min_shift, seed, &|| {}))
 }
 
-/// [`synthesize_sequence`] on a prepared exemplar, with a tick per cell.
-#[allow(clippy::too_many_arguments)]
+/// [`synthesize_sequence`] on a prepared exemplar, with a tick per cell; `size` is the frames'
+/// `(width, height)` in texels.
 pub(crate) fn basis_sequence(
     ex: &Exemplar,
-    width: usize,
-    height: usize,
+    (width, height): (usize, usize),
     frames: usize,
     params: &SynthesisParams,
     min_shift: usize,

@@ -16,7 +16,10 @@
 
 use std::time::Instant;
 
-use brine_trace::{Hit, LipschitzSum, Method, Ray, TraceOptions, TraceStats, trace, trace_temporal, trace_tile};
+use brine_texture::Pinhole;
+use brine_trace::{
+    Hit, LipschitzSum, Method, Ray, RayTile, TraceOptions, TraceStats, trace, trace_temporal, trace_tile,
+};
 use brine_waves::{
     CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, TracedTrochoids, Trochoid, TrochoidSet, TrochoidSum,
     fit_trochoids, solve_trochoid_phase,
@@ -33,40 +36,28 @@ const TILE: usize = 16;
 /// One frame at 25 frames per second, for temporal coherence.
 const FRAME_S: f64 = 0.04;
 
+/// A benchmark camera: the renderer's pinhole (brine-texture `Pinhole`), named.
 struct Camera {
     name: &'static str,
+    pinhole: Pinhole,
     position: DVec3,
-    forward: DVec3,
-    right: DVec3,
-    up: DVec3,
-    tan_half: f64,
 }
 
 impl Camera {
     fn new(name: &'static str, height: f64, bearing_deg: f64, pitch_deg: f64) -> Self {
-        let (b, e) = (bearing_deg.to_radians(), pitch_deg.to_radians());
-        let forward = DVec3::new(b.sin() * e.cos(), e.sin(), -b.cos() * e.cos());
-        let right = forward.cross(DVec3::Y).normalize();
-        let up = right.cross(forward);
-        Self {
-            name,
-            position: DVec3::new(0.0, height, 0.0),
-            forward,
-            right,
-            up,
-            tan_half: (0.5 * FOV_DEG.to_radians()).tan(),
-        }
+        let position = DVec3::new(0.0, height, 0.0);
+        let pinhole = Pinhole::from_angles(position, bearing_deg, pitch_deg, FOV_DEG, WIDTH as u32, HEIGHT as u32)
+            .expect("a valid camera");
+        Self { name, pinhole, position }
     }
 
+    /// The direction through the centre of pixel `(x, y)`.
     fn direction(&self, x: usize, y: usize) -> DVec3 {
-        let aspect = WIDTH as f64 / HEIGHT as f64;
-        let sx = (2.0 * (x as f64 + 0.5) / WIDTH as f64 - 1.0) * self.tan_half * aspect;
-        let sy = (1.0 - 2.0 * (y as f64 + 0.5) / HEIGHT as f64) * self.tan_half;
-        (self.forward + sx * self.right + sy * self.up).normalize()
+        self.pinhole.direction(x as f64 + 0.5, y as f64 + 0.5)
     }
 
     fn pixel_angle(&self) -> f64 {
-        2.0 * self.tan_half / HEIGHT as f64
+        self.pinhole.pixel_angle()
     }
 }
 
@@ -84,20 +75,6 @@ fn sea(n: usize, q: Option<f64>) -> TrochoidSet {
                 .map(|w| Trochoid::new(w.amplitude(), w.wavenumber(), w.direction(), w.omega(), w.phase(), q).unwrap())
                 .collect(),
         ),
-    }
-}
-
-fn options(method: Method, footprint: f64) -> TraceOptions {
-    TraceOptions {
-        method,
-        t_max: 3000.0,
-        max_steps: 200_000,
-        min_step: 1e-3,
-        min_step_relative: 1e-4,
-        tolerance: 1e-4,
-        tolerance_relative: 1e-6,
-        footprint_angle: footprint,
-        ..TraceOptions::default()
     }
 }
 
@@ -143,7 +120,7 @@ impl Row {
 }
 
 fn run_method(surface: &dyn LipschitzSum, rays: &[Ray], method: Method, footprint: f64, name: &str) -> Row {
-    let o = options(method, footprint);
+    let o = TraceOptions::comparison(method, footprint);
     let mut stats = TraceStats::default();
     let start = Instant::now();
     let costs: Vec<(Option<Hit>, f64)> = rays
@@ -160,7 +137,7 @@ fn run_method(surface: &dyn LipschitzSum, rays: &[Ray], method: Method, footprin
 /// The tiered method with footprint fading and the cone quadtree over `TILE`×`TILE` tiles of the
 /// `(xs, ys)` pixel grid.
 fn run_coherent(surface: &TracedTrochoids, camera: &Camera, xs: &[usize], ys: &[usize], footprint: f64) -> Row {
-    let o = options(Method::Tiered, footprint);
+    let o = TraceOptions::comparison(Method::Tiered, footprint);
     let mut stats = TraceStats::default();
     let (w, h) = (xs.len(), ys.len());
     let mut results = vec![(None, 0.0); w * h];
@@ -174,7 +151,8 @@ fn run_coherent(surface: &TracedTrochoids, camera: &Camera, xs: &[usize], ys: &[
                 .collect();
             let mut hits = vec![None; dirs.len()];
             let mut costs = vec![0.0; dirs.len()];
-            trace_tile(surface, camera.position, &dirs, tw, &o, &mut stats, &mut hits, Some(&mut costs));
+            let tile = RayTile { origin: camera.position, directions: &dirs, width: tw };
+            trace_tile(surface, &tile, &o, &mut stats, &mut hits, Some(&mut costs));
             for j in 0..th {
                 for i in 0..tw {
                     results[(ty + j) * w + tx + i] = (hits[j * tw + i], costs[j * tw + i]);
@@ -187,7 +165,7 @@ fn run_coherent(surface: &TracedTrochoids, camera: &Camera, xs: &[usize], ys: &[
 
 /// Frame t + 1/25 s with temporal coherence from the hits of frame t.
 fn run_temporal(next: &TracedTrochoids, rays: &[Ray], previous: &[Option<f64>], footprint: f64) -> Row {
-    let o = options(Method::Tiered, footprint);
+    let o = TraceOptions::comparison(Method::Tiered, footprint);
     let mut stats = TraceStats::default();
     let start = Instant::now();
     let costs: Vec<(Option<Hit>, f64)> = rays

@@ -33,20 +33,10 @@ const FOV_DEG: f64 = 50.0;
 const CAMERAS: [(&str, f64, f64); 3] =
     [("2 m grazing", 2.0, -2.0), ("10 m horizon", 10.0, -9.0), ("50 m down", 50.0, -50.0)];
 
-/// The benchmark's tracer options (tiered, 3 km, steps from 1 mm + 10⁻⁴ t) at a tolerance and a
+/// The benchmark's tracer options (tiered, [`TraceOptions::comparison`]) at a tolerance and a
 /// footprint angle (rad, 0: no fading).
 fn bench_options(tolerance: f64, tolerance_relative: f64, footprint_angle: f64) -> TraceOptions {
-    TraceOptions {
-        method: Method::Tiered,
-        t_max: 3000.0,
-        max_steps: 200_000,
-        min_step: 1e-3,
-        min_step_relative: 1e-4,
-        tolerance,
-        tolerance_relative,
-        footprint_angle,
-        ..TraceOptions::default()
-    }
+    TraceOptions { tolerance, tolerance_relative, ..TraceOptions::comparison(Method::Tiered, footprint_angle) }
 }
 
 /// Directions of every `stride`-th pixel of a benchmark camera (bearing 100°, pitch in degrees).

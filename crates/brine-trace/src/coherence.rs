@@ -4,6 +4,18 @@ use glam::DVec3;
 
 use crate::{Hit, LipschitzSum, Ray, RaySpan, TraceOptions, TraceStats, trace};
 
+/// The primary rays of an image tile: from `origin` (m), unit `directions` row by row, `width`
+/// per row (dividing `directions.len()`).
+#[derive(Debug, Clone, Copy)]
+pub struct RayTile<'a> {
+    /// The eye (m).
+    pub origin: DVec3,
+    /// Unit directions, row-major.
+    pub directions: &'a [DVec3],
+    /// Rays per row.
+    pub width: usize,
+}
+
 /// Nodes with at most this many rays trace their rays one by one (a cone costs about as much as
 /// the steps it saves for fewer rays).
 pub const MIN_CONE_RAYS: usize = 4;
@@ -20,9 +32,8 @@ pub const MIN_CONE_RAYS: usize = 4;
 ///
 /// # Arguments
 /// - `surface`: the implicit function.
-/// - `origin`: the common origin (m).
-/// - `directions`: unit directions, row-major, `width` per row.
-/// - `width`: rays per row, `≥ 1`, dividing `directions.len()`.
+/// - `tile`: the rays ([`RayTile`]: the common origin, the directions row by row, `width ≥ 1`
+///   per row).
 /// - `options`: as [`trace`].
 /// - `stats`: counters (cone evaluations included).
 /// - `hits`: receives the hit of each ray (same length as `directions`).
@@ -31,17 +42,15 @@ pub const MIN_CONE_RAYS: usize = 4;
 ///
 /// # References
 /// Darles et al. 2007 §3.3, "Image coherence" and Fig. 3b; Hart 1996 (unbounding spheres).
-#[allow(clippy::too_many_arguments)]
 pub fn trace_tile<S: LipschitzSum + ?Sized>(
     surface: &S,
-    origin: DVec3,
-    directions: &[DVec3],
-    width: usize,
+    tile: &RayTile<'_>,
     options: &TraceOptions,
     stats: &mut TraceStats,
     hits: &mut [Option<Hit>],
     mut costs: Option<&mut [f64]>,
 ) {
+    let RayTile { origin, directions, width } = *tile;
     debug_assert!(width > 0 && directions.len().is_multiple_of(width) && hits.len() == directions.len());
     let height = directions.len() / width;
     if let Some(c) = costs.as_deref_mut() {

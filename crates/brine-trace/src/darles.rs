@@ -1,7 +1,8 @@
 //! Darles et al. (2007) Algorithm 1, corrected, with spatial coherence for the sort.
 
 use crate::options::log_step;
-use crate::sphere::Along;
+use crate::sphere::{Along, Bracket};
+use crate::step::PrefixScan;
 use crate::{Hit, LipschitzSum, Ray, Step, StepKind, TraceOptions, TraceStats};
 
 /// Traces with the efficient bound of Darles et al. (docs/equations.md §2) on `[t0, t1]`.
@@ -53,11 +54,9 @@ pub(crate) fn darles_trace<S: LipschitzSum + ?Sized>(
     let mut fresh = true; // estimates at p are exact values (first point, or after a full evaluation)
     let mut steps = 0u32;
     loop {
-        if steps >= options.max_steps {
-            stats.exhausted += 1;
+        if !options.take_step(&mut steps, stats) {
             return None;
         }
-        steps += 1;
         for (i, m) in minima.iter_mut().enumerate() {
             *m = minimum(i, p);
         }
@@ -67,13 +66,11 @@ pub(crate) fn darles_trace<S: LipschitzSum + ?Sized>(
         };
         order.sort_by(|&a, &b| key(b).total_cmp(&key(a)));
         visited.iter_mut().for_each(|v| *v = false);
-        let mut num: f64 = minima.iter().sum();
-        let mut den = 0.0;
-        let mut best = if num > 0.0 { f64::INFINITY } else { f64::NEG_INFINITY };
+        let mut scan = PrefixScan::new(minima.iter().sum());
         if !fresh {
             stats.evaluations += 1;
         }
-        if best < f64::INFINITY {
+        if !scan.unreachable() {
             for &i in &order {
                 let v = if fresh {
                     estimate[i]
@@ -84,22 +81,12 @@ pub(crate) fn darles_trace<S: LipschitzSum + ?Sized>(
                 value[i] = v;
                 estimate[i] = v;
                 visited[i] = true;
-                num += sign * v - minima[i];
-                den += lipschitz[i];
-                let c = if den > 0.0 {
-                    num / den
-                } else if num > 0.0 {
-                    f64::INFINITY
-                } else {
-                    f64::NEG_INFINITY
-                };
-                if c <= best && best > 0.0 {
+                if !scan.add(sign * v - minima[i], lipschitz[i]) {
                     break;
                 }
-                best = best.max(c);
             }
         }
-        let step = best.max(0.0);
+        let step = scan.step();
         let h = options.min_step_at(t);
         if t + step >= t1 {
             log_step(&mut log, t, t1, StepKind::Certified);
@@ -143,7 +130,12 @@ pub(crate) fn darles_trace<S: LipschitzSum + ?Sized>(
         let f_next: f64 = estimate.iter().sum();
         if f_next == 0.0 || (f_next > 0.0) != (sign > 0.0) {
             log_step(&mut log, t, t_next, StepKind::Bracket);
-            return Some(along.finish(stats, options, (t, f), (t_next, f_next), sign > 0.0, steps, false));
+            return Some(along.finish(
+                stats,
+                options,
+                Bracket { a: (t, f), b: (t_next, f_next), entering: sign > 0.0, steps },
+                false,
+            ));
         }
         log_step(&mut log, t, t_next, StepKind::Probe);
         if t_next >= t1 {

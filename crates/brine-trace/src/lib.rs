@@ -119,7 +119,7 @@ mod tiers;
 mod trace;
 
 pub use bounds::Aabb;
-pub use coherence::{MIN_CONE_RAYS, trace_temporal, trace_tile};
+pub use coherence::{MIN_CONE_RAYS, RayTile, trace_temporal, trace_tile};
 pub use footprint::{
     FADE_CURVATURE, FADE_SLOPE, FadedComponents, component_weights, faded_components, footprint_weight,
     footprint_weight_slope,

@@ -128,6 +128,34 @@ impl Default for TraceOptions {
 }
 
 impl TraceOptions {
+    /// The settings the benchmarks and plots compare the methods at: `method`, rays to 3 km, at
+    /// most 2×10⁵ steps, minimum steps of 1 mm + 10⁻⁴ t, crossings to 0.1 mm + 10⁻⁶ t, and the
+    /// footprint fading of `footprint_angle` (rad, `≥ 0`; 0: none).
+    pub fn comparison(method: Method, footprint_angle: f64) -> Self {
+        Self {
+            method,
+            t_max: 3000.0,
+            max_steps: 200_000,
+            min_step: 1e-3,
+            min_step_relative: 1e-4,
+            tolerance: 1e-4,
+            tolerance_relative: 1e-6,
+            footprint_angle,
+            ..Self::default()
+        }
+    }
+
+    /// Counts one more step of a walk that has taken `steps`: `false`, with the walk counted as
+    /// exhausted in `stats`, once [`Self::max_steps`] are spent.
+    pub(crate) fn take_step(&self, steps: &mut u32, stats: &mut crate::TraceStats) -> bool {
+        if *steps >= self.max_steps {
+            stats.exhausted += 1;
+            return false;
+        }
+        *steps += 1;
+        true
+    }
+
     /// Checks every field against its range.
     ///
     /// # Errors

@@ -134,11 +134,9 @@ pub fn trace_segments<R: RayTiers + ?Sized>(
     let mut segment = f64::INFINITY;
     let mut steps = 0u32;
     loop {
-        if steps >= options.max_steps {
-            stats.exhausted += 1;
+        if !options.take_step(&mut steps, stats) {
             return None;
         }
-        steps += 1;
         let lambda = eta + bounds.iter().zip(slopes.iter()).map(|(b, &d)| local_lipschitz(b, d, segment)).sum::<f64>();
         let c = g.abs() - eps;
         let free = if !(c > 0.0) {

@@ -19,18 +19,26 @@ impl<S: LipschitzSum + ?Sized> Along<'_, S> {
         self.surface.value(self.ray.at(t))
     }
 
-    /// Refines a bracketed crossing with the Illinois method and returns the hit.
-    #[allow(clippy::too_many_arguments)]
+    /// `F(t)` at the start of a walk, or the hit when the ray starts on the surface.
+    pub(crate) fn start(&self, t: f64, stats: &mut TraceStats) -> Result<f64, Hit> {
+        let f = self.eval(t, stats);
+        if f == 0.0 {
+            stats.hits += 1;
+            return Err(Hit { t, point: self.ray.at(t), entering: true, steps: 0 });
+        }
+        Ok(f)
+    }
+
+    /// Refines a bracketed crossing with the Illinois method (bisection when `bisection`) and
+    /// returns the hit.
     pub(crate) fn finish(
         &self,
         stats: &mut TraceStats,
         options: &TraceOptions,
-        (a, fa): (f64, f64),
-        (b, fb): (f64, f64),
-        entering: bool,
-        steps: u32,
+        bracket: Bracket,
         bisection: bool,
     ) -> Hit {
+        let Bracket { a: (a, fa), b: (b, fb), entering, steps } = bracket;
         let tolerance = options.tolerance_at(b);
         let mut refinement = 0u64;
         let f = |s: f64| {
@@ -50,17 +58,25 @@ impl<S: LipschitzSum + ?Sized> Along<'_, S> {
     }
 }
 
+/// A sign change of `F` between `a = (t, F(t))` and `b`, found after `steps` steps.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Bracket {
+    pub(crate) a: (f64, f64),
+    pub(crate) b: (f64, f64),
+    /// Whether the ray enters the water there.
+    pub(crate) entering: bool,
+    pub(crate) steps: u32,
+}
+
 /// Sphere tracing on `[t0, t1]` with the constant `lambda` along the ray, over-relaxed by `omega`
 /// (1: plain Hart).
 ///
 /// A step `ω|F|/Λ` is kept only if the unbounding intervals of its two ends overlap
 /// (`|F(t)|/Λ + |F(t + ω r)|/Λ ≥ ω r`, Keinert et al. 2014); otherwise the tracer falls back to
 /// the certified step `|F(t)|/Λ`. Steps shorter than `h(t)` are probes checked at their end.
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn sphere_trace<S: LipschitzSum + ?Sized>(
     along: &Along<'_, S>,
-    t0: f64,
-    t1: f64,
+    (t0, t1): (f64, f64),
     lambda: f64,
     omega: f64,
     options: &TraceOptions,
@@ -68,21 +84,18 @@ pub(crate) fn sphere_trace<S: LipschitzSum + ?Sized>(
     mut log: Option<&mut Vec<Step>>,
 ) -> Option<Hit> {
     let mut t = t0;
-    let mut f = along.eval(t, stats);
-    if f == 0.0 {
-        stats.hits += 1;
-        return Some(Hit { t, point: along.ray.at(t), entering: true, steps: 0 });
-    }
+    let mut f = match along.start(t, stats) {
+        Ok(f) => f,
+        Err(hit) => return Some(hit),
+    };
     let positive = f > 0.0;
     let radius = |f: f64| if lambda > 0.0 { f.abs() / lambda } else { f64::INFINITY };
     let mut steps = 0u32;
     let mut relax = omega;
     loop {
-        if steps >= options.max_steps {
-            stats.exhausted += 1;
+        if !options.take_step(&mut steps, stats) {
             return None;
         }
-        steps += 1;
         let r = radius(f);
         let h = options.min_step_at(t);
         let certified = r >= h;
@@ -98,7 +111,12 @@ pub(crate) fn sphere_trace<S: LipschitzSum + ?Sized>(
         }
         if crossed {
             log_step(&mut log, t, t_next, StepKind::Bracket);
-            return Some(along.finish(stats, options, (t, f), (t_next, f_next), positive, steps, false));
+            return Some(along.finish(
+                stats,
+                options,
+                Bracket { a: (t, f), b: (t_next, f_next), entering: positive, steps },
+                false,
+            ));
         }
         log_step(&mut log, t, t_next, if certified { StepKind::Certified } else { StepKind::Probe });
         if t_next >= t1 {
@@ -112,7 +130,6 @@ pub(crate) fn sphere_trace<S: LipschitzSum + ?Sized>(
 
 /// Brute-force marching with a fixed step `Δ`, each end checked for a sign change, the bracket
 /// refined by bisection (Darles et al. 2007 §3.1, the baseline).
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn march<S: LipschitzSum + ?Sized>(
     along: &Along<'_, S>,
     t0: f64,
@@ -123,24 +140,26 @@ pub(crate) fn march<S: LipschitzSum + ?Sized>(
     mut log: Option<&mut Vec<Step>>,
 ) -> Option<Hit> {
     let mut t = t0;
-    let mut f = along.eval(t, stats);
-    if f == 0.0 {
-        stats.hits += 1;
-        return Some(Hit { t, point: along.ray.at(t), entering: true, steps: 0 });
-    }
+    let mut f = match along.start(t, stats) {
+        Ok(f) => f,
+        Err(hit) => return Some(hit),
+    };
     let positive = f > 0.0;
     let mut steps = 0u32;
     while t < t1 {
-        if steps >= options.max_steps {
-            stats.exhausted += 1;
+        if !options.take_step(&mut steps, stats) {
             return None;
         }
-        steps += 1;
         let t_next = (t + delta).min(t1);
         let f_next = along.eval(t_next, stats);
         if f_next == 0.0 || (f_next > 0.0) != positive {
             log_step(&mut log, t, t_next, StepKind::Bracket);
-            return Some(along.finish(stats, options, (t, f), (t_next, f_next), positive, steps, true));
+            return Some(along.finish(
+                stats,
+                options,
+                Bracket { a: (t, f), b: (t_next, f_next), entering: positive, steps },
+                true,
+            ));
         }
         log_step(&mut log, t, t_next, StepKind::Probe);
         t = t_next;

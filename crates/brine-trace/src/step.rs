@@ -32,28 +32,63 @@ pub fn efficient_lipschitz_step(values: &[f64], minima: &[f64], lipschitz: &[f64
     };
     let mut order: Vec<usize> = (0..values.len()).collect();
     order.sort_by(|&a, &b| key(b).total_cmp(&key(a)));
-    let mut num: f64 = minima.iter().sum();
-    if num > 0.0 {
+    let mut scan = PrefixScan::new(minima.iter().sum());
+    if scan.unreachable() {
         return f64::INFINITY;
     }
-    let mut den = 0.0;
-    let mut best = f64::NEG_INFINITY;
     for &i in &order {
-        num += values[i] - minima[i];
-        den += lipschitz[i];
-        let c = if den > 0.0 {
-            num / den
-        } else if num > 0.0 {
+        if !scan.add(values[i] - minima[i], lipschitz[i]) {
+            break;
+        }
+    }
+    scan.step()
+}
+
+/// The scan of Darles' efficient step over growing prefixes `S` of the sorted components:
+/// `c_S = (M + Σ_{i∈S}(vᵢ − mᵢ)) / Σ_{i∈S} Lᵢ`, keeping the best, stopping at its first decrease
+/// once positive ([`efficient_lipschitz_step`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PrefixScan {
+    num: f64,
+    den: f64,
+    best: f64,
+}
+
+impl PrefixScan {
+    /// The empty prefix, from the sum of the minima `M`: unreachable when `M > 0`.
+    pub(crate) fn new(minima_sum: f64) -> Self {
+        let best = if minima_sum > 0.0 { f64::INFINITY } else { f64::NEG_INFINITY };
+        Self { num: minima_sum, den: 0.0, best }
+    }
+
+    /// Whether the surface is out of reach whatever the prefix (`M > 0`).
+    pub(crate) fn unreachable(&self) -> bool {
+        self.best == f64::INFINITY
+    }
+
+    /// Adds the next component, of excess `vᵢ − mᵢ` and constant `Lᵢ`; `false` when the scan
+    /// stops there (`c_S` decreased after a positive best).
+    pub(crate) fn add(&mut self, excess: f64, lipschitz: f64) -> bool {
+        self.num += excess;
+        self.den += lipschitz;
+        let c = if self.den > 0.0 {
+            self.num / self.den
+        } else if self.num > 0.0 {
             f64::INFINITY
         } else {
             f64::NEG_INFINITY
         };
-        if c <= best && best > 0.0 {
-            break;
+        if c <= self.best && self.best > 0.0 {
+            return false;
         }
-        best = best.max(c);
+        self.best = self.best.max(c);
+        true
     }
-    best.max(0.0)
+
+    /// The step: the best `c_S`, at least 0.
+    pub(crate) fn step(&self) -> f64 {
+        self.best.max(0.0)
+    }
 }
 
 /// Algorithm 1 exactly as printed by Darles et al. (2007): sorted by `nᵢ/Lᵢ`, `L_e` starts at 0

@@ -78,10 +78,12 @@ fn trace_impl<S: LipschitzSum + ?Sized>(
             };
             march(&along, t0, t1, delta, options, stats, log)
         }
-        Method::GlobalLipschitz => sphere_trace(&along, t0, t1, surface.lipschitz(), 1.0, options, stats, log),
-        Method::Directional => sphere_trace(&along, t0, t1, surface.directional_lipschitz(d), 1.0, options, stats, log),
+        Method::GlobalLipschitz => sphere_trace(&along, (t0, t1), surface.lipschitz(), 1.0, options, stats, log),
+        Method::Directional => {
+            sphere_trace(&along, (t0, t1), surface.directional_lipschitz(d), 1.0, options, stats, log)
+        }
         Method::Relaxed => {
-            sphere_trace(&along, t0, t1, surface.directional_lipschitz(d), options.relaxation, options, stats, log)
+            sphere_trace(&along, (t0, t1), surface.directional_lipschitz(d), options.relaxation, options, stats, log)
         }
         Method::Darles => darles_trace(surface, ray, t0, t1, options, stats, log),
         // Both trace the surface's tiers; `trace_tiers_with` dispatches on the method.

@@ -3,7 +3,9 @@
 
 mod common;
 
-use brine_trace::{LipschitzSum, Method, Ray, RaySpan, TraceOptions, TraceStats, trace, trace_temporal, trace_tile};
+use brine_trace::{
+    LipschitzSum, Method, Ray, RaySpan, RayTile, TraceOptions, TraceStats, trace, trace_temporal, trace_tile,
+};
 use brine_waves::{TracedTrochoids, TrochoidSum};
 use common::{check_first_crossing, dense_crossings, random_set};
 use glam::DVec3;
@@ -100,7 +102,7 @@ fn a_tile_of_coherent_rays_finds_each_first_crossing() {
     let o = options(0.0);
     let mut hits = vec![None; directions.len()];
     let mut stats = TraceStats::default();
-    trace_tile(&sea, origin, &directions, w, &o, &mut stats, &mut hits, None);
+    trace_tile(&sea, &RayTile { origin, directions: &directions, width: w }, &o, &mut stats, &mut hits, None);
     let mut hit_count = 0;
     for (d, hit) in directions.iter().zip(&hits) {
         let ray = Ray::new(origin, *d).unwrap();

@@ -36,10 +36,7 @@ const FOV_DEG: f64 = 50.0;
 const FRAMES: usize = 9;
 const WIND_DEG: f64 = 20.0;
 
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
+use brine_testkit::timing::median;
 
 fn ms(s: f64) -> String {
     format!("{:.1} ms", 1e3 * s)
@@ -74,20 +71,6 @@ impl Camera {
 
     fn pixel_angle(&self) -> f64 {
         self.pinhole.pixel_angle()
-    }
-}
-
-fn trace_options(method: Method, footprint: f64) -> TraceOptions {
-    TraceOptions {
-        method,
-        t_max: 3000.0,
-        max_steps: 200_000,
-        min_step: 1e-3,
-        min_step_relative: 1e-4,
-        tolerance: 1e-4,
-        tolerance_relative: 1e-6,
-        footprint_angle: footprint,
-        ..TraceOptions::default()
     }
 }
 
@@ -267,7 +250,7 @@ fn main() {
             (Method::Tiered, 0.0, "tiered"),
             (Method::Directional, 0.0, "directional L"),
         ] {
-            let o = trace_options(method, footprint);
+            let o = TraceOptions::comparison(method, footprint);
             let reference = run(&trochoids[0].1, &rays, &o);
             let mut rows: Vec<(String, (u64, f64, f64))> = Vec::new();
             for (n, t) in &trochoids {

@@ -19,14 +19,15 @@
 //!   batch heights): [`TrochoidSum`] (the sum of exact trochoid height fields that Darles et al.
 //!   trace; the default for rendering), [`GerstnerSurface`] (the true Gerstner sum, by a Newton
 //!   inversion of the horizontal displacement), [`SineSet`] (Chen et al.'s sinusoids with
-//!   perturbed normals). Their time-frozen fields [`TrochoidField`], [`GerstnerField`] and
-//!   [`SineField`] implement [`brine_trace::LipschitzSum`] for the sphere tracer.
+//!   perturbed normals). With the feature `tracing` (on by default), their time-frozen fields
+//!   [`TrochoidField`], [`GerstnerField`] and [`SineField`] implement `brine_trace::LipschitzSum`
+//!   for the sphere tracer, and a [`SeaFrame`] is traced through `TracedSea`.
 //! - **FFT ocean** ([`FftOcean`]; Tessendorf 2001, as Li Ying et al. 2018 §2.2 synthesise it): random
 //!   amplitudes of any spectrum and spreading on periodic cascades of tiles (seeded by wave vector,
 //!   so a finer grid keeps the large waves; exact looping), inverse FFTs of heights, slopes, choppy
 //!   displacement and its Jacobian; its frames [`FftFrame`] (each cascade's displaced surface
 //!   resampled on its grid and traced as a cubic B-spline with certified bounds) implement
-//!   [`brine_trace::LipschitzSum`].
+//!   `brine_trace::LipschitzSum` (feature `tracing`).
 //!
 //! ## Notation
 //!
@@ -108,6 +109,8 @@ mod spectra;
 mod surfaces;
 mod tracing;
 
+#[cfg(feature = "tracing")]
+pub use brine_trace::RayTile;
 pub use error::WaveError;
 pub use fft::frame::{FftCascade, FftFrame};
 pub use fft::ocean::{FftKinematics, FftOcean, FftRestFields, FftRestJacobian, ParticleState};
@@ -124,7 +127,7 @@ pub use fit::extraction::{FitOptions, FrequencyPartition, fit_trochoids};
 pub use fit::lattice::TileLattice;
 pub use fit::set::TrochoidSet;
 pub use fit::trochoid::{MAX_STEEPNESS, Trochoid, solve_trochoid_phase};
-pub use sea::{FrameSurface, Ocean, RayTile, SINE_DETAIL_WAVELENGTH_M, SeaFrame, SurfaceSample, TracedSea};
+pub use sea::{FrameSurface, Ocean, SINE_DETAIL_WAVELENGTH_M, SeaFrame, SurfaceSample};
 pub use spectra::dispersion::{Dispersion, ELFOUHAILY_K_M, SEA_WATER_DENSITY, SEA_WATER_SURFACE_TENSION};
 pub use spectra::dispersion::{G, omega_deep_water, wavenumber_deep_water};
 pub use spectra::elfouhaily::{Elfouhaily, ElfouhailySpreading};
@@ -145,4 +148,6 @@ pub use surfaces::gerstner::{
 pub use surfaces::seabed::{SeabedRelief, seabed_relief};
 pub use surfaces::sine::{SineField, SineSet};
 pub use surfaces::surface::{TrochoidField, TrochoidSum, WaveSurface};
+#[cfg(feature = "tracing")]
+pub use tracing::sea::TracedSea;
 pub use tracing::traced::{LANES, TracedTrochoids};

@@ -25,38 +25,9 @@ const BIN_VARIANCE_REL: f64 = 1e-7;
 /// factor, `ω⁻⁵` and `exp` of arguments up to ~10).
 const CLOSED_FORM_REL: f64 = 1e-12;
 
-/// Adaptive Simpson on `[a, b]` (Lyness' criterion `|S₂ − S₁| ≤ 15 ε`, Richardson-corrected),
-/// written here independently of the crate's fixed-step `simpson_log`.
-fn adaptive_simpson(f: &dyn Fn(f64) -> f64, a: f64, b: f64, eps: f64) -> f64 {
-    fn simpson(fa: f64, fm: f64, fb: f64, a: f64, b: f64) -> f64 {
-        (b - a) / 6.0 * (fa + 4.0 * fm + fb)
-    }
-    #[allow(clippy::too_many_arguments)]
-    fn step(
-        f: &dyn Fn(f64) -> f64,
-        a: f64,
-        b: f64,
-        fa: f64,
-        fm: f64,
-        fb: f64,
-        whole: f64,
-        eps: f64,
-        depth: u32,
-    ) -> f64 {
-        let m = 0.5 * (a + b);
-        let (lm, rm) = (0.5 * (a + m), 0.5 * (m + b));
-        let (flm, frm) = (f(lm), f(rm));
-        let left = simpson(fa, flm, fm, a, m);
-        let right = simpson(fm, frm, fb, m, b);
-        let diff = left + right - whole;
-        if depth == 0 || diff.abs() <= 15.0 * eps {
-            return left + right + diff / 15.0;
-        }
-        step(f, a, m, fa, flm, fm, left, 0.5 * eps, depth - 1) + step(f, m, b, fm, frm, fb, right, 0.5 * eps, depth - 1)
-    }
-    let (fa, fm, fb) = (f(a), f(0.5 * (a + b)), f(b));
-    step(f, a, b, fa, fm, fb, simpson(fa, fm, fb, a, b), eps, 48)
-}
+// Adaptive Simpson (Lyness' criterion, Richardson-corrected), independent of the crate's
+// fixed-step `simpson_log`.
+use brine_testkit::quadrature::adaptive_simpson;
 
 /// `∫_a^b S dω` by [`adaptive_simpson`] on 64 log-spaced pieces (so that the peak and the tail
 /// each get their own refinement), to a relative error of about [`QUADRATURE_REL`].
@@ -65,9 +36,9 @@ fn band_integral(s: &dyn Spectrum, a: f64, b: f64) -> f64 {
     let edge = |j: usize| a * (b / a).powf(j as f64 / pieces as f64);
     let f = |w: f64| s.s_omega(w);
     // A first coarse pass sets the absolute tolerance of each piece.
-    let rough: f64 = (0..pieces).map(|j| adaptive_simpson(&f, edge(j), edge(j + 1), f64::INFINITY)).sum();
+    let rough: f64 = (0..pieces).map(|j| adaptive_simpson(f, edge(j), edge(j + 1), f64::INFINITY)).sum();
     let eps = QUADRATURE_REL * rough / pieces as f64;
-    (0..pieces).map(|j| adaptive_simpson(&f, edge(j), edge(j + 1), eps)).sum()
+    (0..pieces).map(|j| adaptive_simpson(f, edge(j), edge(j + 1), eps)).sum()
 }
 
 /// `∫_a^b S_PM dω = (αg²/(4βω₀⁴)) [exp(−β(ω₀/b)⁴) − exp(−β(ω₀/a)⁴)]` (substitute `x = β(ω₀/ω)⁴`).

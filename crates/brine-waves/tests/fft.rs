@@ -85,16 +85,7 @@ const ZERO_MEAN_SLOPE: f64 = 1e-6;
 /// A covariance is positive semi-definite up to the rounding of `c_x c_z − c_y²` (terms ~10⁻³).
 const PSD_ABS: f64 = 1e-15;
 
-/// Composite Simpson rule on `[a, b]` with `pairs` pairs.
-fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, pairs: usize) -> f64 {
-    let n = 2 * pairs;
-    let h = (b - a) / n as f64;
-    let mut s = f(a) + f(b);
-    for j in 1..n {
-        s += if j % 2 == 1 { 4.0 } else { 2.0 } * f(a + j as f64 * h);
-    }
-    s * h / 3.0
-}
+use brine_testkit::quadrature::simpson;
 
 /// `∫∫ Ψ d²k` over the square ring `lo ≤ |k|_∞ < hi` in polar coordinates: angle by Simpson
 /// between the breakpoints (the ring's corners, where its radius has a kink, and the down-wind

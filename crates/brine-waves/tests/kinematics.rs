@@ -18,6 +18,7 @@
 
 use std::f64::consts::{PI, TAU};
 
+use brine_testkit::strategies::{point_and_time, trochoid_set};
 use brine_waves::{G, Trochoid, TrochoidSet, TrochoidSum, WaveSurface};
 use glam::{DVec2, DVec3};
 use proptest::prelude::*;
@@ -48,24 +49,6 @@ const BRACKET_MARGIN_M: f64 = 1e-9;
 
 /// The per-wave displacements add up to the sum's: rounding of at most 12 terms below 20 m.
 const ADDITIVE_ABS: f64 = 1e-12;
-
-/// A random wave set: 1–12 waves, amplitudes 0.01–1.5 m, wavelengths 2–125 m, any direction and
-/// phase, deep-water frequencies, steepnesses sharing a random total `Σ Q ∈ [0, 0.95]`.
-fn wave_set(max_waves: usize) -> impl Strategy<Value = TrochoidSet> {
-    (prop::collection::vec((0.01f64..1.5, 0.05f64..3.0, -PI..PI, 0.0..TAU, 0.01f64..1.0), 1..max_waves), 0.0f64..0.95)
-        .prop_map(|(raw, total)| {
-            let q_sum: f64 = raw.iter().map(|w| w.4).sum();
-            TrochoidSet::new(
-                raw.iter()
-                    .map(|&(a, k, dir, ph, q)| Trochoid::new(a, k, dir, (G * k).sqrt(), ph, total * q / q_sum).unwrap())
-                    .collect(),
-            )
-        })
-}
-
-fn point() -> impl Strategy<Value = (f64, f64, f64)> {
-    (-300.0f64..300.0, -300.0f64..300.0, 0.0f64..100.0)
-}
 
 /// `Σ (Aᵢ + Qᵢ/kᵢ) ωᵢ (1 + L)`: the scale of every velocity term (m/s).
 fn velocity_scale(set: &TrochoidSet) -> f64 {
@@ -121,7 +104,7 @@ proptest! {
     #[test]
     fn one_wave_velocity_is_its_particle_velocity(
         (a, k, dir, ph, q) in (0.01f64..1.5, 0.05f64..3.0, -PI..PI, 0.0..TAU, 0.0f64..0.95),
-        (x, z, t) in point(),
+        (x, z, t) in point_and_time(),
     ) {
         let w = Trochoid::new(a, k, dir, (G * k).sqrt(), ph, q).unwrap();
         let set = TrochoidSet::new(vec![w]);
@@ -138,7 +121,7 @@ proptest! {
     }
 
     #[test]
-    fn many_wave_velocity_keeps_the_point_on_the_surface(set in wave_set(12), (x, z, t) in point()) {
+    fn many_wave_velocity_keeps_the_point_on_the_surface(set in trochoid_set(12), (x, z, t) in point_and_time()) {
         let s = TrochoidSum::new(&set);
         let v = s.velocity(x, z, t);
         let (dh_dt, grad) = eulerian_derivatives(&s, x, z, t);
@@ -148,8 +131,8 @@ proptest! {
 
     #[test]
     fn many_wave_velocity_is_the_sum_of_the_waves_particles_plus_cross_terms(
-        set in wave_set(8),
-        (x, z, t) in point(),
+        set in trochoid_set(8),
+        (x, z, t) in point_and_time(),
     ) {
         let s = TrochoidSum::new(&set);
         let scale = velocity_scale(&set);

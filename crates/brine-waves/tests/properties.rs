@@ -4,6 +4,7 @@
 
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
+use brine_testkit::strategies::{point_and_time, trochoid_set};
 use brine_trace::LipschitzSum;
 use brine_waves::{
     CosineSquared, CosineTwoS, Dispersion, DonelanBanner, Elfouhaily, FitOptions, G, GerstnerSurface, Jonswap,
@@ -65,31 +66,12 @@ const DISPERSION_REL: f64 = 1e-11;
 /// The acceptance bound on a fitted set's variance against `∫ S dω` over the band.
 const VARIANCE_REL: f64 = 0.01;
 
-/// A random wave set: 1–12 waves, amplitudes 0.01–1.5 m, wavelengths 2–125 m, any direction and
-/// phase, deep-water frequencies, steepnesses sharing a random total `Σ Q ∈ [0, 0.95]` (so `Qᵢ`
-/// and `kᵢAᵢ` are unrelated, as with choppiness ≠ 1).
-fn wave_set() -> impl Strategy<Value = TrochoidSet> {
-    (prop::collection::vec((0.01f64..1.5, 0.05f64..3.0, -PI..PI, 0.0..TAU, 0.01f64..1.0), 1..12), 0.0f64..0.95)
-        .prop_map(|(raw, total)| {
-            let q_sum: f64 = raw.iter().map(|w| w.4).sum();
-            TrochoidSet::new(
-                raw.iter()
-                    .map(|&(a, k, dir, ph, q)| Trochoid::new(a, k, dir, (G * k).sqrt(), ph, total * q / q_sum).unwrap())
-                    .collect(),
-            )
-        })
-}
-
 fn surfaces(set: &TrochoidSet) -> Vec<(&'static str, Box<dyn WaveSurface>)> {
     vec![
         ("trochoid sum", Box::new(TrochoidSum::new(set))),
         ("Gerstner", Box::new(GerstnerSurface::new(set).unwrap())),
         ("sine set", Box::new(SineSet::new(set))),
     ]
-}
-
-fn point() -> impl Strategy<Value = (f64, f64, f64)> {
-    (-300.0f64..300.0, -300.0f64..300.0, 0.0f64..100.0)
 }
 
 /// A displacement of random direction and a length spread over five decades (1 mm – 100 m).
@@ -137,7 +119,7 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(CASES))]
 
     #[test]
-    fn heights_stay_within_bounds_and_are_finite(set in wave_set(), (x, z, t) in point()) {
+    fn heights_stay_within_bounds_and_are_finite(set in trochoid_set(12), (x, z, t) in point_and_time()) {
         for (name, s) in surfaces(&set) {
             let (lo, hi) = s.height_bounds();
             let h = s.height(x, z, t);
@@ -150,7 +132,7 @@ proptest! {
     }
 
     #[test]
-    fn heights_are_lipschitz_with_the_stated_constant(set in wave_set(), (x, z, t) in point(), d in offset()) {
+    fn heights_are_lipschitz_with_the_stated_constant(set in trochoid_set(12), (x, z, t) in point_and_time(), d in offset()) {
         for (name, s) in surfaces(&set) {
             let l = s.max_slope();
             let (hp, hq) = (s.height(x, z, t), s.height(x + d.x, z + d.y, t));
@@ -161,7 +143,7 @@ proptest! {
     }
 
     #[test]
-    fn gradients_match_central_differences(set in wave_set(), (x, z, t) in point()) {
+    fn gradients_match_central_differences(set in trochoid_set(12), (x, z, t) in point_and_time()) {
         let h = FD_STEP;
         for (name, s) in surfaces(&set) {
             let g = s.gradient(x, z, t);
@@ -175,7 +157,7 @@ proptest! {
     }
 
     #[test]
-    fn gerstner_jacobian_and_inversion_match_the_forward_map(set in wave_set(), (x, z, t) in point()) {
+    fn gerstner_jacobian_and_inversion_match_the_forward_map(set in trochoid_set(12), (x, z, t) in point_and_time()) {
         let g = GerstnerSurface::new(&set).unwrap();
         let f = g.at_time(t);
         // Inversion: the rest position maps forward onto the query point.
@@ -220,7 +202,7 @@ proptest! {
     }
 
     #[test]
-    fn particle_velocity_satisfies_the_kinematic_condition(set in wave_set(), (x, z, t) in point()) {
+    fn particle_velocity_satisfies_the_kinematic_condition(set in trochoid_set(12), (x, z, t) in point_and_time()) {
         // A surface particle stays on the surface: v_y = ∂h/∂t + ∇h·v_xz (exact for the Gerstner
         // sum; for a sine set v_y = ∂h/∂t, its points moving only vertically). The trochoid sum
         // has its own tests (tests/kinematics.rs).
@@ -238,8 +220,8 @@ proptest! {
 
     #[test]
     fn lipschitz_sums_keep_their_bounds(
-        set in wave_set(),
-        (x, z, t) in point(),
+        set in trochoid_set(12),
+        (x, z, t) in point_and_time(),
         y in -4.0f64..4.0,
         d in unit3(),
         (e, q_dir) in (-3.0f64..1.5, unit3()),
@@ -259,7 +241,7 @@ proptest! {
     }
 
     #[test]
-    fn simd_lanes_match_the_scalar_sums(set in wave_set(), (x, z, t) in point()) {
+    fn simd_lanes_match_the_scalar_sums(set in trochoid_set(12), (x, z, t) in point_and_time()) {
         let scale = set.total_amplitude();
         let sum = TrochoidSum::new(&set);
         let f = sum.at_time(t);

@@ -1,6 +1,7 @@
 //! Reference values: the reference's (docs/equations.md) oracles (`tests/data/equation_sheet_oracles.csv`) and
 //! the published rules of Pierson & Moskowitz (1964) and Cox & Munk (1954).
 
+use brine_testkit::check::{Tolerance, close};
 use std::collections::HashMap;
 
 use brine_waves::{
@@ -85,11 +86,10 @@ fn equation_sheet_oracles() {
         let f: Vec<&str> = line.splitn(7, ',').collect();
         let (model, p, quantity) = (f[0], params(f[1]), f[2]);
         let expected: f64 = f[3].parse().unwrap();
-        let tol: f64 = f[4].parse().unwrap();
+        let tol = Tolerance::parse(f[5], f[4].parse().unwrap());
         let got = compute(model, &p, quantity);
-        let err = if f[5] == "rel" { (got / expected - 1.0).abs() } else { (got - expected).abs() };
-        if !(err <= tol) {
-            failures.push(format!("{model} {} {quantity}: got {got}, expected {expected} ± {tol} {}", f[1], f[5]));
+        if let Err(e) = close(&format!("{model} {} {quantity}", f[1]), got, expected, tol) {
+            failures.push(e);
         }
         checked += 1;
     }

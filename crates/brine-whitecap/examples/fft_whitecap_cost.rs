@@ -5,27 +5,10 @@
 //! Sea: Elfouhaily at U10 = 10 m/s, fetch 100 km, 4 cascades (default tiles), choppiness 1.
 
 use std::hint::black_box;
-use std::time::Instant;
 
+use brine_testkit::timing::median_seconds;
 use brine_waves::{Directions, Elfouhaily, FftOcean, FftOptions};
 use brine_whitecap::{CalibrationOptions, FftCalibration, FftJacobianStatistics};
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
-
-fn time(runs: usize, mut f: impl FnMut()) -> f64 {
-    median(
-        (0..runs)
-            .map(|_| {
-                let s = Instant::now();
-                f();
-                s.elapsed().as_secs_f64()
-            })
-            .collect(),
-    )
-}
 
 fn main() {
     let elf = Elfouhaily::from_fetch(10.0, 1e5).expect("valid sea");
@@ -37,20 +20,20 @@ fn main() {
     for n in [256usize, 512] {
         let o = FftOptions { resolution: n, ..FftOptions::for_spectrum(&elf, 4) };
         let frame = FftOcean::new(&elf, &spreading, &o).expect("ocean").at_time(3.0);
-        let build = time(7, || {
+        let build = median_seconds(7, || {
             black_box(FftJacobianStatistics::new(&frame));
         });
         let stats = FftJacobianStatistics::new(&frame);
         let points: Vec<(f64, f64)> = (0..4096).map(|i| (i as f64 * 0.731 - 500.0, i as f64 * -0.377 + 80.0)).collect();
         let per_call = |s: f64| {
-            1e9 * time(9, || {
+            1e9 * median_seconds(9, || {
                 for &(x, z) in &points {
                     black_box(stats.moments_at(x, z, s));
                 }
             }) / points.len() as f64
         };
         let (m0, m1, m2, m3) = (per_call(0.0), per_call(0.1), per_call(1.0), per_call(10.0));
-        let calibration = time(3, || {
+        let calibration = median_seconds(3, || {
             black_box(FftCalibration::new(&stats, 0.01, &CalibrationOptions::default()).expect("calibration"));
         });
         println!(

@@ -29,13 +29,9 @@ fn scan(f: impl Fn(f64) -> f64) -> (f64, f64) {
 }
 
 fn rows() -> Vec<(String, f64, Option<f64>)> {
-    include_str!("data/erf_max_errors.csv")
-        .lines()
-        .filter(|l| !l.starts_with('#') && !l.starts_with("method"))
-        .map(|l| {
-            let c: Vec<&str> = l.split(',').collect();
-            (c[0].to_owned(), c[1].parse().unwrap(), c.get(2).and_then(|s| s.trim().parse().ok()))
-        })
+    brine_testkit::csv::records(include_str!("data/erf_max_errors.csv"))
+        .into_iter()
+        .map(|c| (c[0].to_owned(), c[1].parse().unwrap(), c.get(2).and_then(|s| s.parse().ok())))
         .collect()
 }
 

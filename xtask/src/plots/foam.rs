@@ -5,7 +5,7 @@ use std::path::Path;
 
 use brine_foam::{
     CoverageParams, DARLES_ONSET_WIND_M_S, ExtinctionEfficiency, FoamExtension, FoamExtensionParams, FoamHistory,
-    FoamHistoryParams, KoepkeFoam, SprayMedium, SprayParams, SurfaceStatistics, WhitecapLaw, msd86_flux,
+    FoamHistoryParams, FoamPoint, KoepkeFoam, SprayMedium, SprayParams, SurfaceStatistics, WhitecapLaw, msd86_flux,
     whitecap_coverage,
 };
 use brine_waves::{TrochoidSum, WaveSurface};
@@ -139,7 +139,15 @@ fn foam_map(dir: &Path) -> Result<(), String> {
                 .map(|c| {
                     let p = DVec2::new((c as f64 + 0.5) * side / n as f64, (r as f64 + 0.5) * side / n as f64);
                     let g = sum.gradient(p.x, p.y, 0.0);
-                    ext.foam_amount(w, sum.height(p.x, p.y, 0.0), g.x, g.y, p.x, p.y, side / n as f64)
+                    ext.foam_amount(
+                        w,
+                        &FoamPoint {
+                            height: sum.height(p.x, p.y, 0.0),
+                            slope: [g.x, g.y],
+                            rest: [p.x, p.y],
+                            footprint_m: side / n as f64,
+                        },
+                    )
                 })
                 .collect()
         })

@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use brine_texture::Pinhole;
-use brine_trace::{LipschitzSum, Method, Ray, TraceOptions, TraceStats, trace, trace_logged, trace_tile};
+use brine_trace::{LipschitzSum, Method, Ray, RayTile, TraceOptions, TraceStats, trace, trace_logged, trace_tile};
 use brine_waves::{CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, TracedTrochoids, TrochoidSet, fit_trochoids};
 use glam::DVec3;
 use plotters::prelude::*;
@@ -43,20 +43,6 @@ fn sea(n: usize) -> Result<TrochoidSet, String> {
     fit_trochoids(&pm, &spreading, n, 1, &options).map_err(|e| e.to_string())
 }
 
-fn options(method: Method, footprint: f64) -> TraceOptions {
-    TraceOptions {
-        method,
-        t_max: 3000.0,
-        max_steps: 200_000,
-        min_step: 1e-3,
-        min_step_relative: 1e-4,
-        tolerance: 1e-4,
-        tolerance_relative: 1e-6,
-        footprint_angle: footprint,
-        ..TraceOptions::default()
-    }
-}
-
 /// A variant of the tracer: name, method, footprint fading, image coherence.
 type Variant = (&'static str, Method, bool, bool);
 
@@ -78,12 +64,13 @@ fn evaluations(sea: &TracedTrochoids, camera: &Camera, variant: &Variant) -> (Ve
         .flat_map(|y| (0..w).map(move |x| (x, y)))
         .map(|(x, y)| camera.direction(x * STRIDE + STRIDE / 2, y * STRIDE + STRIDE / 2))
         .collect();
-    let o = options(variant.1, if variant.2 { camera.pixel_angle() } else { 0.0 });
+    let o = TraceOptions::comparison(variant.1, if variant.2 { camera.pixel_angle() } else { 0.0 });
     let mut stats = TraceStats::default();
     if variant.3 {
         let mut hits = vec![None; dirs.len()];
         let mut costs = vec![0.0; dirs.len()];
-        trace_tile(sea, camera.0.position, &dirs, w, &o, &mut stats, &mut hits, Some(&mut costs));
+        let tile = RayTile { origin: camera.0.position, directions: &dirs, width: w };
+        trace_tile(sea, &tile, &o, &mut stats, &mut hits, Some(&mut costs));
         return (costs, hits.iter().map(Option::is_some).collect());
     }
     dirs.iter()
@@ -163,7 +150,7 @@ fn growth_with_n(dir: &Path, camera: &Camera) -> Result<(), String> {
     for n in sizes {
         let fast = TracedTrochoids::new(&sea(n)?, 0.0);
         for (k, v) in chosen.iter().enumerate() {
-            let o = options(v.1, if v.2 { camera.pixel_angle() } else { 0.0 });
+            let o = TraceOptions::comparison(v.1, if v.2 { camera.pixel_angle() } else { 0.0 });
             let mut stats = TraceStats::default();
             for d in &dirs {
                 if let Ok(r) = Ray::new(camera.0.position, *d) {
@@ -203,7 +190,7 @@ fn steps_along_a_ray(dir: &Path, sea: &TracedTrochoids, camera: &Camera) -> Resu
     let mut t_start = f64::INFINITY;
     for v in [VARIANTS[2], VARIANTS[4], VARIANTS[5]] {
         let mut log = Vec::new();
-        let hit = trace_logged(sea, &ray, &options(v.1, 0.0), &mut TraceStats::default(), &mut log);
+        let hit = trace_logged(sea, &ray, &TraceOptions::comparison(v.1, 0.0), &mut TraceStats::default(), &mut log);
         t_hit = hit.map_or(t_hit, |h| h.t);
         t_start = t_start.min(log.first().map_or(t_start, |s| s.t_from));
         let pts: Vec<(f64, f64)> = log.iter().map(|s| (s.t_from, sea.value(ray.at(s.t_from)))).collect();

@@ -37,7 +37,7 @@ pub(super) fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, hit: Optio
             return Sample { radiance: l, aov: Aov { depth: f32::INFINITY, ..Aov::default() }, weight: 1.0 };
         }
     };
-    let shade = shade_surface(world, field, p, d, t, n, variance, cx);
+    let shade = shade_surface(world, field, &SeenPoint { p, d, t, normal: n }, variance, cx);
     let aov = Aov {
         depth: t as f32,
         normal: n.as_vec3().to_array(),
@@ -168,20 +168,27 @@ pub(super) fn water_column_radiance(world: &World, p: DVec3, t: DVec3, light: Di
     }
 }
 
+/// A point of the sea seen by the camera: `p` (m), reached `t` metres along the unit view
+/// direction `d`, of upward unit normal `normal` (the drawn waves').
+#[derive(Debug, Clone, Copy)]
+pub(super) struct SeenPoint {
+    pub(super) p: DVec3,
+    pub(super) d: DVec3,
+    pub(super) t: f64,
+    pub(super) normal: DVec3,
+}
+
 /// Radiance leaving the sea surface toward the camera at `p`: Fresnel-weighted sky reflection, the
 /// sun through the ocean BRDF of the unresolved slopes, and the water column through `1 − F` and
 /// the `n²` radiance law (Chen et al. 2007 §3.4; Bruneton et al. 2010 §5; Darles et al. 2007 §4.3).
-#[allow(clippy::too_many_arguments)]
 pub(super) fn shade_surface(
     world: &World,
     field: &SeaField<'_>,
-    p: DVec3,
-    d: DVec3,
-    t: f64,
-    normal: DVec3,
+    seen: &SeenPoint,
     variance: &SlopeVariance,
     cx: &mut Counters,
 ) -> SurfaceShade {
+    let SeenPoint { p, d, t, normal } = *seen;
     let started = cx.clock();
     let v = -d;
     // Grazing views can see a facet from behind; tilt its normal toward the viewer just enough.

@@ -2,7 +2,7 @@
 
 use brine_ephem::{Atmosphere, Observer, Options as EphemOptions, SunModel, moon_position, parse_utc, sun_position};
 use brine_foam::{
-    CoverageParams, DARLES_ONSET_WIND_M_S, FoamExtension, FoamExtensionParams, FoamMemory, FoamMemoryParams,
+    CoverageParams, DARLES_ONSET_WIND_M_S, FoamExtension, FoamExtensionParams, FoamMemory, FoamMemoryParams, FoamPoint,
     KoepkeFoam, SprayMedium, SprayParams, SurfaceStatistics, WhiteWater, WhitecapLaw,
 };
 use brine_optics::{
@@ -243,7 +243,8 @@ impl World {
         }
         if let Some(foam) = &self.foam {
             let (gx, gz) = (-n.x / n.y.max(1e-3), -n.z / n.y.max(1e-3));
-            cover.foam = foam.extension.foam_amount(foam.coverage, p.y, gx, gz, p.x, p.z, footprint_m);
+            let point = FoamPoint { height: p.y, slope: [gx, gz], rest: [p.x, p.z], footprint_m };
+            cover.foam = foam.extension.foam_amount(foam.coverage, &point);
         }
         if let Some(wc) = &self.whitecaps {
             cover.whitecap = wc.coverage(DVec2::new(p.x, p.z), t, sigma);

@@ -151,6 +151,8 @@ enum Mode<'l> {
     Cone(f64),
 }
 
+/// Traces one ray or certifies one cone ([`Mode`]): [`Walk::start`] finds the side the ray
+/// starts on, then [`Walk::step`] runs until the walk ends.
 fn run<R: RayTiers + ?Sized>(
     scratch: &mut TierScratch,
     tiers: &mut R,
@@ -159,244 +161,370 @@ fn run<R: RayTiers + ?Sized>(
     stats: &mut TraceStats,
     mode: Mode<'_>,
 ) -> Outcome {
-    let RaySpan { ray, t_enter, t_exit } = span;
-    let (mut log, cone) = match mode {
+    let (log, cone) = match mode {
         Mode::Ray(log) => (log, 0.0),
         Mode::Cone(half_angle) => (None, half_angle),
     };
-    let n = tiers.tier_count();
-    if n == 0 || !(t_enter < t_exit) {
+    if tiers.tier_count() == 0 || !(span.t_enter < span.t_exit) {
         return Outcome::Miss;
     }
-    let eps = 2.0 * tiers.error_bound();
-    let eta = tiers.slope_error_bound();
-    scratch.reset(n);
-    let mut t = t_enter;
-    scratch.refresh(tiers, t, 1.0, cone > 0.0);
-    let mut t_refresh = t;
-
-    // Which side of the surface the ray starts on: add tiers until the bounds decide. The samples
-    // are stored as if the side were positive and flipped below if not.
-    let hi_total: f64 = scratch.bounds.iter().map(|b| b.max).sum();
-    let (mut sum, mut k, mut hi_rest) = (0.0, 0, hi_total);
-    stats.evaluations += 1;
-    let sign = loop {
-        let s = tiers.sample(k, t);
-        stats.component_evaluations += u64::from(s.terms);
-        scratch.store(k, s.value, s.slope, 1.0);
-        scratch.raw_slope[k] = s.slope;
-        sum += s.value;
-        hi_rest -= scratch.bounds[k].max;
-        k += 1;
-        if sum + scratch.lo_suffix[k] > eps {
-            break 1.0;
-        }
-        if sum + hi_rest < -eps {
-            break -1.0;
-        }
-        if k == n {
-            if cone > 0.0 {
-                return Outcome::Free(t);
-            }
-            if sum == 0.0 {
-                stats.hits += 1;
-                return Outcome::Hit(Hit { t, point: ray.at(t), entering: true, steps: 0 });
-            }
-            break sum.signum();
-        }
+    let mut walk = match Walk::start(Tracer { scratch, tiers, stats, options, log }, span, cone) {
+        Ok(walk) => walk,
+        Err(outcome) => return outcome,
     };
-    if sign < 0.0 {
-        if cone > 0.0 {
-            return Outcome::Free(t);
-        }
-        scratch.refresh(tiers, t, sign, false);
-        for j in 0..k {
-            let (v, d) = (scratch.value[j], scratch.raw_slope[j]);
-            scratch.store(j, v, d, sign);
+    loop {
+        if let Some(outcome) = walk.step() {
+            return outcome;
         }
     }
-    let mut sampled = k;
-    let mut guess = f64::NAN;
-    let mut relax = RELAXATION > 1.0;
-    let mut steps = 0u32;
+}
 
-    // Samples every tier of [from, to) at t (the caller counts the point).
-    let sample_range = |scratch: &mut TierScratch, tiers: &mut R, stats: &mut TraceStats, from: usize, to: usize, t| {
+/// What a walk works with: the buffers, the tiers, the counters, the options and the log.
+struct Tracer<'w, R: RayTiers + ?Sized> {
+    scratch: &'w mut TierScratch,
+    tiers: &'w mut R,
+    stats: &'w mut TraceStats,
+    options: &'w TraceOptions,
+    log: Option<&'w mut Vec<Step>>,
+}
+
+/// The state one walk along a ray (or along a cone's axis) carries from step to step.
+struct Walk<'w, R: RayTiers + ?Sized> {
+    w: Tracer<'w, R>,
+    span: RaySpan<'w>,
+    /// Half-angle of the cone (rad); 0 for one ray.
+    cone: f64,
+    /// Tiers in the sum.
+    n: usize,
+    /// Twice the sum's evaluation error bound.
+    eps: f64,
+    /// The bound of its slope's evaluation error.
+    eta: f64,
+    /// `+1` when the ray starts above the surface, `−1` below: the samples are `G = sign · F`.
+    sign: f64,
+    /// The present point.
+    t: f64,
+    /// Tiers the step reads at `t` (the depth), and how many of them are sampled there.
+    k: usize,
+    sampled: usize,
+    /// The last step: the guess of the next one (`NaN` before the first).
+    guess: f64,
+    /// Whether the next step may be over-relaxed.
+    relax: bool,
+    steps: u32,
+    /// Where the bounds were last read.
+    t_refresh: f64,
+}
+
+/// What the Newton phase of a step decided.
+enum Newton {
+    /// The walk ends.
+    Done(Outcome),
+    /// The walk moved to the probe: the next step starts there.
+    Moved,
+    /// Nothing: go on with the certified step.
+    Stay,
+}
+
+impl<'w, R: RayTiers + ?Sized> Walk<'w, R> {
+    /// Reads the bounds at `t_enter` and adds tiers until they decide which side of the surface
+    /// the ray starts on (the samples are stored as if the side were positive and flipped below
+    /// if not). `Err` when that alone ends the walk.
+    fn start(w: Tracer<'w, R>, span: RaySpan<'w>, cone: f64) -> Result<Self, Outcome> {
+        let n = w.tiers.tier_count();
+        let eps = 2.0 * w.tiers.error_bound();
+        let eta = w.tiers.slope_error_bound();
+        let t = span.t_enter;
+        let mut walk = Self {
+            w,
+            span,
+            cone,
+            n,
+            eps,
+            eta,
+            sign: 1.0,
+            t,
+            k: 0,
+            sampled: 0,
+            guess: f64::NAN,
+            relax: RELAXATION > 1.0,
+            steps: 0,
+            t_refresh: t,
+        };
+        let Tracer { scratch, tiers, stats, .. } = &mut walk.w;
+        scratch.reset(n);
+        scratch.refresh(*tiers, t, 1.0, cone > 0.0);
+        let hi_total: f64 = scratch.bounds.iter().map(|b| b.max).sum();
+        let (mut sum, mut k, mut hi_rest) = (0.0, 0, hi_total);
+        stats.evaluations += 1;
+        let sign = loop {
+            let s = tiers.sample(k, t);
+            stats.component_evaluations += u64::from(s.terms);
+            scratch.store(k, s.value, s.slope, 1.0);
+            scratch.raw_slope[k] = s.slope;
+            sum += s.value;
+            hi_rest -= scratch.bounds[k].max;
+            k += 1;
+            if sum + scratch.lo_suffix[k] > eps {
+                break 1.0;
+            }
+            if sum + hi_rest < -eps {
+                break -1.0;
+            }
+            if k == n {
+                if cone > 0.0 {
+                    return Err(Outcome::Free(t));
+                }
+                if sum == 0.0 {
+                    stats.hits += 1;
+                    return Err(Outcome::Hit(Hit { t, point: span.ray.at(t), entering: true, steps: 0 }));
+                }
+                break sum.signum();
+            }
+        };
+        if sign < 0.0 {
+            if cone > 0.0 {
+                return Err(Outcome::Free(t));
+            }
+            scratch.refresh(*tiers, t, sign, false);
+            for j in 0..k {
+                let (v, d) = (scratch.value[j], scratch.raw_slope[j]);
+                scratch.store(j, v, d, sign);
+            }
+        }
+        walk.sign = sign;
+        walk.k = k;
+        walk.sampled = k;
+        Ok(walk)
+    }
+
+    /// Samples every tier of `[from, to)` at `t` (the caller counts the point).
+    fn sample_range(&mut self, from: usize, to: usize, t: f64) {
+        let Tracer { scratch, tiers, stats, .. } = &mut self.w;
         for j in from..to {
             let s = tiers.sample(j, t);
             stats.component_evaluations += u64::from(s.terms);
-            scratch.store(j, s.value, s.slope, sign);
+            scratch.store(j, s.value, s.slope, self.sign);
         }
-    };
+    }
 
-    loop {
-        if steps >= options.max_steps {
-            if cone > 0.0 {
-                return Outcome::Free(t);
+    /// `(G, G')` of the stored samples.
+    fn sums(&self) -> (f64, f64) {
+        (self.w.scratch.value.iter().sum(), self.w.scratch.slope.iter().sum())
+    }
+
+    fn log_step(&mut self, t_from: f64, t_to: f64, kind: StepKind) {
+        log_step(&mut self.w.log, t_from, t_to, kind);
+    }
+
+    /// The hit at `t_hit`, counted.
+    fn hit(&mut self, t_hit: f64) -> Outcome {
+        self.w.stats.hits += 1;
+        Outcome::Hit(Hit { t: t_hit, point: self.span.ray.at(t_hit), entering: self.sign > 0.0, steps: self.steps })
+    }
+
+    /// One step of the walk from `t`; `Some` when the walk ends.
+    fn step(&mut self) -> Option<Outcome> {
+        if self.steps >= self.w.options.max_steps {
+            if self.cone > 0.0 {
+                return Some(Outcome::Free(self.t));
             }
-            stats.exhausted += 1;
-            return Outcome::Miss;
+            self.w.stats.exhausted += 1;
+            return Some(Outcome::Miss);
         }
-        steps += 1;
-        if sampled < k {
-            if sampled == 0 {
-                stats.evaluations += 1;
+        self.steps += 1;
+        let (s, h) = self.certified_step();
+        let t = self.t;
+        if t + s >= self.span.t_exit {
+            self.log_step(t, self.span.t_exit, StepKind::Certified);
+            return Some(Outcome::Miss);
+        }
+        if self.cone > 0.0 && (s < self.cone * t || s < h) {
+            // The cone is as wide as its step: its children take over from here.
+            return Some(Outcome::Free(t + s));
+        }
+        // Every tier evaluated: the crossing may be certified from this point alone, or bracketed
+        // by a Newton probe on a stretch where `G` provably decreases.
+        let tol = self.w.options.tolerance_at(t);
+        let mut full = None;
+        if self.cone == 0.0 && self.k == self.n && self.w.scratch.exact.iter().all(|&e| e) {
+            let (g, d) = self.sums();
+            full = Some((g, d));
+            match self.newton(Sample { t, g, d }, s, tol) {
+                Newton::Done(outcome) => return Some(outcome),
+                Newton::Moved => return None,
+                Newton::Stay => {}
             }
-            sample_range(scratch, tiers, stats, sampled, k, t);
         }
-        let mut s = scratch.step(k, eps, eta, guess, (cone, t));
-        while k < n && s < scratch.key[k] {
+        if s >= h {
+            self.advance(s);
+            return None;
+        }
+        self.probe(s, h, tol, full)
+    }
+
+    /// The certified step from `t`: tiers are added while the step is shorter than the next
+    /// one's key, and all of them when it is shorter than the minimum step `h`. Returns `(s, h)`.
+    fn certified_step(&mut self) -> (f64, f64) {
+        let (n, t, eps, eta, guess, spread) = (self.n, self.t, self.eps, self.eta, self.guess, (self.cone, self.t));
+        if self.sampled < self.k {
+            if self.sampled == 0 {
+                self.w.stats.evaluations += 1;
+            }
+            self.sample_range(self.sampled, self.k, t);
+        }
+        let mut k = self.k;
+        let mut s = self.w.scratch.step(k, eps, eta, guess, spread);
+        while k < n && s < self.w.scratch.key[k] {
             let mut k2 = k + 1;
-            while k2 < n && scratch.key[k2] > s {
+            while k2 < n && self.w.scratch.key[k2] > s {
                 k2 += 1;
             }
-            sample_range(scratch, tiers, stats, k, k2, t);
+            self.sample_range(k, k2, t);
             k = k2;
-            s = scratch.step(k, eps, eta, guess, (cone, t));
+            s = self.w.scratch.step(k, eps, eta, guess, spread);
         }
-        let h = options.min_step_at(t);
+        let h = self.w.options.min_step_at(t);
         if s < h && k < n {
-            sample_range(scratch, tiers, stats, k, n, t);
+            self.sample_range(k, n, t);
             k = n;
-            s = scratch.step(k, eps, eta, guess, (cone, t));
+            s = self.w.scratch.step(k, eps, eta, guess, spread);
         }
         if !(s >= 0.0) {
             s = 0.0;
         }
         if k < n {
-            stats.pruned_evaluations += 1;
+            self.w.stats.pruned_evaluations += 1;
         }
-        if t + s >= t_exit {
-            log_step(&mut log, t, t_exit, StepKind::Certified);
-            return Outcome::Miss;
-        }
-        if cone > 0.0 && (s < cone * t || s < h) {
-            // The cone is as wide as its step: its children take over from here.
-            return Outcome::Free(t + s);
-        }
-        // Every tier evaluated: the crossing may be certified from this point alone, or bracketed
-        // by a Newton probe on a stretch where `G` provably decreases.
-        let tol = options.tolerance_at(t);
-        let mut full = None;
-        if cone == 0.0 && k == n && scratch.exact.iter().all(|&e| e) {
-            let g: f64 = scratch.value.iter().sum();
-            let d: f64 = scratch.slope.iter().sum();
-            let curvature: f64 = scratch.bounds.iter().map(|b| b.curvature).sum();
-            full = Some((g, d));
-            let here = Sample { t, g, d };
-            // The exact F is within ε/2 of the samples (eps = 2ε guards the sampled F̃ too).
-            let (lo, hi) = here.crossing_interval(curvature, 0.5 * eps, eta);
-            let lo = lo.max(s);
-            if lo <= hi && hi - lo <= tol && t + hi <= t_exit {
-                // The lower bound is positive up to t + lo, the upper bound negative at t + hi: the
-                // first crossing lies between, no further evaluation needed.
-                log_step(&mut log, t + lo, t + hi, StepKind::Bracket);
-                let t_hit = t + 0.5 * (lo + hi);
-                stats.hits += 1;
-                return Outcome::Hit(Hit { t: t_hit, point: ray.at(t_hit), entering: sign > 0.0, steps });
-            }
-            let newton = if d + eta < 0.0 && g > 0.0 { g / -d + 0.5 * tol } else { 0.0 };
-            if newton > s && t + newton < t_exit && curvature * newton < NEWTON_REACH * (-d - eta) {
-                let tp = t + newton;
-                stats.evaluations += 1;
-                stats.probe_evaluations += 1;
-                sample_range(scratch, tiers, stats, 0, n, tp);
-                let gp: f64 = scratch.value.iter().sum();
-                let dp: f64 = scratch.slope.iter().sum();
-                // G' ≤ min(d + η + K(u − t), dp + η + K(tp − u)) < 0 on [t, tp]: G decreases.
-                let monotone = d + dp + 2.0 * eta + curvature * newton < 0.0;
-                if monotone && gp > 0.0 {
-                    log_step(&mut log, t, tp, StepKind::Certified);
-                    t = tp;
-                    guess = newton;
-                    k = n;
-                    sampled = n;
-                    continue;
-                }
-                if monotone {
-                    log_step(&mut log, t, tp, StepKind::Bracket);
-                    let mut refinement = 0u64;
-                    let t_hit =
-                        refine_monotone(here, Sample { t: tp, g: gp, d: dp }, curvature, 0.5 * eps, eta, tol, |x| {
-                            refinement += 1;
-                            sample_range(scratch, tiers, stats, 0, n, x);
-                            (scratch.value.iter().sum(), scratch.slope.iter().sum())
-                        });
-                    stats.evaluations += refinement;
-                    stats.refinement_evaluations += refinement;
-                    stats.hits += 1;
-                    return Outcome::Hit(Hit { t: t_hit, point: ray.at(t_hit), entering: sign > 0.0, steps });
-                }
-                // Not provably monotone: the probe is wasted; go on from t.
-            }
-        }
-        if s >= h {
-            let relaxed = t + RELAXATION * s;
-            if relax && cone == 0.0 && relaxed < t_exit {
-                // Over-relaxed step (Keinert et al. 2014, with certified bounds): sample every tier
-                // at t + ωs; the step is kept if the certified step *backward* from there reaches
-                // t + s, so that [t, t + ωs] is free; otherwise the sample is wasted and the next
-                // step is not relaxed.
-                stats.evaluations += 1;
-                sample_range(scratch, tiers, stats, 0, n, relaxed);
-                let back = scratch.backward_step(n, eps, eta, (RELAXATION - 1.0) * s);
-                if relaxed - back <= t + s {
-                    log_step(&mut log, t, relaxed, StepKind::Certified);
-                    t = relaxed;
-                    guess = RELAXATION * s;
-                    k = n;
-                    sampled = n;
-                    if options.footprint_angle > 0.0 && t >= REFRESH_GROWTH * t_refresh {
-                        scratch.refresh(tiers, t, sign, false);
-                        t_refresh = t;
-                    }
-                    continue;
-                }
-                log_step(&mut log, t, relaxed, StepKind::Rejected);
-                relax = false;
-            } else {
-                relax = RELAXATION > 1.0;
-            }
-            log_step(&mut log, t, t + s, StepKind::Certified);
-            t += s;
-            guess = s;
-            k = scratch.next_depth(s);
-            sampled = 0;
-            if options.footprint_angle > 0.0 && t >= REFRESH_GROWTH * t_refresh {
-                scratch.refresh(tiers, t, sign, cone > 0.0);
-                t_refresh = t;
-            }
-            continue;
-        }
+        self.k = k;
+        (s, h)
+    }
 
-        // Every tier is evaluated and the certified step is shorter than h: probe.
-        let (g, slope) = full.unwrap_or_else(|| (scratch.value.iter().sum(), scratch.slope.iter().sum()));
+    /// With every tier sampled exactly at `here`: the crossing certified from this point alone,
+    /// or a Newton probe past the certified step `s` on a stretch where `G` provably decreases
+    /// (a move there, or the crossing bracketed and refined).
+    fn newton(&mut self, here: Sample, s: f64, tol: f64) -> Newton {
+        let (n, t, eps, eta, t_exit) = (self.n, self.t, self.eps, self.eta, self.span.t_exit);
+        let (g, d) = (here.g, here.d);
+        let curvature: f64 = self.w.scratch.bounds.iter().map(|b| b.curvature).sum();
+        // The exact F is within ε/2 of the samples (eps = 2ε guards the sampled F̃ too).
+        let (lo, hi) = here.crossing_interval(curvature, 0.5 * eps, eta);
+        let lo = lo.max(s);
+        if lo <= hi && hi - lo <= tol && t + hi <= t_exit {
+            // The lower bound is positive up to t + lo, the upper bound negative at t + hi: the
+            // first crossing lies between, no further evaluation needed.
+            self.log_step(t + lo, t + hi, StepKind::Bracket);
+            return Newton::Done(self.hit(t + 0.5 * (lo + hi)));
+        }
+        let newton = if d + eta < 0.0 && g > 0.0 { g / -d + 0.5 * tol } else { 0.0 };
+        if !(newton > s && t + newton < t_exit && curvature * newton < NEWTON_REACH * (-d - eta)) {
+            return Newton::Stay;
+        }
+        let tp = t + newton;
+        self.w.stats.evaluations += 1;
+        self.w.stats.probe_evaluations += 1;
+        self.sample_range(0, n, tp);
+        let (gp, dp) = self.sums();
+        // G' ≤ min(d + η + K(u − t), dp + η + K(tp − u)) < 0 on [t, tp]: G decreases.
+        let monotone = d + dp + 2.0 * eta + curvature * newton < 0.0;
+        if monotone && gp > 0.0 {
+            self.log_step(t, tp, StepKind::Certified);
+            self.t = tp;
+            self.guess = newton;
+            self.k = n;
+            self.sampled = n;
+            return Newton::Moved;
+        }
+        if !monotone {
+            // Not provably monotone: the probe is wasted; go on from t.
+            return Newton::Stay;
+        }
+        self.log_step(t, tp, StepKind::Bracket);
+        let mut refinement = 0u64;
+        let t_hit = refine_monotone(here, Sample { t: tp, g: gp, d: dp }, curvature, 0.5 * eps, eta, tol, |x| {
+            refinement += 1;
+            self.sample_range(0, n, x);
+            self.sums()
+        });
+        self.w.stats.evaluations += refinement;
+        self.w.stats.refinement_evaluations += refinement;
+        Newton::Done(self.hit(t_hit))
+    }
+
+    /// Moves by the certified step `s ≥ h`, over-relaxed when the relaxed point proves free.
+    fn advance(&mut self, s: f64) {
+        let (n, t) = (self.n, self.t);
+        let relaxed = t + RELAXATION * s;
+        if self.relax && self.cone == 0.0 && relaxed < self.span.t_exit {
+            // Over-relaxed step (Keinert et al. 2014, with certified bounds): sample every tier
+            // at t + ωs; the step is kept if the certified step *backward* from there reaches
+            // t + s, so that [t, t + ωs] is free; otherwise the sample is wasted and the next
+            // step is not relaxed.
+            self.w.stats.evaluations += 1;
+            self.sample_range(0, n, relaxed);
+            let back = self.w.scratch.backward_step(n, self.eps, self.eta, (RELAXATION - 1.0) * s);
+            if relaxed - back <= t + s {
+                self.log_step(t, relaxed, StepKind::Certified);
+                self.t = relaxed;
+                self.guess = RELAXATION * s;
+                self.k = n;
+                self.sampled = n;
+                self.refresh_if_grown(false);
+                return;
+            }
+            self.log_step(t, relaxed, StepKind::Rejected);
+            self.relax = false;
+        } else {
+            self.relax = RELAXATION > 1.0;
+        }
+        self.log_step(t, t + s, StepKind::Certified);
+        self.t = t + s;
+        self.guess = s;
+        self.k = self.w.scratch.next_depth(s);
+        self.sampled = 0;
+        self.refresh_if_grown(self.cone > 0.0);
+    }
+
+    /// Re-reads the bounds once `t` has grown by [`REFRESH_GROWTH`] since the last reading (they
+    /// tighten as the footprint fades components).
+    fn refresh_if_grown(&mut self, cone: bool) {
+        if self.w.options.footprint_angle > 0.0 && self.t >= REFRESH_GROWTH * self.t_refresh {
+            self.w.scratch.refresh(self.w.tiers, self.t, self.sign, cone);
+            self.t_refresh = self.t;
+        }
+    }
+
+    /// Every tier is evaluated and the certified step `s` is shorter than `h`: a probe at
+    /// Newton's estimate (within `[s, h]`) looks for the sign change.
+    fn probe(&mut self, s: f64, h: f64, tol: f64, full: Option<(f64, f64)>) -> Option<Outcome> {
+        let (n, t, t_exit) = (self.n, self.t, self.span.t_exit);
+        let (g, slope) = full.unwrap_or_else(|| self.sums());
         let newton = if slope < 0.0 { g / -slope + 0.5 * tol } else { h };
         let p = newton.clamp(s, h).min(t_exit - t);
         let tp = t + p;
-        stats.evaluations += 1;
-        stats.probe_evaluations += 1;
-        sample_range(scratch, tiers, stats, 0, n, tp);
-        let gp: f64 = scratch.value.iter().sum();
+        self.w.stats.evaluations += 1;
+        self.w.stats.probe_evaluations += 1;
+        self.sample_range(0, n, tp);
+        let gp: f64 = self.w.scratch.value.iter().sum();
         if gp <= 0.0 {
-            log_step(&mut log, t + s, tp, StepKind::Bracket);
+            self.log_step(t + s, tp, StepKind::Bracket);
             let t_hit = if gp == 0.0 {
                 tp
             } else if p - s <= tol {
                 t + 0.5 * (s + p)
             } else {
-                refine_tiers(tiers, sign, (t, g), (tp, gp), tol, stats)
+                refine_tiers(self.w.tiers, self.sign, (t, g), (tp, gp), tol, self.w.stats)
             };
-            stats.hits += 1;
-            return Outcome::Hit(Hit { t: t_hit, point: ray.at(t_hit), entering: sign > 0.0, steps });
+            return Some(self.hit(t_hit));
         }
-        log_step(&mut log, t, tp, StepKind::Probe);
-        t = tp;
-        if t >= t_exit {
-            return Outcome::Miss;
+        self.log_step(t, tp, StepKind::Probe);
+        self.t = tp;
+        if self.t >= t_exit {
+            return Some(Outcome::Miss);
         }
-        guess = p;
-        k = n;
-        sampled = n;
+        self.guess = p;
+        self.k = n;
+        self.sampled = n;
+        None
     }
 }

@@ -62,7 +62,6 @@ pub(super) fn first_reach(c: f64, m: f64, k: f64) -> f64 {
 /// bracket `[a, b]`; the next point is Newton's estimate from the end nearer the surface (a
 /// bisection of the bracket when it lies outside, or when the last point did not halve it).
 /// Stops when either is no longer than `tolerance` and returns its midpoint.
-#[allow(clippy::too_many_arguments)]
 pub(super) fn refine_monotone(
     mut a: Sample,
     mut b: Sample,

@@ -4,7 +4,7 @@
 
 use std::f64::consts::TAU;
 
-use brine_trace::footprint_weight;
+use brine_core::footprint::footprint_weight;
 use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 

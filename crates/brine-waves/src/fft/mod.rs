@@ -1,6 +1,7 @@
 //! Tessendorf's FFT sea: spectrum, cascades, frames, certified splines, footprint-filtered slopes.
 
 pub(crate) mod frame;
+#[cfg(feature = "tracing")]
 pub(crate) mod lipschitz;
 pub(crate) mod ocean;
 pub(crate) mod options;

@@ -167,12 +167,14 @@ impl SineField<'_> {
 
     /// Phase `kᵢ·x + offᵢ` (rad) of geometric wave `i` at `(x, z)`.
     #[inline]
+    #[cfg_attr(not(feature = "tracing"), allow(dead_code))]
     pub(crate) fn wave_phase(&self, i: usize, x: f64, z: f64) -> f64 {
         let g = &self.set.geometry;
         g.kx[i] * x + g.kz[i] * z + self.offset[i]
     }
 
     /// Amplitude `Aᵢ` (m), wavenumber vector `(kxᵢ, kzᵢ)` (rad m⁻¹) of geometric wave `i`.
+    #[cfg_attr(not(feature = "tracing"), allow(dead_code))]
     pub(crate) fn wave(&self, i: usize) -> (f64, f64, f64) {
         let g = &self.set.geometry;
         (g.amplitude[i], g.kx[i], g.kz[i])
@@ -261,7 +263,7 @@ impl SineField<'_> {
         let g = &self.set.geometry;
         let mut out = DVec2::ZERO;
         for i in 0..g.kx.len() {
-            let w = brine_trace::footprint_weight(
+            let w = brine_core::footprint::footprint_weight(
                 crate::tracing::fade::wave_fade_distance(g.kx[i], g.kz[i], d, footprint_angle),
                 t,
             );
@@ -292,7 +294,7 @@ impl SineField<'_> {
         let mut out = DVec3::ZERO;
         for i in 0..g.kx.len() {
             let lost = 1.0
-                - brine_trace::footprint_weight(
+                - brine_core::footprint::footprint_weight(
                     crate::tracing::fade::wave_fade_distance(g.kx[i], g.kz[i], d, footprint_angle),
                     t,
                 );
@@ -336,7 +338,7 @@ impl SineField<'_> {
         let (mut g, mut c) = (DVec2::ZERO, DVec3::ZERO);
         for i in 0..w.kx.len() {
             let weight = if footprint_angle > 0.0 && t > 0.0 {
-                brine_trace::footprint_weight(
+                brine_core::footprint::footprint_weight(
                     crate::tracing::fade::wave_fade_distance(w.kx[i], w.kz[i], d, footprint_angle),
                     t,
                 )

@@ -428,6 +428,7 @@ pub(crate) fn profile8(phase: Phase<f32x8>, q: f32x8, series: &[[f32; 8]], mode:
 /// # Returns
 /// As [`profile8`].
 #[inline]
+#[cfg_attr(not(feature = "tracing"), allow(dead_code))]
 pub(crate) fn profile1(s: f64, q: f32, series: &[[f32; 8]], lane: usize, mode: ProfileMode) -> (f32, f32) {
     let (r_hi, r_lo, cq, sq, s_full) = reduce_phase(s);
     kernel_for(Phase { r_hi, r_lo, cq, sq, s_full }, q, mode, |n| series[n][lane])

@@ -42,7 +42,7 @@ impl LipschitzSum for GerstnerField<'_> {
         Aabb::slab_y(-a, a)
     }
 
-    /// With footprint fading, the faded Gerstner sum of [`FadedGerstnerRay`] (the waves cannot be
+    /// With footprint fading, the faded Gerstner sum of `FadedGerstnerRay` (the waves cannot be
     /// faded one component at a time: they share the inversion); without, the two components.
     fn trace_tiered(
         &self,

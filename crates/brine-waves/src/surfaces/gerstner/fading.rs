@@ -131,8 +131,11 @@ impl GerstnerField<'_> {
         if footprint_angle <= 0.0 || t <= 0.0 {
             return self.gradient(x, z);
         }
-        let weights: Vec<f64> =
-            self.fade_distances(d, footprint_angle).iter().map(|&f| brine_trace::footprint_weight(f, t)).collect();
+        let weights: Vec<f64> = self
+            .fade_distances(d, footprint_angle)
+            .iter()
+            .map(|&f| brine_core::footprint::footprint_weight(f, t))
+            .collect();
         let w = |i: usize| weights[i];
         let st = self.invert(x, z, |u| self.displacement_scaled(u, w), |u| self.state_scaled(u, w)).1;
         st.solve(st.grad_u)
@@ -157,7 +160,7 @@ impl GerstnerField<'_> {
         let s = self.surface;
         let mut out = DVec3::ZERO;
         for (i, f) in self.fade_distances(d, footprint_angle).into_iter().enumerate() {
-            let lost = 1.0 - brine_trace::footprint_weight(f, t);
+            let lost = 1.0 - brine_core::footprint::footprint_weight(f, t);
             if lost > 0.0 {
                 out += lost * crate::tracing::fade::slope_covariance(s.kx[i], s.kz[i], s.amplitude[i]);
             }

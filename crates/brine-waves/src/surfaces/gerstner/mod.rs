@@ -226,6 +226,7 @@ impl GerstnerField<'_> {
     }
 
     /// `(Aᵢ, kᵢAᵢ, Qᵢ, Qᵢ/kᵢ)` of wave `i`: amplitude (m), slope, steepness and horizontal radius (m).
+    #[cfg_attr(not(feature = "tracing"), allow(dead_code))]
     pub(crate) fn wave_terms(&self, i: usize) -> (f64, f64, f64, f64) {
         let s = self.surface;
         let k = (s.kx[i] * s.kx[i] + s.kz[i] * s.kz[i]).sqrt();

@@ -5,13 +5,11 @@
 // Lane loops index several parallel arrays of one tier at once.
 #![allow(clippy::needless_range_loop)]
 
-use std::cell::RefCell;
 use std::f64::consts::TAU;
 
-use brine_trace::{
-    Aabb, FADE_CURVATURE, FADE_SLOPE, Hit, LipschitzSum, Ray, RaySpan, RayTiers, Step, TierBounds, TierSample,
-    TierScratch, TraceOptions, TraceStats, certify_cone_with, footprint_weight, trace_tiers_with,
-};
+use brine_core::footprint::footprint_weight;
+#[cfg(feature = "tracing")]
+use brine_trace::{RayTiers, TierBounds, TierSample};
 use glam::{DVec2, DVec3};
 use wide::{f32x8, f64x4};
 
@@ -21,9 +19,13 @@ use crate::tracing::fast_profile::{
 };
 use crate::{Trochoid, TrochoidSet};
 
+#[cfg(feature = "tracing")]
+mod adapter;
+#[cfg(feature = "tracing")]
 mod tiers;
 
-use tiers::*;
+#[cfg(feature = "tracing")]
+pub(crate) use adapter::cone_span;
 
 /// Waves per lane group: one f32x8 vector.
 pub const LANES: usize = 8;
@@ -77,6 +79,7 @@ struct Tier {
     /// `kᵢ` (x, z) and `1/kᵢ²` in f32, for the particle kinematics.
     kinematic_k: [[f32; LANES]; 3],
     /// Real waves in this tier.
+    #[cfg_attr(not(feature = "tracing"), allow(dead_code))]
     count: u32,
     /// `Σ Aᵢ` of the f32 amplitudes the kernel uses (m).
     amplitude_sum: f64,
@@ -108,8 +111,9 @@ pub(crate) struct Kinematics {
 /// - along a ray, each tier knows its value, derivative, range, Lipschitz and curvature bounds
 ///   (`Σ Aᵢ σᵢ²/(1 − Qᵢ)²`, `σᵢ = kᵢ d̂ᵢ·d̂_xz`), and fades with the pixel footprint.
 ///
-/// It implements [`LipschitzSum`] (every method can trace it; the components are evaluated by
-/// the same f32 kernel) and overrides [`LipschitzSum::trace_tiered`] with the fast path.
+/// With the feature `tracing` it implements `brine_trace::LipschitzSum` (every method can trace
+/// it; the components are evaluated by the same f32 kernel) and overrides its `trace_tiered`
+/// with the fast path.
 ///
 /// # References
 /// Darles et al. 2007 §3.2; docs/equations.md §1 (trochoid profile, per-wave bounds, antialiasing).
@@ -117,22 +121,37 @@ pub(crate) struct Kinematics {
 pub struct TracedTrochoids {
     tiers: Vec<Tier>,
     /// Lane groups per tier of the tracer ([`tier_group`]).
+    #[cfg_attr(not(feature = "tracing"), allow(dead_code))]
     group: usize,
     /// `(tier, lane)` of wave `i` (original order).
+    #[cfg_attr(not(feature = "tracing"), allow(dead_code))]
     lane_of_wave: Vec<(usize, usize)>,
     /// Wave `i` (original order): `(Trochoid, offset φᵢ − ωᵢt)`.
     waves: Vec<(Trochoid, f64)>,
     /// Wave `i`'s slope covariance `⟨sᵢ²⟩ (k̂x², k̂x k̂z, k̂z²)`.
     slope_covariance: Vec<DVec3>,
+    #[cfg_attr(not(feature = "tracing"), allow(dead_code))]
     total_amplitude: f64,
     error: f64,
 }
 
-thread_local! {
-    static SCRATCH: RefCell<(TierScratch, RayState)> = RefCell::new((TierScratch::default(), RayState::default()));
-}
-
 impl TracedTrochoids {
+    /// `Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²))`: the pixel footprint on the sea is `αt` across the view and
+    /// `αt/|d_y|` along it; its extent along `k̂ᵢ` is `αt √(1 + (k̂ᵢ·d̂_xz)²/d_y²)`.
+    ///
+    /// Component 0 is `y` (never fades, `∞`); component `i + 1` is wave `i`: the distance (m)
+    /// along a ray of unit direction `d` at which wave `i` is faded out by a footprint of
+    /// `footprint_angle` (rad, `> 0`).
+    pub fn fade_distance(&self, i: usize, d: DVec3, footprint_angle: f64) -> f64 {
+        if i == 0 {
+            return f64::INFINITY;
+        }
+        let w = &self.waves[i - 1].0;
+        let k = w.wavenumber();
+        let sigma = k * (w.direction_vector().x * d.x + w.direction_vector().y * d.z);
+        TAU / (footprint_angle * (k * k + sigma * sigma / (d.y * d.y).max(1e-300)).sqrt())
+    }
+
     /// The surface of `set` at time `time` (s, finite: the scene's validated time).
     pub fn new(set: &TrochoidSet, time: f64) -> Self {
         debug_assert!(time.is_finite(), "time {time} must be finite");
@@ -280,6 +299,7 @@ impl TracedTrochoids {
     }
 
     /// Height of wave `i` alone by the scalar twin of the kernel.
+    #[cfg_attr(not(feature = "tracing"), allow(dead_code))]
     fn wave_height_fast(&self, i: usize, x: f64, z: f64) -> f64 {
         let (tier, lane) = self.lane_of_wave[i];
         let t = &self.tiers[tier];
@@ -292,7 +312,7 @@ impl TracedTrochoids {
     /// traced with a pixel footprint of `footprint_angle` rad (1 when the angle is 0).
     pub fn fade_weight(&self, i: usize, direction: DVec3, footprint_angle: f64, t: f64) -> f64 {
         if footprint_angle > 0.0 {
-            footprint_weight(self.component_fade_distance(i + 1, direction, footprint_angle), t)
+            footprint_weight(self.fade_distance(i + 1, direction, footprint_angle), t)
         } else {
             1.0
         }
@@ -412,136 +432,6 @@ impl TracedTrochoids {
     }
 }
 
-/// How far a downward cone of primary rays with footprint fading certifies, as a multiple of where
-/// it starts (or enters the slab `|y| ≤ ΣA`, or 1 m): waves that fade for some ray of the cone
-/// before `1.5×` that end are held at `−A`, so the shorter the cone's reach the fewer are held.
-/// Measured on the bench frame (640×480, N = 100, every phenomenon, 16 × 16 tiles):
-/// evaluations per frame 1.446 M without a limit, 1.581 M at 1.1, 1.307 M at 1.25, 1.141 M at
-/// 1.4, **1.136 M at 1.5**, 1.137 M at 1.75, 1.139 M at 2, 1.157 M at 4, 1.193 M at 8.
-pub(crate) const CONE_REACH: f64 = 1.5;
-
-/// The part of `span` a cone of primary rays around it certifies: with footprint fading
-/// (`footprint_angle > 0`) a downward cone ends at [`CONE_REACH`] times where it starts or meets
-/// the slab below `top` (m), or 1 m, whichever is farthest; otherwise the whole span.
-pub(crate) fn cone_span(span: RaySpan<'_>, top: f64, footprint_angle: f64) -> RaySpan<'_> {
-    let RaySpan { ray, t_enter, t_exit } = span;
-    let (o, d) = (ray.origin(), ray.direction());
-    if footprint_angle > 0.0 && d.y < 0.0 {
-        let slab = if o.y > top { (o.y - top) / -d.y } else { 0.0 };
-        RaySpan::new(ray, t_enter, t_exit.min(CONE_REACH * t_enter.max(slab).max(1.0)))
-    } else {
-        span
-    }
-}
-
-impl LipschitzSum for TracedTrochoids {
-    fn component_count(&self) -> usize {
-        self.waves.len() + 1
-    }
-
-    fn component(&self, i: usize, p: DVec3) -> f64 {
-        if i == 0 { p.y } else { -self.wave_height_fast(i - 1, p.x, p.z) }
-    }
-
-    fn component_lipschitz(&self, i: usize) -> f64 {
-        if i == 0 { 1.0 } else { self.waves[i - 1].0.max_slope() }
-    }
-
-    fn component_min(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
-        if i == 0 { a.y.min(b.y) } else { -self.waves[i - 1].0.amplitude() }
-    }
-
-    fn component_max(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
-        if i == 0 { a.y.max(b.y) } else { self.waves[i - 1].0.amplitude() }
-    }
-
-    /// `Lᵢ |k̂ᵢ·d̂_xz|` for a wave, `|d_y|` for `y`.
-    fn component_directional_lipschitz(&self, i: usize, d: DVec3) -> f64 {
-        if i == 0 {
-            return d.y.abs();
-        }
-        let w = &self.waves[i - 1].0;
-        let k = w.direction_vector();
-        w.max_slope() * (k.x * d.x + k.y * d.z).abs()
-    }
-
-    /// `d(−A cos θ)/dt = A sin θ/(1 − Q cos θ) · σ`, `σ = k d̂ᵢ·d̂_xz` (f32 kernel).
-    fn component_directional_derivative(&self, i: usize, p: DVec3, d: DVec3) -> Option<f64> {
-        if i == 0 {
-            return Some(d.y);
-        }
-        let (tier, lane) = self.lane_of_wave[i - 1];
-        let t = &self.tiers[tier];
-        let (_, g) =
-            profile1(t.kx[lane] * p.x + t.kz[lane] * p.z + t.offset[lane], t.steepness[lane], &t.series, lane, t.mode);
-        let sigma = t.kx[lane] * d.x + t.kz[lane] * d.z;
-        Some(f64::from(t.amplitude[lane]) * f64::from(g) * sigma)
-    }
-
-    /// `A σ²/(1 − Q)²`: `|τ''_Q| = |Q − cos θ|/(1 − Q cos θ)³ ≤ 1/(1 − Q)²` (at the crest).
-    fn component_directional_curvature(&self, i: usize, d: DVec3) -> f64 {
-        if i == 0 {
-            return 0.0;
-        }
-        let w = &self.waves[i - 1].0;
-        let sigma = w.wavenumber() * (w.direction_vector().x * d.x + w.direction_vector().y * d.z);
-        w.amplitude() * sigma * sigma / ((1.0 - w.steepness()).powi(2))
-    }
-
-    fn component_feature_size(&self, i: usize) -> f64 {
-        if i == 0 { f64::INFINITY } else { self.waves[i - 1].0.wavelength() }
-    }
-
-    /// `Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²))`: the pixel footprint on the sea is `αt` across the view and
-    /// `αt/|d_y|` along it; its extent along `k̂ᵢ` is `αt √(1 + (k̂ᵢ·d̂_xz)²/d_y²)`.
-    fn component_fade_distance(&self, i: usize, d: DVec3, footprint_angle: f64) -> f64 {
-        if i == 0 {
-            return f64::INFINITY;
-        }
-        let w = &self.waves[i - 1].0;
-        let k = w.wavenumber();
-        let sigma = k * (w.direction_vector().x * d.x + w.direction_vector().y * d.z);
-        TAU / (footprint_angle * (k * k + sigma * sigma / (d.y * d.y).max(1e-300)).sqrt())
-    }
-
-    fn value(&self, p: DVec3) -> f64 {
-        p.y - self.height(p.x, p.z)
-    }
-
-    fn zero_set_bounds(&self) -> Aabb {
-        Aabb::slab_y(-self.total_amplitude, self.total_amplitude)
-    }
-
-    fn trace_tiered(
-        &self,
-        span: RaySpan<'_>,
-        options: &TraceOptions,
-        stats: &mut TraceStats,
-        log: Option<&mut Vec<Step>>,
-    ) -> Option<Hit> {
-        let RaySpan { ray, t_exit, .. } = span;
-        SCRATCH.with(|cell| {
-            let mut guard = cell.borrow_mut();
-            let (scratch, state) = &mut *guard;
-            let mut tiers = SeaTiers::new(self, state, ray, t_exit, options.footprint_angle, 0.0);
-            trace_tiers_with(scratch, &mut tiers, span, options, stats, log)
-        })
-    }
-
-    fn certify_cone(&self, span: RaySpan<'_>, half_angle: f64, options: &TraceOptions, stats: &mut TraceStats) -> f64 {
-        // With fading, a wave that fades for some ray of the cone before the cone's end is held at
-        // −A: a downward cone certifies only up to CONE_REACH times where it starts or meets the
-        // slab, so that the waves fading beyond are used whole; its children go on from there.
-        let span = cone_span(span, self.total_amplitude, options.footprint_angle);
-        SCRATCH.with(|cell| {
-            let mut guard = cell.borrow_mut();
-            let (scratch, state) = &mut *guard;
-            let mut tiers = SeaTiers::new(self, state, span.ray, span.t_exit, options.footprint_angle, half_angle);
-            certify_cone_with(scratch, &mut tiers, span, half_angle, options, stats)
-        })
-    }
-}
-
 /// [`TracedTrochoids::kinematics`] over `tiers`: compiled for the widest vectors the processor
 /// has and chosen at run time (the phases' `f64` lanes then run four at a time); the operations
 /// and their order, so the roundings, are the same on every route.
@@ -613,5 +503,5 @@ fn rest_displacement_of(tiers: &[Tier], u: DVec2) -> DVec2 {
     d
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "tracing"))]
 mod tests;

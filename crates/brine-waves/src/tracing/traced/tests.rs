@@ -1,7 +1,9 @@
 use proptest::prelude::*;
 
+use super::tiers::*;
 use super::*;
 use crate::{FitOptions, PiersonMoskowitz, Spectrum, TrochoidSum, fit_trochoids, solve_trochoid_phase};
+use brine_trace::{LipschitzSum, Ray};
 
 /// A set with mixed steepness (series and Newton modes) from the fit, `Q` overridden per wave.
 fn set(n: usize, q_max: f64, seed: u64) -> TrochoidSet {

@@ -1,6 +1,8 @@
 //! The trochoid sea as the tiered tracer sees it: its waves in tiers of falling wavelength, each tier's bounds along a ray, and the state a ray carries from step to step.
 
 use super::*;
+use brine_core::footprint::{FADE_CURVATURE, FADE_SLOPE};
+use brine_trace::Ray;
 
 /// Per-tier quantities along one ray.
 #[derive(Debug, Default, Clone, Copy)]

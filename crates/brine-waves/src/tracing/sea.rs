@@ -1,0 +1,141 @@
+//! The sea frame as the tracer sees it ([`TracedSea`], feature `tracing`): each surface traced
+//! by the method that certifies it.
+
+use brine_trace::{Hit, Method, Ray, RayTile, TraceOptions, TraceStats};
+use glam::{DVec2, DVec3};
+
+use crate::{FftFrame, FrameSurface, GerstnerField, SeaFrame, SineField, TracedTrochoids};
+
+/// A [`SeaFrame`] ready to trace: the Gerstner and sine sums frozen at the frame's time once
+/// ([`SeaFrame::traced`]), each surface traced by the method that certifies it.
+#[derive(Debug)]
+pub enum TracedSea<'a> {
+    /// Darles et al.'s trochoid sum (the tiered tracer, footprint fading, image coherence).
+    Trochoids(&'a TracedTrochoids),
+    /// The Gerstner sum at the frame's time.
+    Gerstner(GerstnerField<'a>),
+    /// Chen et al.'s sine waves at the frame's time.
+    Sine(SineField<'a>),
+    /// The FFT cascades (the tiered tracer, one tier per cascade, image coherence).
+    Fft(&'a FftFrame),
+}
+
+impl SeaFrame {
+    /// The frame ready to trace ([`TracedSea`]); cheap (the Gerstner and sine sums' phase offsets).
+    pub fn traced(&self) -> TracedSea<'_> {
+        match &self.surface {
+            FrameSurface::Trochoids(t) => TracedSea::Trochoids(t),
+            FrameSurface::Gerstner(g) => TracedSea::Gerstner(g.at_time(self.time)),
+            FrameSurface::Sine(s) => TracedSea::Sine(s.at_time(self.time)),
+            FrameSurface::Fft(f) => TracedSea::Fft(f),
+        }
+    }
+}
+
+impl TracedSea<'_> {
+    /// The options a surface is traced with: the trochoid and FFT seas always by
+    /// [`Method::Tiered`] (their fast path), the Gerstner and sine sums by `options.method` (the
+    /// tiered method too for footprint fading).
+    fn options_for(&self, options: &TraceOptions) -> TraceOptions {
+        match self {
+            TracedSea::Trochoids(_) | TracedSea::Fft(_) => TraceOptions { method: Method::Tiered, ..*options },
+            _ => *options,
+        }
+    }
+
+    /// The first crossing of `ray` with the surface, the waves fading with the pixel footprint
+    /// `options.footprint_angle` (0 keeps every wave: secondary rays).
+    ///
+    /// # Arguments
+    /// - `ray`: the ray; `options`: the tracer's options (see [`TracedSea`] for the method);
+    ///   `stats`: receives the evaluations.
+    ///
+    /// # Returns
+    /// The hit, or `None` within `options.t_max`.
+    pub fn trace(&self, ray: &Ray, options: &TraceOptions, stats: &mut TraceStats) -> Option<Hit> {
+        let o = self.options_for(options);
+        match self {
+            TracedSea::Trochoids(t) => brine_trace::trace(*t, ray, &o, stats),
+            TracedSea::Gerstner(f) => brine_trace::trace(f, ray, &o, stats),
+            TracedSea::Sine(f) => brine_trace::trace(f, ray, &o, stats),
+            TracedSea::Fft(f) => brine_trace::trace(*f, ray, &o, stats),
+        }
+    }
+
+    /// The primary rays of an image tile: the trochoid and FFT seas share cones among
+    /// neighbouring rays (brine-trace `trace_tile`), the others trace ray by ray; `costs[i]`
+    /// receives each ray's evaluations.
+    ///
+    /// # Arguments
+    /// - `tile`: the rays ([`RayTile`]); `options`, `stats`: as [`TracedSea::trace`]; `hits`,
+    ///   `costs`: one per direction.
+    pub fn trace_tile(
+        &self,
+        tile: &RayTile<'_>,
+        options: &TraceOptions,
+        stats: &mut TraceStats,
+        hits: &mut [Option<Hit>],
+        costs: &mut [f64],
+    ) {
+        let o = self.options_for(options);
+        let (origin, dirs) = (tile.origin, tile.directions);
+        match self {
+            TracedSea::Trochoids(t) => brine_trace::trace_tile(*t, tile, &o, stats, hits, Some(costs)),
+            TracedSea::Fft(f) => brine_trace::trace_tile(*f, tile, &o, stats, hits, Some(costs)),
+            _ => {
+                for (i, d) in dirs.iter().enumerate() {
+                    let before = stats.evaluations;
+                    hits[i] = Ray::new(origin, *d).ok().and_then(|ray| self.trace(&ray, options, stats));
+                    costs[i] = (stats.evaluations - before) as f64;
+                }
+            }
+        }
+    }
+
+    /// The gradient of the surface as drawn at `(x, z)`, hit `t` metres along `d` with the waves
+    /// faded by `footprint_angle` (0 keeps every wave; the sine sea's detail waves left out).
+    pub fn faded_gradient(&self, x: f64, z: f64, d: DVec3, footprint_angle: f64, t: f64) -> DVec2 {
+        match self {
+            TracedSea::Trochoids(s) => s.faded_gradient(x, z, d, footprint_angle, t),
+            TracedSea::Gerstner(f) => f.faded_gradient(x, z, d, footprint_angle, t),
+            TracedSea::Sine(f) => f.faded_gradient(x, z, d, footprint_angle, t),
+            TracedSea::Fft(f) => f.faded_gradient(x, z, d, footprint_angle, t),
+        }
+    }
+
+    /// The shading gradient at a primary hit and the world-axes covariance `(xx, xz, zz)` of the
+    /// slopes the fading removed (they go to the BRDF: Bruneton et al. 2010's seamless
+    /// transition), in one pass over the waves where the surface allows it; the sine sea's
+    /// bump-mapped detail waves included, faded as the geometric ones.
+    ///
+    /// # Arguments
+    /// As [`TracedSea::faded_gradient`].
+    ///
+    /// # Returns
+    /// `(∇h, c)` (dimensionless).
+    pub fn faded_gradient_and_covariance(
+        &self,
+        x: f64,
+        z: f64,
+        d: DVec3,
+        footprint_angle: f64,
+        t: f64,
+    ) -> (DVec2, DVec3) {
+        match self {
+            TracedSea::Trochoids(s) => s.faded_gradient_and_covariance(x, z, d, footprint_angle, t),
+            TracedSea::Gerstner(f) => {
+                (f.faded_gradient(x, z, d, footprint_angle, t), f.faded_slope_covariance(d, footprint_angle, t))
+            }
+            TracedSea::Sine(f) => {
+                let (gd, cd) = f.faded_detail(x, z, d, footprint_angle, t);
+                (
+                    f.faded_gradient(x, z, d, footprint_angle, t) + gd,
+                    f.faded_slope_covariance(d, footprint_angle, t) + cd,
+                )
+            }
+            TracedSea::Fft(f) => {
+                (f.faded_gradient(x, z, d, footprint_angle, t), f.faded_slope_covariance(d, footprint_angle, t))
+            }
+        }
+    }
+}
