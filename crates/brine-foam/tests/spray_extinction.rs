@@ -32,6 +32,15 @@ fn q_anomalous(r_um: f64, wavelength_nm: f64, m: f64) -> f64 {
     2.0 - 4.0 / rho * rho.sin() + 4.0 / (rho * rho) * (1.0 - rho.cos())
 }
 
+/// `k_e(0)` of `medium` against [`reference_extinction`] with the efficiency `q_e`, within `rel`
+/// relative; prints both.
+fn check_extinction(medium: &SprayMedium, q_e: impl Fn(f64) -> f64, rel: f64, case: &str) {
+    let reference = reference_extinction(medium, q_e);
+    let k = medium.extinction(0.0, 1.0);
+    eprintln!("{case}: k_e(0) = {k:.6e} m⁻¹, rel. diff. {:.1e}", k / reference - 1.0);
+    assert!((k / reference - 1.0).abs() < rel, "{case}: {k} vs {reference}");
+}
+
 /// `∫ Q_e(r) π r² n(r, 0) dr` (m⁻¹) by adaptive Simpson in `r` (µm), with `r` in metres inside
 /// `π r²` and `n` in m⁻³ µm⁻¹.
 fn reference_extinction(medium: &SprayMedium, q_e: impl Fn(f64) -> f64) -> f64 {
@@ -60,13 +69,7 @@ fn geometric_optics_extinction_against_adaptive_simpson() {
     for &(u10, r_max) in &[(5.0, 15.0), (10.0, 15.0), (20.0, 15.0), (10.0, 100.0)] {
         let p = SprayParams { u10, radius_max_um: r_max, ..SprayParams::default() };
         let m = SprayMedium::new(&p).unwrap();
-        let reference = reference_extinction(&m, |_| 2.0);
-        let k = m.extinction(0.0, 1.0);
-        eprintln!(
-            "U10 = {u10} m/s, 0.8–{r_max} µm, Q_e = 2: k_e(0) = {k:.6e} m⁻¹, rel. diff. {:.1e}",
-            k / reference - 1.0
-        );
-        assert!((k / reference - 1.0).abs() < SMOOTH_REL, "U10 = {u10}: {k} vs {reference}");
+        check_extinction(&m, |_| 2.0, SMOOTH_REL, &format!("U10 = {u10} m/s, 0.8–{r_max} µm, Q_e = 2"));
     }
 }
 
@@ -75,13 +78,8 @@ fn anomalous_diffraction_extinction_against_adaptive_simpson() {
     let efficiency = ExtinctionEfficiency::AnomalousDiffraction { wavelength_nm: 550.0, refractive_index: 1.34 };
     for &u10 in &[5.0, 10.0, 20.0] {
         let m = SprayMedium::new(&SprayParams { u10, efficiency, ..SprayParams::default() }).unwrap();
-        let reference = reference_extinction(&m, |r| q_anomalous(r, 550.0, 1.34));
-        let k = m.extinction(0.0, 1.0);
-        eprintln!(
-            "U10 = {u10} m/s, anomalous diffraction: k_e(0) = {k:.6e} m⁻¹, rel. diff. {:.1e}",
-            k / reference - 1.0
-        );
-        assert!((k / reference - 1.0).abs() < OSCILLATING_REL, "U10 = {u10}: {k} vs {reference}");
+        let q = |r| q_anomalous(r, 550.0, 1.34);
+        check_extinction(&m, q, OSCILLATING_REL, &format!("U10 = {u10} m/s, anomalous diffraction"));
     }
 }
 

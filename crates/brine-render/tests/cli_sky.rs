@@ -31,6 +31,14 @@ fn brine(args: &[&str], dir: &Path) -> Output {
 }
 
 /// Runs `brine` and parses its standard output as one JSON object.
+/// `brine COMMAND` at the test's place and instant, as JSON.
+fn json_at_place(command: &str) -> serde_json::Map<String, serde_json::Value> {
+    let mut args = vec![command];
+    args.extend(PLACE);
+    args.push("--json");
+    brine_json(&args)
+}
+
 fn brine_json(args: &[&str]) -> serde_json::Map<String, serde_json::Value> {
     let dir = tempfile::tempdir().unwrap();
     let out = brine(args, dir.path());
@@ -78,10 +86,7 @@ const SAME_NUMBER: f64 = 1e-12;
 
 #[test]
 fn sun_json_has_the_keys_and_matches_astropy() {
-    let mut args = vec!["sun"];
-    args.extend(PLACE);
-    args.push("--json");
-    let m = brine_json(&args);
+    let m = json_at_place("sun");
     assert_eq!(keys(&m), ["altitude_deg", "azimuth_deg", "distance_au"]);
     let (alt, az, r) = (num(&m, "altitude_deg"), num(&m, "azimuth_deg"), num(&m, "distance_au"));
     assert!((alt - 69.82052).abs() < SUN_DEG, "altitude {alt}");
@@ -92,10 +97,7 @@ fn sun_json_has_the_keys_and_matches_astropy() {
 
 #[test]
 fn moon_json_has_the_keys_ranges_and_matches_astropy() {
-    let mut args = vec!["moon"];
-    args.extend(PLACE);
-    args.push("--json");
-    let m = brine_json(&args);
+    let m = json_at_place("moon");
     assert_eq!(keys(&m), ["altitude_deg", "azimuth_deg", "distance_km", "illuminated_fraction", "phase_angle_deg"]);
     let (alt, az) = (num(&m, "altitude_deg"), num(&m, "azimuth_deg"));
     let (km, phase, k) = (num(&m, "distance_km"), num(&m, "phase_angle_deg"), num(&m, "illuminated_fraction"));

@@ -300,21 +300,25 @@ impl PreethamSky {
 
 /// `∫ L(ω) cos θ dω` over the upper hemisphere by the midpoint rule on 48 × 96 cells.
 pub(crate) fn horizontal_irradiance(radiance_rgb: impl Fn(DVec3) -> DVec3) -> DVec3 {
-    {
-        let (nt, np) = (48, 96);
-        let dtheta = std::f64::consts::FRAC_PI_2 / nt as f64;
-        let dphi = std::f64::consts::TAU / np as f64;
-        let mut e = DVec3::ZERO;
-        for i in 0..nt {
-            let theta = (i as f64 + 0.5) * dtheta;
-            let (st, ct) = theta.sin_cos();
-            for j in 0..np {
-                let phi = (j as f64 + 0.5) * dphi;
-                let v = DVec3::new(st * phi.cos(), ct, st * phi.sin());
-                e += radiance_rgb(v) * ct * st * dtheta * dphi;
-            }
+    let mut e = DVec3::ZERO;
+    for_each_dome_cell((48, 96), |v, (ct, st), (dt, dp)| e += radiance_rgb(v) * ct * st * dt * dp);
+    e
+}
+
+/// Calls `f(v, (cos θ, sin θ), (dθ, dφ))` at the centre `v` (unit, `y` up) of each of the
+/// `nθ × nφ` cells of the midpoint rule over the upper hemisphere (zenith angle `θ ∈ [0, π/2]`,
+/// azimuth `φ ∈ [0, 2π)`), whose solid angle is `sin θ dθ dφ`.
+pub(crate) fn for_each_dome_cell((n_theta, n_phi): (usize, usize), mut f: impl FnMut(DVec3, (f64, f64), (f64, f64))) {
+    let d_theta = std::f64::consts::FRAC_PI_2 / n_theta as f64;
+    let d_phi = std::f64::consts::TAU / n_phi as f64;
+    for i in 0..n_theta {
+        let theta = (i as f64 + 0.5) * d_theta;
+        let (sin_theta, cos_theta) = theta.sin_cos();
+        for j in 0..n_phi {
+            let phi = (j as f64 + 0.5) * d_phi;
+            let v = DVec3::new(sin_theta * phi.cos(), cos_theta, sin_theta * phi.sin());
+            f(v, (cos_theta, sin_theta), (d_theta, d_phi));
         }
-        e
     }
 }
 

@@ -1,7 +1,7 @@
 //! The renderer-facing sky for every sun elevation from −90° to 90°: Preetham's day, twilight,
 //! night glow, the Moon and its light, clouds, the sun and moon discs, and aerial perspective.
 
-use std::f64::consts::{FRAC_PI_2, PI, TAU};
+use std::f64::consts::{PI, TAU};
 
 use glam::DVec3;
 
@@ -329,21 +329,12 @@ impl Sky {
 
     /// `(∫ L cos θ dω, ∫ L dω)` over the upper hemisphere, midpoint rule on 24 × 48 cells.
     fn integrate_dome(&self) -> (DVec3, DVec3) {
-        let (nt, np) = DOME;
-        let dtheta = FRAC_PI_2 / nt as f64;
-        let dphi = TAU / np as f64;
         let (mut e, mut scalar) = (DVec3::ZERO, DVec3::ZERO);
-        for i in 0..nt {
-            let theta = (i as f64 + 0.5) * dtheta;
-            let (st, ct) = theta.sin_cos();
-            for j in 0..np {
-                let phi = (j as f64 + 0.5) * dphi;
-                let v = DVec3::new(st * phi.cos(), ct, st * phi.sin());
-                let l = self.radiance_rgb(v) * (st * dtheta * dphi);
-                e += l * ct;
-                scalar += l;
-            }
-        }
+        crate::preetham::for_each_dome_cell(DOME, |v, (ct, st), (dt, dp)| {
+            let l = self.radiance_rgb(v) * (st * dt * dp);
+            e += l * ct;
+            scalar += l;
+        });
         (e, scalar)
     }
 

@@ -10,7 +10,7 @@ use rayon::prelude::*;
 
 use crate::error::check;
 use crate::ocean::mip_level;
-use crate::texture::lattice;
+use crate::texture::bilinear;
 use crate::{OceanFrame, Pinhole, RelightRule, Texture, TextureError};
 
 /// Options of [`render_projection`].
@@ -202,16 +202,7 @@ impl Packed {
 
     #[inline(always)]
     fn sample(&self, u: f64, v: f64) -> [f32; 3] {
-        let (x0, y0, x1, y1, fx, fy) = lattice(u, v, self.width, self.height);
-        let w = self.width;
-        let (a, b, c, d) =
-            (self.texels[y0 * w + x0], self.texels[y0 * w + x1], self.texels[y1 * w + x0], self.texels[y1 * w + x1]);
-        let (fx, fy) = (fx as f32, fy as f32);
-        std::array::from_fn(|k| {
-            let (a, b, c, d) = (f32::from(a[k]), f32::from(b[k]), f32::from(c[k]), f32::from(d[k]));
-            let top = a + (b - a) * fx;
-            top + (c + (d - c) * fx - top) * fy
-        })
+        bilinear(&self.texels, self.width, self.height, u, v)
     }
 }
 

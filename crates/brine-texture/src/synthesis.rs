@@ -265,6 +265,27 @@ fn pick_source(
     }
 }
 
+/// Records each pick's source in `sources` and calls `paste(k, a, t)` for every texel of its
+/// window: the canvas index `k`, the feather weight `a` there and the exemplar's texel `t`.
+fn paste_picks(
+    ex: &Exemplar,
+    board: &Chessboard,
+    picks: &[(usize, (usize, usize))],
+    sources: &mut [(usize, usize)],
+    mut paste: impl FnMut(usize, f32, [f32; 3]),
+) {
+    let p = board.patch;
+    for &(cell, (qx, qy)) in picks {
+        sources[cell] = (qx, qy);
+        let o = board.window_origin(cell);
+        for j in 0..p {
+            for i in 0..p {
+                paste(board.index(o, i, j), board.feather(i, j), ex.texture().get(qx + i, qy + j));
+            }
+        }
+    }
+}
+
 /// Synthesises one tileable frame by chessboard filling.
 ///
 /// Sources are picked in parallel within each pass (each cell from its own random stream) and
@@ -278,7 +299,6 @@ pub(crate) fn chessboard_fill(
     tick: &(dyn Fn() + Sync),
 ) -> (Texture, Sources) {
     let (w, h) = (board.width, board.height);
-    let p = board.patch;
     let (ncx, ncy) = board.cells();
     let mut sources = vec![(0usize, 0usize); ncx * ncy];
     // The sources of the cells of one colour, each from its own random stream.
@@ -298,21 +318,12 @@ pub(crate) fn chessboard_fill(
     let picks = pick(&[], true);
     let mut acc = vec![[0.0f32; 3]; w * h];
     let mut weight = vec![0.0f32; w * h];
-    for &(cell, (qx, qy)) in &picks {
-        sources[cell] = (qx, qy);
-        let o = board.window_origin(cell);
-        for j in 0..p {
-            for i in 0..p {
-                let k = board.index(o, i, j);
-                let f = board.feather(i, j);
-                let t = ex.texture().get(qx + i, qy + j);
-                for c in 0..3 {
-                    acc[k][c] += f * t[c];
-                }
-                weight[k] += f;
-            }
+    paste_picks(ex, board, &picks, &mut sources, |k, f, t| {
+        for c in 0..3 {
+            acc[k][c] += f * t[c];
         }
-    }
+        weight[k] += f;
+    });
     let mut canvas: Vec<[f32; 3]> = acc
         .iter()
         .zip(&weight)
@@ -320,19 +331,10 @@ pub(crate) fn chessboard_fill(
         .collect();
     // Pass 2: white cells, matched on their O-shaped zone, feathered across it.
     let picks = pick(&canvas, false);
-    for &(cell, (qx, qy)) in &picks {
-        sources[cell] = (qx, qy);
-        let o = board.window_origin(cell);
-        for j in 0..p {
-            for i in 0..p {
-                let k = board.index(o, i, j);
-                let a = board.feather(i, j);
-                let t = ex.texture().get(qx + i, qy + j);
-                let old = canvas[k];
-                canvas[k] = std::array::from_fn(|c| (old[c] + a * (t[c] - old[c])).clamp(0.0, 255.0));
-            }
-        }
-    }
+    paste_picks(ex, board, &picks, &mut sources, |k, a, t| {
+        let old = canvas[k];
+        canvas[k] = std::array::from_fn(|c| (old[c] + a * (t[c] - old[c])).clamp(0.0, 255.0));
+    });
     (Texture::from_texels_unchecked(w, h, canvas), sources)
 }
 

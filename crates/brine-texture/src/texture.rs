@@ -151,16 +151,7 @@ impl Texture {
     /// Bilinear, toroidal sample at `(u, v)` (texels; texel `(i, j)` at the lattice point).
     #[inline(always)]
     pub fn sample(&self, u: f64, v: f64) -> [f32; 3] {
-        let (x0, y0, x1, y1, fx, fy) = lattice(u, v, self.width, self.height);
-        let w = self.width;
-        let (a, b, c, d) =
-            (self.texels[y0 * w + x0], self.texels[y0 * w + x1], self.texels[y1 * w + x0], self.texels[y1 * w + x1]);
-        let (fx, fy) = (fx as f32, fy as f32);
-        std::array::from_fn(|k| {
-            let top = a[k] + (b[k] - a[k]) * fx;
-            let bottom = c[k] + (d[k] - c[k]) * fx;
-            top + (bottom - top) * fy
-        })
+        bilinear(&self.texels, self.width, self.height, u, v)
     }
 
     /// The intensity [`intensity`] of every texel.
@@ -224,6 +215,27 @@ pub(crate) fn wrap_index(i: i64, n: usize) -> usize {
 pub(crate) fn floor_i64(x: f64) -> i64 {
     let i = x as i64;
     if (i as f64) > x { i - 1 } else { i }
+}
+
+/// Bilinear, toroidal sample at `(u, v)` (texels) of the first three channels of `texels`
+/// (row-major, `width × height`), interpolated in `f32`.
+#[inline(always)]
+pub(crate) fn bilinear<T: Copy + Into<f32>, const N: usize>(
+    texels: &[[T; N]],
+    width: usize,
+    height: usize,
+    u: f64,
+    v: f64,
+) -> [f32; 3] {
+    let (x0, y0, x1, y1, fx, fy) = lattice(u, v, width, height);
+    let (a, b, c, d) =
+        (texels[y0 * width + x0], texels[y0 * width + x1], texels[y1 * width + x0], texels[y1 * width + x1]);
+    let (fx, fy) = (fx as f32, fy as f32);
+    std::array::from_fn(|k| {
+        let (a, b, c, d): (f32, f32, f32, f32) = (a[k].into(), b[k].into(), c[k].into(), d[k].into());
+        let top = a + (b - a) * fx;
+        top + (c + (d - c) * fx - top) * fy
+    })
 }
 
 /// Lattice cell of a toroidal bilinear lookup: `(x0, y0, x1, y1, fx, fy)`.

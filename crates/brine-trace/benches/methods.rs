@@ -21,8 +21,8 @@ use brine_trace::{
     Hit, LipschitzSum, Method, Ray, RayTile, TraceOptions, TraceStats, trace, trace_temporal, trace_tile,
 };
 use brine_waves::{
-    CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, TracedTrochoids, Trochoid, TrochoidSet, TrochoidSum,
-    fit_trochoids, solve_trochoid_phase,
+    CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, TracedTrochoids, TrochoidSet, TrochoidSum, fit_trochoids,
+    solve_trochoid_phase,
 };
 use glam::DVec3;
 
@@ -69,12 +69,7 @@ fn sea(n: usize, q: Option<f64>) -> TrochoidSet {
     let set = fit_trochoids(&pm, &spreading, n, 1, &options).expect("valid fit");
     match q {
         None => set,
-        Some(q) => TrochoidSet::new(
-            set.waves()
-                .iter()
-                .map(|w| Trochoid::new(w.amplitude(), w.wavenumber(), w.direction(), w.omega(), w.phase(), q).unwrap())
-                .collect(),
-        ),
+        Some(q) => TrochoidSet::new(set.waves().iter().map(|w| w.with_steepness(q).unwrap()).collect()),
     }
 }
 

@@ -106,19 +106,9 @@ fn a_tile_of_coherent_rays_finds_each_first_crossing() {
     let mut hit_count = 0;
     for (d, hit) in directions.iter().zip(&hits) {
         let ray = Ray::new(origin, *d).unwrap();
-        let f = |t: f64| field.value(ray.at(t));
-        let Some((t0, t1)) = field.zero_set_bounds().clip(&ray, 0.0, o.t_max) else { continue };
-        let crossings = dense_crossings(&f, t0, t1, 1.5 / 50.0);
-        let lambda = field.directional_lipschitz(*d);
-        let eps = sea.error_bound();
-        check_first_crossing(
-            &f,
-            &crossings,
-            hit.map(|h| h.t),
-            eps + lambda * o.tolerance,
-            2.0 * eps + lambda * o.min_step,
-        )
-        .unwrap();
+        if !check_against_exact(&field, &ray, hit.map(|h| h.t), sea.error_bound(), &o, 1.5 / 50.0).unwrap() {
+            continue;
+        }
         // The same as tracing the ray alone.
         let single = trace(&sea, &ray, &o, &mut TraceStats::default());
         match (single, hit) {
@@ -129,6 +119,26 @@ fn a_tile_of_coherent_rays_finds_each_first_crossing() {
         hit_count += usize::from(hit.is_some());
     }
     assert!(hit_count > directions.len() / 2, "only {hit_count} hits: the test needs rays that hit");
+}
+
+/// Checks that `hit` is the first crossing along `ray` of the exact surface `field` (sampled every
+/// `delta` m), for a traced surface of evaluation error `eps` traced with options `o`: within the
+/// tolerance of a crossing, and skipping none wider than the minimum step. `Ok(false)` when the
+/// ray misses the surface's slab.
+fn check_against_exact<S: LipschitzSum>(
+    field: &S,
+    ray: &Ray,
+    hit: Option<f64>,
+    eps: f64,
+    o: &TraceOptions,
+    delta: f64,
+) -> Result<bool, String> {
+    let f = |t: f64| field.value(ray.at(t));
+    let Some((t0, t1)) = field.zero_set_bounds().clip(ray, 0.0, o.t_max) else { return Ok(false) };
+    let crossings = dense_crossings(&f, t0, t1, delta);
+    let lambda = field.directional_lipschitz(ray.direction());
+    check_first_crossing(&f, &crossings, hit, eps + lambda * o.tolerance, 2.0 * eps + lambda * o.min_step)?;
+    Ok(true)
 }
 
 #[test]
@@ -146,18 +156,9 @@ fn temporal_coherence_finds_the_first_crossing_of_the_next_frame() {
         let next = TracedTrochoids::new(&set, 0.04);
         let hit = trace_temporal(&next, &ray, previous, &o, &mut TraceStats::default());
         let field = exact.at_time(0.04);
-        let f = |t: f64| field.value(ray.at(t));
-        let Some((t0, t1)) = field.zero_set_bounds().clip(&ray, 0.0, o.t_max) else { continue };
-        let crossings = dense_crossings(&f, t0, t1, 1.0 / 50.0);
-        let (eps, lambda) = (next.error_bound(), field.directional_lipschitz(d));
-        check_first_crossing(
-            &f,
-            &crossings,
-            hit.map(|h| h.t),
-            eps + lambda * o.tolerance,
-            2.0 * eps + lambda * o.min_step,
-        )
-        .unwrap();
+        if !check_against_exact(&field, &ray, hit.map(|h| h.t), next.error_bound(), &o, 1.0 / 50.0).unwrap() {
+            continue;
+        }
         hits += usize::from(hit.is_some());
     }
     assert!(hits > 30, "only {hits} hits");

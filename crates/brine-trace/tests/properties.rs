@@ -8,7 +8,9 @@ use brine_trace::{
     trace_logged,
 };
 use brine_waves::{TracedTrochoids, TrochoidSum};
-use common::{SineSum, SphereSum, check_first_crossing, check_steps, dense_crossings, random_ray, random_set};
+use common::{
+    Crossing, SineSum, SphereSum, check_first_crossing, check_steps, dense_crossings, random_ray, random_set,
+};
 use glam::DVec3;
 use proptest::prelude::*;
 use rand::SeedableRng;
@@ -16,6 +18,33 @@ use rand_chacha::ChaCha8Rng;
 
 /// Options of the safety tests: a small minimum step (so that only skims thinner than 10⁻⁴ m can
 /// be skipped), a tight tolerance, and no practical step cap.
+/// Traces `ray` on `surface` with every method (options `options(method)`): each hit must be the
+/// first of the `crossings` of `F` along the ray, skims thinner than the method's probe `h` (or
+/// its march step) excepted, and each logged step safe. `case` names the case in failures.
+fn check_every_method<S: LipschitzSum>(
+    surface: &S,
+    ray: &Ray,
+    crossings: &[Crossing],
+    options: impl Fn(Method) -> TraceOptions,
+    case: &str,
+) -> Result<(), TestCaseError> {
+    let f = |t: f64| surface.value(ray.at(t));
+    let lambda = surface.directional_lipschitz(ray.direction());
+    for method in Method::ALL {
+        let options = options(method);
+        let mut log = Vec::new();
+        let hit = trace_logged(surface, ray, &options, &mut TraceStats::default(), &mut log);
+        let march = 0.25 * surface.min_feature_size();
+        // Skims a method may skip: thinner than its probe (h) or its march step.
+        let skim = lambda * if method == Method::BruteForce { march } else { options.min_step } + 1e-12;
+        let on_surface = lambda * options.tolerance + 1e-12;
+        let fail = |e: String| TestCaseError::fail(format!("{method:?}, {case}: {e}"));
+        check_first_crossing(&f, crossings, hit.map(|h| h.t), on_surface, skim).map_err(fail)?;
+        check_steps(&f, &log, &options, 1e-12, method != Method::BruteForce).map_err(fail)?;
+    }
+    Ok(())
+}
+
 fn test_options(method: Method) -> TraceOptions {
     TraceOptions {
         method,
@@ -84,20 +113,8 @@ proptest! {
             let f = |t: f64| surface.value(ray.at(t));
             let t_max = 30.0;
             let crossings = dense_crossings(&f, 0.0, t_max, SPHERE_REFERENCE_STEP);
-            let lambda = surface.directional_lipschitz(ray.direction());
-            for method in Method::ALL {
-                let options = TraceOptions { t_max, ..test_options(method) };
-                let mut log = Vec::new();
-                let hit = trace_logged(&surface, &ray, &options, &mut TraceStats::default(), &mut log);
-                let march = 0.25 * surface.min_feature_size();
-                // Skims a method may skip: thinner than its probe (h) or its march step.
-                let skim = lambda * if method == Method::BruteForce { march } else { options.min_step } + 1e-12;
-                let on_surface = lambda * options.tolerance + 1e-12;
-                check_first_crossing(&f, &crossings, hit.map(|h| h.t), on_surface, skim)
-                    .map_err(|e| TestCaseError::fail(format!("{method:?}, seed {seed}: {e}")))?;
-                check_steps(&f, &log, &options, 1e-12, method != Method::BruteForce)
-                    .map_err(|e| TestCaseError::fail(format!("{method:?}, seed {seed}: {e}")))?;
-            }
+            let options = |method| TraceOptions { t_max, ..test_options(method) };
+            check_every_method(&surface, &ray, &crossings, options, &format!("seed {seed}"))?;
         }
     }
 }
@@ -268,19 +285,7 @@ proptest! {
             let f = |t: f64| surface.value(ray.at(t));
             let Some((t0, t1)) = surface.zero_set_bounds().clip(&ray, 0.0, 60.0) else { continue };
             let crossings = dense_crossings(&f, t0, t1, SINE_REFERENCE_STEP);
-            let lambda = surface.directional_lipschitz(ray.direction());
-            for method in Method::ALL {
-                let options = test_options(method);
-                let mut log = Vec::new();
-                let hit = trace_logged(&surface, &ray, &options, &mut TraceStats::default(), &mut log);
-                let march = 0.25 * surface.min_feature_size();
-                let skim = lambda * if method == Method::BruteForce { march } else { options.min_step } + 1e-12;
-                let on_surface = lambda * options.tolerance + 1e-12;
-                check_first_crossing(&f, &crossings, hit.map(|h| h.t), on_surface, skim)
-                    .map_err(|e| TestCaseError::fail(format!("{method:?}, n {n}, seed {seed}: {e}")))?;
-                check_steps(&f, &log, &options, 1e-12, method != Method::BruteForce)
-                    .map_err(|e| TestCaseError::fail(format!("{method:?}, n {n}, seed {seed}: {e}")))?;
-            }
+            check_every_method(&surface, &ray, &crossings, test_options, &format!("n {n}, seed {seed}"))?;
         }
     }
 }

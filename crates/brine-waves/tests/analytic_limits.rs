@@ -77,21 +77,24 @@ fn the_independent_quadrature_reproduces_the_pm_closed_form() {
     }
 }
 
+/// Every spectrum fitted with the midpoint amplitude rule on `partition`'s bins holds its band
+/// variance within [`VARIANCE_REL`] from each number of waves of `counts`; returns the options.
+fn assert_midpoint_band_variance(partition: FrequencyPartition, counts: &[usize], bins: &str) -> FitOptions {
+    let o = FitOptions { partition, amplitude_rule: AmplitudeRule::Midpoint, ..FitOptions::default() };
+    for (name, s) in spectra() {
+        for &n in counts {
+            let err = variance_error(s.as_ref(), o, n);
+            assert!(err.abs() < VARIANCE_REL, "{name} midpoint, {bins}, n = {n}: relative error {err:.3e}");
+        }
+    }
+    o
+}
+
 #[test]
 fn midpoint_amplitudes_on_log_bins_hold_the_band_variance_from_30_waves() {
     // The acceptance criterion with the paper's rule Aᵢ = √(2 S(ωᵢ) Δωᵢ): log bins, n = 30, 50, 100,
     // every spectrum. Worst measured: JONSWAP +0.65 % at n = 30 (its γ = 3.3 peak is the sharpest).
-    let o = FitOptions {
-        partition: FrequencyPartition::Logarithmic,
-        amplitude_rule: AmplitudeRule::Midpoint,
-        ..FitOptions::default()
-    };
-    for (name, s) in spectra() {
-        for n in [30, 50, 100] {
-            let err = variance_error(s.as_ref(), o, n);
-            assert!(err.abs() < VARIANCE_REL, "{name} midpoint, log bins, n = {n}: relative error {err:.3e}");
-        }
-    }
+    assert_midpoint_band_variance(FrequencyPartition::Logarithmic, &[30, 50, 100], "log bins");
 }
 
 #[test]
@@ -131,17 +134,7 @@ fn midpoint_amplitudes_on_equally_spaced_bins_need_about_100_waves() {
     // The textbook equal-Δω discretisation with the midpoint rule: within 1 % from n = 100 for
     // every spectrum, but not below (documented on AmplitudeRule::Midpoint: JONSWAP is −5 % at
     // n = 50, as its peak falls between two wide bins).
-    let o = FitOptions {
-        partition: FrequencyPartition::EqualSpacing,
-        amplitude_rule: AmplitudeRule::Midpoint,
-        ..FitOptions::default()
-    };
-    for (name, s) in spectra() {
-        for n in [100, 200] {
-            let err = variance_error(s.as_ref(), o, n);
-            assert!(err.abs() < VARIANCE_REL, "{name} midpoint, equal spacing, n = {n}: relative error {err:.3e}");
-        }
-    }
+    let o = assert_midpoint_band_variance(FrequencyPartition::EqualSpacing, &[100, 200], "equal spacing");
     let jonswap = Jonswap::from_fetch(10.0, 1e5).unwrap();
     assert!(variance_error(&jonswap, o, 50).abs() > VARIANCE_REL, "the documented shortfall at n = 50 is gone");
 }

@@ -7,7 +7,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 use crate::bessel::ln_i0_and_ratio;
-use crate::coverage::whitecap_coverage;
+use crate::coverage::calibrated_coverage;
 use crate::erf::{ErfMethod, erf_inv};
 use crate::error::{WhitecapError, check};
 use crate::statistics::{Accumulator, FootprintFilter, JacobianStatistics, Moments, WaveTerm};
@@ -233,13 +233,7 @@ impl Calibration {
     /// # References
     /// Dupuy & Bruneton 2012 (`W = ½(1 + erf((α − μ)/√(2σ²)))`); docs/equations.md §10.
     pub fn coverage(&self, moments: Moments, footprint_m: f64, erf: ErfMethod) -> f64 {
-        if self.target <= 0.0 {
-            return 0.0;
-        }
-        if self.target >= 1.0 {
-            return 1.0;
-        }
-        whitecap_coverage(moments, self.alpha_for_footprint(footprint_m), erf)
+        calibrated_coverage(self.target, moments, erf, || self.alpha_for_footprint(footprint_m))
     }
 }
 

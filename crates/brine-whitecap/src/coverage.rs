@@ -88,6 +88,19 @@ pub fn compose_with_whitecaps(coverage: f64, sea_radiance: f64, whitecap_radianc
     (1.0 - coverage) * sea_radiance + whitecap_radiance
 }
 
+/// [`whitecap_coverage`] at a threshold calibrated on the coverage `target`: exactly 0 (1) when
+/// the target is 0 (1), whatever the moments; otherwise at the threshold `alpha()` (called only
+/// then).
+pub(crate) fn calibrated_coverage(target: f64, moments: Moments, erf: ErfMethod, alpha: impl FnOnce() -> f64) -> f64 {
+    if target <= 0.0 {
+        0.0
+    } else if target >= 1.0 {
+        1.0
+    } else {
+        whitecap_coverage(moments, alpha(), erf)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -7,7 +7,7 @@
 //! projection (8-bit PNG) or by ray tracing the composed height field (PNG or EXR, linear
 //! radiance exposed like `brine render`).
 
-use std::io::{BufWriter, IsTerminal, Write};
+use std::io::{BufWriter, IsTerminal};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -209,33 +209,14 @@ fn input(e: TextureError) -> CliError {
     CliError::Input(e.to_string())
 }
 
-/// Writes a file atomically: to a temporary file in the destination folder, renamed over the
-/// destination once complete (as `brine_render::write_image` does).
+/// Writes a file atomically ([`crate::output::write_atomic`]: a temporary file in the destination
+/// folder, renamed over it once complete, removed on a signal).
 fn write_atomic(
     path: &Path,
     encode: impl FnOnce(&mut BufWriter<&mut std::fs::File>) -> Result<(), String>,
 ) -> Result<(), CliError> {
-    let shown = path.display();
-    let fail = |m: String| CliError::Failure(format!("cannot write {shown}: {m}"));
-    let dir = match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p,
-        _ => Path::new("."),
-    };
-    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("image");
-    let prefix = format!(".{name}.");
-    let mut builder = tempfile::Builder::new();
-    builder.prefix(&prefix).suffix(".tmp");
-    #[cfg(unix)]
-    builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
-    let mut tmp = builder.tempfile_in(dir).map_err(|e| fail(e.to_string()))?;
-    {
-        let mut w = BufWriter::new(tmp.as_file_mut());
-        encode(&mut w).map_err(fail)?;
-        w.flush().map_err(|e| fail(e.to_string()))?;
-    }
-    tmp.as_file().sync_all().map_err(|e| fail(e.to_string()))?;
-    tmp.persist(path).map_err(|e| fail(e.error.to_string()))?;
-    Ok(())
+    crate::output::write_atomic(path, |w| encode(w).map_err(std::io::Error::other))
+        .map_err(|e| CliError::Failure(e.to_string()))
 }
 
 /// Writes an 8-bit RGB or 16-bit grey image as PNG, atomically.

@@ -8,10 +8,10 @@
 
 use std::cell::RefCell;
 
+use crate::tracing::tiered_fast_path;
 use brine_trace::{
-    Aabb, FADE_CURVATURE, FADE_SLOPE, Hit, LipschitzSum, Ray, RaySpan, RayTiers, Step, TierBounds, TierSample,
-    TierScratch, TraceOptions, TraceStats, certify_cone_with, footprint_weight, footprint_weight_slope,
-    trace_tiers_with,
+    Aabb, FADE_CURVATURE, FADE_SLOPE, LipschitzSum, Ray, RayTiers, TierBounds, TierSample, TierScratch,
+    footprint_weight, footprint_weight_slope,
 };
 use glam::DVec3;
 
@@ -81,36 +81,12 @@ impl LipschitzSum for FftFrame {
         Aabb::slab_y(lo, hi)
     }
 
-    fn trace_tiered(
-        &self,
-        span: RaySpan<'_>,
-        options: &TraceOptions,
-        stats: &mut TraceStats,
-        log: Option<&mut Vec<Step>>,
-    ) -> Option<Hit> {
-        let RaySpan { ray, t_exit, .. } = span;
-        SCRATCH.with(|cell| {
-            let mut guard = cell.borrow_mut();
-            let (scratch, state) = &mut *guard;
-            let mut tiers = CascadeTiers::new(self, state, ray, t_exit, options.footprint_angle, 0.0);
-            trace_tiers_with(scratch, &mut tiers, span, options, stats, log)
-        })
-    }
-
-    /// Cones need a surface that bounds every ray of the cone from below: with footprint fading
-    /// (weights that differ from ray to ray) a cascade that fades for some ray of the cone before
-    /// the cone's end is held at its lower bound `min(0, −max H)` (that of `w·n` for any weight
-    /// `w ∈ [0, 1]`), the others are used whole; as for the trochoids, a downward cone then
-    /// certifies at most `CONE_REACH` times where it starts or meets the slab (`cone_span`).
-    fn certify_cone(&self, span: RaySpan<'_>, half_angle: f64, options: &TraceOptions, stats: &mut TraceStats) -> f64 {
-        let span = crate::tracing::traced::cone_span(span, self.height_bounds().1, options.footprint_angle);
-        SCRATCH.with(|cell| {
-            let mut guard = cell.borrow_mut();
-            let (scratch, state) = &mut *guard;
-            let mut tiers = CascadeTiers::new(self, state, span.ray, span.t_exit, options.footprint_angle, half_angle);
-            certify_cone_with(scratch, &mut tiers, span, half_angle, options, stats)
-        })
-    }
+    // Cones need a surface that bounds every ray of the cone from below: with footprint fading
+    // (weights that differ from ray to ray) a cascade that fades for some ray of the cone before
+    // the cone's end is held at its lower bound `min(0, −max H)` (that of `w·n` for any weight
+    // `w ∈ [0, 1]`), the others are used whole; as for the trochoids, a downward cone then
+    // certifies at most `CONE_REACH` times where it starts or meets the slab (`cone_span`).
+    tiered_fast_path!(SCRATCH, CascadeTiers, |f: &FftFrame| f.height_bounds().1);
 }
 
 thread_local! {

@@ -342,7 +342,7 @@ pub fn fit_sea_state(
         rng.set_stream(j as u64);
         raw.extend(fit_component(c, &mut rng)?);
     }
-    let q_sum: f64 = raw.iter().map(|w| w.steepness).sum();
+    let q_sum: f64 = raw.iter().map(|&(_, q)| q).sum();
     let scale = if q_sum > max_total_steepness {
         match limit {
             SteepnessLimit::ScaleAll => max_total_steepness / q_sum,
@@ -355,32 +355,13 @@ pub fn fit_sea_state(
     };
     let waves = raw
         .into_iter()
-        .map(|w| {
-            Trochoid::new(
-                w.amplitude,
-                w.wavenumber,
-                w.direction,
-                w.omega,
-                w.phase,
-                (w.steepness * scale).min(crate::MAX_STEEPNESS),
-            )
-        })
+        .map(|(w, q)| w.with_steepness((q * scale).min(crate::MAX_STEEPNESS)))
         .collect::<Result<Vec<_>, _>>()?;
     Ok(TrochoidSet::new(waves))
 }
 
 /// Most waves a fitted set may hold in all: a wind sea of 10 000 waves and swells of up to 1 000.
 const MAX_TOTAL_WAVES: usize = 11_000;
-
-/// A wave before the steepness cap.
-struct RawWave {
-    amplitude: f64,
-    wavenumber: f64,
-    direction: f64,
-    omega: f64,
-    phase: f64,
-    steepness: f64,
-}
 
 fn check_options(o: &FitOptions, n_waves: usize) -> Result<(), WaveError> {
     check("n_waves", n_waves as f64, (1..=10_000).contains(&n_waves), "[1, 10000]")?;
@@ -404,7 +385,9 @@ fn check_options(o: &FitOptions, n_waves: usize) -> Result<(), WaveError> {
     Ok(())
 }
 
-fn fit_component(c: &SeaComponent<'_>, rng: &mut ChaCha8Rng) -> Result<Vec<RawWave>, WaveError> {
+/// The waves of one component, each with steepness 0 and, beside it, its steepness before the
+/// set's cap `Q = c kA` (`c` the choppiness).
+fn fit_component(c: &SeaComponent<'_>, rng: &mut ChaCha8Rng) -> Result<Vec<(Trochoid, f64)>, WaveError> {
     let o = &c.options;
     check_options(o, c.n_waves)?;
     let omega_p = c.spectrum.peak_omega();
@@ -426,14 +409,8 @@ fn fit_component(c: &SeaComponent<'_>, rng: &mut ChaCha8Rng) -> Result<Vec<RawWa
         let gain = if bin.omega >= amplified_from { o.high_frequency_gain } else { 1.0 };
         let amplitude = gain * bin.amplitude(c.spectrum, o.amplitude_rule);
         let k = dispersion.wavenumber(bin.omega);
-        raw.push(RawWave {
-            amplitude,
-            wavenumber: k,
-            direction: o.wind_direction + theta,
-            omega: bin.omega,
-            phase: TAU * u_phase,
-            steepness: o.choppiness * k * amplitude,
-        });
+        let wave = Trochoid::new(amplitude, k, o.wind_direction + theta, bin.omega, TAU * u_phase, 0.0)?;
+        raw.push((wave, o.choppiness * k * amplitude));
     }
     Ok(raw)
 }

@@ -60,6 +60,15 @@ impl Trochoid {
         })
     }
 
+    /// The same wave with the steepness `Q = steepness`, `[0, 0.99]`.
+    ///
+    /// # Errors
+    /// [`WaveError::OutOfRange`] naming `steepness` outside its range.
+    pub fn with_steepness(self, steepness: f64) -> Result<Self, WaveError> {
+        let steepness = check("steepness", steepness, (0.0..=MAX_STEEPNESS).contains(&steepness), "[0, 0.99]")?;
+        Ok(Self { steepness, ..self })
+    }
+
     /// Vertical radius `A` (m).
     pub fn amplitude(&self) -> f64 {
         self.amplitude
@@ -313,21 +322,21 @@ mod tests {
     }
 
     #[test]
-    fn max_slope_oracle() {
-        // Reference value (docs/equations.md): k = 1, A = 0.5 (Q = 0.5) ⇒ 0.577350; Q = 0.8 ⇒ 1.333333.
-        let w = Trochoid::new(0.5, 1.0, 0.0, 0.0, 0.0, 0.5).unwrap();
-        assert!((w.max_slope() - 0.577350).abs() < ORACLE_ABS);
-        let w = Trochoid::new(0.8, 1.0, 0.0, 0.0, 0.0, 0.8).unwrap();
-        assert!((w.max_slope() - 1.333333).abs() < ORACLE_ABS);
+    fn with_steepness_changes_the_steepness_alone_and_checks_it() {
+        let w = Trochoid::new(0.5, 1.0, 0.3, 3.1, 0.7, 0.2).unwrap();
+        assert_eq!(w.with_steepness(0.6).unwrap(), Trochoid::new(0.5, 1.0, 0.3, 3.1, 0.7, 0.6).unwrap());
+        assert!(w.with_steepness(0.995).is_err() && w.with_steepness(-0.1).is_err());
     }
 
     #[test]
-    fn mean_square_slope_oracle() {
-        // Reference value (docs/equations.md): k = 1, A = 0.5 (Q = 0.5) ⇒ 0.133975; Q = 0.8 ⇒ 0.4.
-        let w = Trochoid::new(0.5, 1.0, 0.0, 0.0, 0.0, 0.5).unwrap();
-        assert!((w.mean_square_slope() - 0.133975).abs() < ORACLE_ABS);
-        let w = Trochoid::new(0.8, 1.0, 0.0, 0.0, 0.0, 0.8).unwrap();
-        assert!((w.mean_square_slope() - 0.4).abs() < ORACLE_ABS);
+    fn slope_oracles() {
+        // Reference values (docs/equations.md), k = 1, A = Q: the largest slope and the mean-square
+        // slope, 0.577350 and 0.133975 at Q = 0.5, 1.333333 and 0.4 at Q = 0.8.
+        for (q, max_slope, mss) in [(0.5, 0.577350, 0.133975), (0.8, 1.333333, 0.4)] {
+            let w = Trochoid::new(q, 1.0, 0.0, 0.0, 0.0, q).unwrap();
+            assert!((w.max_slope() - max_slope).abs() < ORACLE_ABS, "max slope at Q = {q}");
+            assert!((w.mean_square_slope() - mss).abs() < ORACLE_ABS, "mean-square slope at Q = {q}");
+        }
     }
 
     #[test]

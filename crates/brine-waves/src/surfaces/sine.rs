@@ -403,13 +403,7 @@ impl SineField<'_> {
 }
 
 impl WaveSurface for SineSet {
-    fn height(&self, x: f64, z: f64, t: f64) -> f64 {
-        self.at_time(t).height(x, z)
-    }
-
-    fn gradient(&self, x: f64, z: f64, t: f64) -> DVec2 {
-        self.at_time(t).gradient(x, z)
-    }
+    by_frozen_field!(height -> f64, gradient -> DVec2, velocity -> DVec3);
 
     fn height_bounds(&self) -> (f64, f64) {
         (-self.total_amplitude, self.total_amplitude)
@@ -425,10 +419,6 @@ impl WaveSurface for SineSet {
 
     fn jacobian(&self, _x: f64, _z: f64, _t: f64) -> f64 {
         1.0
-    }
-
-    fn velocity(&self, x: f64, z: f64, t: f64) -> DVec3 {
-        self.at_time(t).velocity(x, z)
     }
 
     fn heights(&self, xs: &[f64], zs: &[f64], t: f64, out: &mut [f64]) {

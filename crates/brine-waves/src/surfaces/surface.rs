@@ -218,13 +218,7 @@ impl TrochoidSum {
 }
 
 impl WaveSurface for TrochoidSum {
-    fn height(&self, x: f64, z: f64, t: f64) -> f64 {
-        self.at_time(t).height(x, z)
-    }
-
-    fn gradient(&self, x: f64, z: f64, t: f64) -> DVec2 {
-        self.at_time(t).gradient(x, z)
-    }
+    by_frozen_field!(height -> f64, gradient -> DVec2, displacement -> DVec2, jacobian -> f64, velocity -> DVec3);
 
     fn height_bounds(&self) -> (f64, f64) {
         (-self.total_amplitude, self.total_amplitude)
@@ -232,18 +226,6 @@ impl WaveSurface for TrochoidSum {
 
     fn max_slope(&self) -> f64 {
         self.max_slope.iter().sum()
-    }
-
-    fn displacement(&self, x: f64, z: f64, t: f64) -> DVec2 {
-        self.at_time(t).displacement(x, z)
-    }
-
-    fn jacobian(&self, x: f64, z: f64, t: f64) -> f64 {
-        self.at_time(t).jacobian(x, z)
-    }
-
-    fn velocity(&self, x: f64, z: f64, t: f64) -> DVec3 {
-        self.at_time(t).velocity(x, z)
     }
 
     fn heights(&self, xs: &[f64], zs: &[f64], t: f64, out: &mut [f64]) {

@@ -3,9 +3,7 @@
 
 use std::cell::RefCell;
 
-use brine_trace::{
-    Aabb, Hit, LipschitzSum, RaySpan, Step, TierScratch, TraceOptions, TraceStats, certify_cone_with, trace_tiers_with,
-};
+use brine_trace::{Aabb, LipschitzSum, RaySpan, TierScratch};
 use glam::DVec3;
 
 use super::TracedTrochoids;
@@ -108,32 +106,8 @@ impl LipschitzSum for TracedTrochoids {
         Aabb::slab_y(-self.total_amplitude, self.total_amplitude)
     }
 
-    fn trace_tiered(
-        &self,
-        span: RaySpan<'_>,
-        options: &TraceOptions,
-        stats: &mut TraceStats,
-        log: Option<&mut Vec<Step>>,
-    ) -> Option<Hit> {
-        let RaySpan { ray, t_exit, .. } = span;
-        SCRATCH.with(|cell| {
-            let mut guard = cell.borrow_mut();
-            let (scratch, state) = &mut *guard;
-            let mut tiers = SeaTiers::new(self, state, ray, t_exit, options.footprint_angle, 0.0);
-            trace_tiers_with(scratch, &mut tiers, span, options, stats, log)
-        })
-    }
-
-    fn certify_cone(&self, span: RaySpan<'_>, half_angle: f64, options: &TraceOptions, stats: &mut TraceStats) -> f64 {
-        // With fading, a wave that fades for some ray of the cone before the cone's end is held at
-        // −A: a downward cone certifies only up to CONE_REACH times where it starts or meets the
-        // slab, so that the waves fading beyond are used whole; its children go on from there.
-        let span = cone_span(span, self.total_amplitude, options.footprint_angle);
-        SCRATCH.with(|cell| {
-            let mut guard = cell.borrow_mut();
-            let (scratch, state) = &mut *guard;
-            let mut tiers = SeaTiers::new(self, state, span.ray, span.t_exit, options.footprint_angle, half_angle);
-            certify_cone_with(scratch, &mut tiers, span, half_angle, options, stats)
-        })
-    }
+    // With fading, a wave that fades for some ray of the cone before the cone's end is held at
+    // −A: a downward cone certifies only up to CONE_REACH times where it starts or meets the
+    // slab, so that the waves fading beyond are used whole; its children go on from there.
+    tiered_fast_path!(SCRATCH, SeaTiers, |s: &TracedTrochoids| s.total_amplitude);
 }

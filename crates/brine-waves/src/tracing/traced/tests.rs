@@ -16,7 +16,7 @@ fn set(n: usize, q_max: f64, seed: u64) -> TrochoidSet {
         .enumerate()
         .map(|(i, w)| {
             let q = q_max * ((i * 37 + seed as usize) % 11) as f64 / 10.0;
-            Trochoid::new(w.amplitude(), w.wavenumber(), w.direction(), w.omega(), w.phase(), q).unwrap()
+            w.with_steepness(q).unwrap()
         })
         .collect();
     TrochoidSet::new(waves)
