@@ -64,6 +64,8 @@ impl Horizontal {
         let (x, y, z) = (ch * cd, sh * cd, sd);
         let x_hor = x * sp - z * cp;
         let z_hor = x * cp + z * sp;
+        // A unit vector's component: the clamp absorbs rounding only.
+        debug_assert!(z_hor.abs() <= 1.0 + 1e-12, "z_hor = {z_hor}");
         Self { altitude: z_hor.clamp(-1.0, 1.0).asin(), azimuth: rev(y.atan2(x_hor) + PI) }
     }
 

@@ -97,6 +97,8 @@ pub fn moon_position(t: Timestamp, observer: &Observer, options: &Options) -> Re
     let (ra, dec, r_topo) = spherical(topo);
     let mut h = Horizontal::from_equatorial(lst - ra, dec, observer.latitude());
     if let Some(air) = options.refraction {
+        // Refraction vanishes at the zenith: the `min` absorbs rounding only.
+        debug_assert!(h.altitude + air.refraction(h.altitude) <= std::f64::consts::FRAC_PI_2 + 1e-9);
         h.altitude = (h.altitude + air.refraction(h.altitude)).min(std::f64::consts::FRAC_PI_2);
     }
 
@@ -113,7 +115,7 @@ pub fn moon_position(t: Timestamp, observer: &Observer, options: &Options) -> Re
         topocentric_distance_km: r_topo * EARTH_EQUATORIAL_RADIUS_KM,
         elongation,
         phase_angle: i,
-        illuminated_fraction: (0.5 * (1.0 + i.cos())).clamp(0.0, 1.0),
+        illuminated_fraction: 0.5 * (1.0 + i.cos()),
     })
 }
 

@@ -93,6 +93,8 @@ pub fn sun_position(
         }
     };
     if let Some(air) = options.refraction {
+        // Refraction vanishes at the zenith: the `min` absorbs rounding only.
+        debug_assert!(h.altitude + air.refraction(h.altitude) <= std::f64::consts::FRAC_PI_2 + 1e-9);
         h.altitude = (h.altitude + air.refraction(h.altitude)).min(std::f64::consts::FRAC_PI_2);
     }
     Ok(SunPosition { altitude: h.altitude, azimuth: h.azimuth, distance_au: orbit.distance_au })

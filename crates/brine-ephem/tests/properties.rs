@@ -157,6 +157,10 @@ const TOPOCENTRIC_OFFSET_KM: f64 = 6_400.0;
 /// to 0.29° (perigee overhead, 350 000 km).
 const MOON_RADIUS_DEG: std::ops::Range<f64> = 0.24..0.29;
 
+/// The illuminated fraction from the phase angle against that from the elongation: the Sun's
+/// parallax seen from the Moon (`Δ_moon/Δ_sun ≤ 0.0027`) moves `k` by at most half of it.
+const ELONGATION_FRACTION: f64 = 0.0015;
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
 
@@ -182,7 +186,11 @@ proptest! {
         prop_assert!((0.0..std::f64::consts::TAU).contains(&m.azimuth));
         prop_assert!(MOON_DISTANCE_KM.contains(&m.distance_km), "Δ = {}", m.distance_km);
         prop_assert!((m.topocentric_distance_km - m.distance_km).abs() <= TOPOCENTRIC_OFFSET_KM);
-        prop_assert!((0.0..=1.0).contains(&m.illuminated_fraction));
+        // The illuminated fraction `(1 + cos i)/2` against the elongation ψ's `(1 − cos ψ)/2`
+        // (`i ≈ π − ψ` for a Sun at infinity; the Sun's finite distance moves `i` by up to
+        // Δ_moon/Δ_sun ≈ 0.0026 rad, so `k` by up to 0.0013).
+        let from_elongation = 0.5 * (1.0 - m.elongation.cos());
+        prop_assert!((m.illuminated_fraction - from_elongation).abs() < ELONGATION_FRACTION, "k = {}", m.illuminated_fraction);
         prop_assert!((0.0..=std::f64::consts::PI).contains(&m.phase_angle));
         prop_assert!(MOON_RADIUS_DEG.contains(&m.angular_radius().to_degrees()), "{}", m.angular_radius().to_degrees());
     }

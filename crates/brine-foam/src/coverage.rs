@@ -170,8 +170,10 @@ impl CoverageParams {
 ///
 /// `W = 3.84×10⁻⁶ U₁₀^3.41` (1980), `2.95×10⁻⁶ U₁₀^3.52` (1986, wind),
 /// `1.95×10⁻⁵ U₁₀^2.55 e^{0.0861 ΔT}` (1986, stability), or Darles' printed
-/// `1.59×10⁻⁵ U₁₀^2.55 e^{0.086 ΔT}`; `W = 0` below the onset wind, and `W ≤ 1` (the laws pass 1
-/// only beyond 38–60 m s⁻¹, far outside the 4–20 m s⁻¹ they were fitted on).
+/// `1.59×10⁻⁵ U₁₀^2.55 e^{0.086 ΔT}`; `W = 0` below the onset wind, and `W = min(law, 1)`: the
+/// whole sea white where a law passes 1, far outside the 4–20 m s⁻¹ they were fitted on — beyond
+/// 38.7 m s⁻¹ (1980), 37.2 m s⁻¹ (1986, wind), and for the stability laws beyond 25.5 m s⁻¹ at
+/// `ΔT = +30 °C` (27.7 as printed by Darles), 70 m s⁻¹ at `ΔT = 0` (past the 60 m s⁻¹ allowed).
 ///
 /// # Arguments
 /// - `params`: checked wind, law and onset ([`CoverageParams::new`]).

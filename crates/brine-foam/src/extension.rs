@@ -174,7 +174,11 @@ impl FoamExtension {
         }
         let FoamPoint { height, slope: [slope_x, slope_z], rest: [rest_x, rest_z], footprint_m } = *point;
         let nu = self.noise.value(rest_x, rest_z, footprint_m);
-        (coverage * nu * self.weight(height, slope_x, slope_z) / self.mean_weight).clamp(0.0, 1.0)
+        let s = coverage * nu * self.weight(height, slope_x, slope_z) / self.mean_weight;
+        // Non-negative and finite by construction; Darles' clamp to 1 is the model (a pixel is at
+        // most all foam), the one at 0 absorbs nothing.
+        debug_assert!(s >= 0.0 && s.is_finite(), "s′ = {s}");
+        s.clamp(0.0, 1.0)
     }
 }
 

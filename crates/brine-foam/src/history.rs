@@ -239,6 +239,9 @@ impl FoamHistory {
         if cover <= 0.0 || wsum <= 0.0 {
             return FoamState { cover: 0.0, brightness: 1.0, mean_age_s: 0.0 };
         }
+        // Amounts ≤ 1 and brightnesses e^{−a/τ_R} ≤ 1 weigh in: cover ≤ Σ w and bright ≤ cover but
+        // for rounding, which alone the clamps absorb.
+        debug_assert!(cover <= wsum * (1.0 + SUM_ROUNDING) && bright <= cover * (1.0 + SUM_ROUNDING));
         FoamState {
             cover: (cover / wsum).clamp(0.0, 1.0),
             brightness: (bright / cover).clamp(0.0, 1.0),
@@ -276,6 +279,9 @@ impl FoamHistory {
         libm::exp(0.5 * (lo + hi))
     }
 }
+
+/// Rounding of the history's weighted sums (a few dozen terms) relative to their size.
+const SUM_ROUNDING: f64 = 1e-12;
 
 #[cfg(test)]
 mod tests {

@@ -11,6 +11,9 @@ use crate::error::{FoamError, check};
 /// each octave into `[−1, 1]`.
 const PERLIN_2D_BOUND: f64 = std::f64::consts::FRAC_1_SQRT_2;
 
+/// Rounding of a noise value (a few flops of order one) past its bound.
+const NOISE_ROUNDING: f64 = 1e-12;
+
 /// `1/`[`PERLIN_2D_BOUND`]: a product instead of a division in every octave.
 const PERLIN_2D_SCALE: f64 = 1.0 / PERLIN_2D_BOUND;
 
@@ -271,6 +274,9 @@ impl FoamNoise {
             };
             sum += fade * down * self.gradient_noise(xs * up + sx, zs * up + sz, o);
         }
+        // Each octave is in [−1, 1] and weighs at most its weight: |sum| ≤ Σ wₒ, so the clamp
+        // absorbs rounding only.
+        debug_assert!(sum.abs() <= self.weight_sum * (1.0 + NOISE_ROUNDING), "sum {sum} of {}", self.weight_sum);
         (1.0 + self.amplitude * sum / self.weight_sum).clamp(1.0 - self.amplitude, 1.0 + self.amplitude)
     }
 
@@ -326,7 +332,10 @@ impl FoamNoise {
         let n11 = grad(h11, dx - 1.0, dz - 1.0);
         let a = n00 + u * (n10 - n00);
         let b = n01 + u * (n11 - n01);
-        ((a + v * (b - a)) * PERLIN_2D_SCALE).clamp(-1.0, 1.0)
+        let n = (a + v * (b - a)) * PERLIN_2D_SCALE;
+        // |n| ≤ √2/2 before the scale: the clamp absorbs rounding only.
+        debug_assert!(n.abs() <= 1.0 + NOISE_ROUNDING, "octave value {n}");
+        n.clamp(-1.0, 1.0)
     }
 }
 

@@ -49,13 +49,41 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
 
     #[test]
-    fn coverage_is_a_fraction_non_decreasing_in_wind(law in law(), u in 0.0f64..60.0, du in 0.0f64..20.0) {
+    fn coverage_is_the_law_up_to_a_white_sea_and_non_decreasing_in_wind(
+        law in law(),
+        u in 0.0f64..60.0,
+        du in 0.0f64..20.0,
+    ) {
         let w = |u: f64| whitecap_coverage(&CoverageParams::new(u.min(60.0), law, DARLES_ONSET_WIND_M_S).unwrap());
+        // The power laws written out here, unclamped: W is the law wherever the law is a fraction,
+        // and the whole sea (1) only where the law passes 1; `libm::pow` against `f64::powf` and
+        // one `exp` differ by a few ulps of each.
+        const POWER_LAW_ROUNDING: f64 = 1e-13;
+        let raw = |u: f64| match law {
+            WhitecapLaw::Monahan1980 => 3.84e-6 * u.powf(3.41),
+            WhitecapLaw::Monahan1986Wind => 2.95e-6 * u.powf(3.52),
+            WhitecapLaw::Monahan1986Stability { delta_t_c } => 1.95e-5 * u.powf(2.55) * (0.0861 * delta_t_c).exp(),
+            WhitecapLaw::Darles2007AsPrinted { delta_t_c } => 1.59e-5 * u.powf(2.55) * (0.086 * delta_t_c).exp(),
+        };
         let (a, b) = (w(u), w(u + du));
-        prop_assert!((0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b));
         prop_assert!(b >= a);
         if u < DARLES_ONSET_WIND_M_S {
             prop_assert!(a.abs() < f64::MIN_POSITIVE);
+        } else if raw(u) <= 1.0 {
+            prop_assert!((a / raw(u) - 1.0).abs() < POWER_LAW_ROUNDING, "{a} against the law's {}", raw(u));
+        } else {
+            prop_assert!((a - 1.0).abs() < f64::MIN_POSITIVE, "a white sea beyond the law's 1, got {a}");
+        }
+    }
+
+    /// Where each law passes 1 (the doc comment's figures): the 1980 and 1986 wind laws at 38.7
+    /// and 37.2 m/s, the stability law at 25.5 m/s with `ΔT = +30 °C`.
+    #[test]
+    fn the_laws_pass_one_only_far_outside_their_fit(eps in 0.01f64..0.1) {
+        let w = |u: f64, law| whitecap_coverage(&CoverageParams::new(u, law, DARLES_ONSET_WIND_M_S).unwrap());
+        let stable = WhitecapLaw::Monahan1986Stability { delta_t_c: 30.0 };
+        for (law, crossing) in [(WhitecapLaw::Monahan1980, 38.74), (WhitecapLaw::Monahan1986Wind, 37.25), (stable, 25.53)] {
+            prop_assert!(w(crossing - eps, law) < 1.0 && (w(crossing + eps, law) - 1.0).abs() < f64::MIN_POSITIVE);
         }
     }
 

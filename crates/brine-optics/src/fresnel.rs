@@ -36,8 +36,14 @@ pub fn fresnel_dielectric(cos_theta_i: f64, n_i: f64, n_t: f64) -> f64 {
     }
     let a = (g - c) / (g + c);
     let b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
-    (0.5 * a * a * (1.0 + b * b)).clamp(0.0, 1.0)
+    let r = 0.5 * a * a * (1.0 + b * b);
+    // The clamp absorbs rounding only: the formula is a fraction.
+    debug_assert!(r <= 1.0 + FRACTION_ROUNDING, "R = {r} at cos θ = {c}, n = {n}");
+    r.clamp(0.0, 1.0)
 }
+
+/// Rounding of the Fresnel formula's terms of order one, which may carry `R` past 1.
+const FRACTION_ROUNDING: f64 = 1e-12;
 
 /// Reflectance at normal incidence, `F₀ = ((n_i − n_t)/(n_i + n_t))²`.
 ///

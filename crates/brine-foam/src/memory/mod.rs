@@ -350,6 +350,8 @@ impl FoamMemory {
         let added = (1.0 - ww.white) * c;
         let white = ww.white + added;
         let brightness = if white > 0.0 { (ww.white * ww.brightness + added * w.brightness()) / white } else { 1.0 };
+        // A weighted mean of two brightnesses in [0, 1]: the clamp below absorbs rounding only.
+        debug_assert!(brightness <= ww.brightness.max(w.brightness()) + 1e-12, "brightness {brightness}");
         WhiteWater {
             active: ww.active,
             residual: 1.0 - (1.0 - ww.residual) * (1.0 - c),

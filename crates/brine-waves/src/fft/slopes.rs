@@ -73,7 +73,12 @@ impl FftSlopeFilter {
         for p in &self.cascades {
             let m = p.footprint_mean(x, z, footprint_m);
             g += DVec2::new(m[0], m[1]);
+            // Footprint means are convex combinations, so the covariance is a covariance (Jensen,
+            // Cauchy–Schwarz) but for the f32 storage, which alone the clamps absorb.
+            let tol = 1e-5 * (m[2].abs() + m[4].abs() + m[0] * m[0] + m[1] * m[1]) + 1e-12;
+            debug_assert!(m[2] - m[0] * m[0] >= -tol && m[4] - m[1] * m[1] >= -tol, "footprint moments {m:?}");
             let (xx, zz) = ((m[2] - m[0] * m[0]).max(0.0), (m[4] - m[1] * m[1]).max(0.0));
+            debug_assert!((m[3] - m[0] * m[1]).abs() <= (xx * zz).sqrt() + tol, "footprint moments {m:?}");
             let xz = (m[3] - m[0] * m[1]).clamp(-(xx * zz).sqrt(), (xx * zz).sqrt());
             cov += DVec3::new(xx, xz, zz);
         }

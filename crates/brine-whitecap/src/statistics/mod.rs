@@ -157,7 +157,6 @@ impl Quad {
         }
     }
 }
-
 impl Sums {
     #[inline]
     pub(crate) fn add(&mut self, t: &WaveTerm, w: f64) {
@@ -196,6 +195,13 @@ impl Sums {
         let h2 = self.h[0] * self.h[0] + self.h[1] * self.h[1];
         let h4 = self.h[2] * self.h[2] + self.h[3] * self.h[3];
         let pairs = (3.0 * self.w * self.w - 4.0 * h2 + h4) / 16.0;
+        // `G` is a Gram matrix and the pair term a variance: both ≥ 0 but for the rounding of
+        // the (possibly f32) sums, which alone the clamps absorb: a few hundred terms of ~6×10⁻⁸
+        // each, relative to their size, with margin.
+        const F32_SUMS_ROUNDING: f64 = 1e-4;
+        let diagonal = g[0] * m[0] * m[0] + g[3] * m[1] * m[1] + g[5] * m[2] * m[2];
+        debug_assert!(quad >= -F32_SUMS_ROUNDING * diagonal, "mᵀGm = {quad} (diagonal {diagonal})");
+        debug_assert!(pairs >= -F32_SUMS_ROUNDING * self.w * self.w, "pair variance {pairs}");
         (quad + pairs.max(0.0)).max(0.0)
     }
 }
