@@ -163,3 +163,42 @@ impl FftJacobianStatistics {
         Moments { mu, sigma2 }
     }
 }
+/// The footprint means of `J` alone, on rest grids: [`FftJacobianStatistics::from_rest_jacobians`]
+/// without the pyramid of `kᵢ²` — what a history of past instants reads (the foam memory asks
+/// only `μ` of the past), in half the memory. `μ` is the same to the bit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FftJacobianMeans {
+    /// Per cascade, the pyramid of `kᵢ`.
+    cascades: Vec<FftPyramid<1>>,
+}
+
+impl FftJacobianMeans {
+    /// The pyramids of `kᵢ = Jᵢ − 1 + 1/n` of rest-grid derivative fields, as
+    /// [`FftJacobianStatistics::from_rest_jacobians`].
+    ///
+    /// # Arguments
+    /// - `fields`: per cascade, the derivatives per unit choppiness.
+    /// - `choppiness`: `λ ≥ 0`.
+    ///
+    /// # References
+    /// Dupuy & Bruneton 2012 (mip-mapped `J`); Tessendorf 2001 (the choppy map).
+    pub fn from_rest_jacobians(fields: &[FftRestJacobian], choppiness: f64) -> Self {
+        let share = 1.0 / fields.len().max(1) as f64;
+        let cascades = fields
+            .iter()
+            .map(|f| {
+                let base = (0..f.dxx.len()).map(|i| [f.jacobian(i, choppiness) - 1.0 + share]).collect();
+                FftPyramid::new(f.resolution, f.tile_size / f.resolution as f64, base)
+            })
+            .collect();
+        Self { cascades }
+    }
+
+    /// `μ`, the mean of `J` over a Gaussian footprint of standard deviation `footprint_m` (m,
+    /// `≥ 0`) centred at `(x, z)`: [`FftJacobianStatistics::moments_at`]'s `μ`.
+    #[inline]
+    pub fn mean_at(&self, x: f64, z: f64, footprint_m: f64) -> f64 {
+        debug_assert!(footprint_m >= 0.0);
+        self.cascades.iter().map(|p| p.footprint_mean(x, z, footprint_m)[0]).fold(0.0, |mu, m| mu + m)
+    }
+}

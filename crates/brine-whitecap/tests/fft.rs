@@ -5,7 +5,7 @@
 use std::sync::OnceLock;
 
 use brine_waves::{Directions, Elfouhaily, FftFrame, FftOcean, FftOptions};
-use brine_whitecap::{CalibrationOptions, ErfMethod, FftCalibration, FftJacobianStatistics, Moments};
+use brine_whitecap::{CalibrationOptions, ErfMethod, FftCalibration, FftJacobianMeans, FftJacobianStatistics, Moments};
 use proptest::prelude::*;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -162,4 +162,27 @@ fn calibrated_coverage_holds_on_fresh_points_at_every_footprint() {
         FftCalibration::new(stats, 0.0, &CalibrationOptions { samples: Some(256), ..Default::default() }).unwrap();
     assert!(none.coverage(sea, 1.0, ErfMethod::Fast).abs() < ZERO_VARIANCE);
     assert!(FftCalibration::new(stats, 1.5, &CalibrationOptions::default()).is_err());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// The history's means of `J` (one pyramid per cascade, half the memory) are the statistics'
+    /// `μ` to the bit, at any point, footprint and breaking filter.
+    #[test]
+    fn jacobian_means_are_the_statistics_mean_to_the_bit(
+        x in -500.0f64..500.0,
+        z in -500.0f64..500.0,
+        footprint in 0.0f64..50.0,
+        breaking in 0.0f64..2.0,
+    ) {
+        let elf = Elfouhaily::from_fetch(14.0, 1e5).unwrap();
+        let d = elf.spreading(Directions::Downwind);
+        let o = FftOptions { resolution: 64, choppiness: 2.0, ..FftOptions::for_spectrum(&elf, 3) };
+        let fields = FftOcean::new(&elf, &d, &o).unwrap().rest_jacobian_fields(1.5, breaking);
+        let stats = FftJacobianStatistics::from_rest_jacobians(&fields, 2.0);
+        let means = FftJacobianMeans::from_rest_jacobians(&fields, 2.0);
+        let (mu, m) = (stats.moments_at(x, z, footprint).mu, means.mean_at(x, z, footprint));
+        prop_assert_eq!(mu.to_bits(), m.to_bits(), "{} vs {}", mu, m);
+    }
 }

@@ -18,8 +18,8 @@ use brine_waves::{
     TileLattice, Tma, TrochoidSet, TrochoidSum, fit_sea_state, seabed_relief,
 };
 use brine_whitecap::{
-    Calibration, CalibrationOptions, ErfMethod, FftBreaking, FftCalibration, FftJacobianStatistics, FootprintFilter,
-    JacobianStatistics, TrochoidBreaking, WhiteWaterModel, WhiteWaterOptions, whitecap_coverage,
+    Calibration, CalibrationOptions, ErfMethod, FftBreaking, FftCalibration, FftJacobianMeans, FftJacobianStatistics,
+    FootprintFilter, JacobianStatistics, TrochoidBreaking, WhiteWaterModel, WhiteWaterOptions, whitecap_coverage,
 };
 use glam::{DVec2, DVec3};
 use rayon::prelude::*;
@@ -537,12 +537,15 @@ impl World {
                     let chop = ocean.options().choppiness;
                     let stats_at =
                         |t: f64| FftJacobianStatistics::from_rest_jacobians(&ocean.rest_jacobian_fields(t, s_b), chop);
+                    // The past is read for its mean alone.
+                    let means_at =
+                        |t: f64| FftJacobianMeans::from_rest_jacobians(&ocean.rest_jacobian_fields(t, s_b), chop);
                     let breaking_at = |t: f64| {
-                        let past: Vec<(f64, FftJacobianStatistics)> = (0..memory.sample_count())
+                        let past: Vec<(f64, FftJacobianMeans)> = (0..memory.sample_count())
                             .into_par_iter()
                             .map(|j| {
                                 let tj = memory.instant(t, j).0;
-                                (tj, stats_at(tj))
+                                (tj, means_at(tj))
                             })
                             .collect();
                         FftBreaking::new(stats_at(t), past, s_b, ocean.jacobian_variance_removed(s_b, chop))
@@ -557,9 +560,14 @@ impl World {
                         seed: s.seed,
                         ..WhiteWaterOptions::default()
                     };
-                    let now = breaking_at(s.time_s);
+                    // A frame at the reference instant reads the sea it was calibrated on.
+                    let now = (s.time_s.to_bits() != FFT_CALIBRATION_TIME_S.to_bits()).then(|| breaking_at(s.time_s));
                     let calibrated = WhiteWaterModel::new(reference, memory, s_b, EDGE_SHARE, monahan, &options)?;
-                    WhiteWaterSea::Fft(calibrated.with_source(now).with_forward_face(forward).for_time(s.time_s))
+                    let model = match now {
+                        Some(now) => calibrated.with_source(now),
+                        None => calibrated,
+                    };
+                    WhiteWaterSea::Fft(model.with_forward_face(forward).for_time(s.time_s))
                 }
                 _ => {
                     let stats = JacobianStatistics::new(&set)?;

@@ -9,7 +9,7 @@ use rayon::prelude::*;
 
 pub use crate::breaking::{BREAKING_SPEED_SHARE, breaking_footprint, breaking_wavenumber_cut, forward_face_offset};
 use crate::error::{WhitecapError, check};
-use crate::fft_statistics::FftJacobianStatistics;
+use crate::fft_statistics::{FftJacobianMeans, FftJacobianStatistics};
 use crate::statistics::{FootprintFilter, HistoryRotation, HistoryStart, JacobianStatistics, Moments};
 
 /// The breaking variable of a sea: the footprint moments of its displacement Jacobian now and
@@ -131,17 +131,17 @@ impl BreakingSource for TrochoidBreaking {
 #[derive(Debug, Clone)]
 pub struct FftBreaking {
     now: FftJacobianStatistics,
-    past: Vec<(f64, FftJacobianStatistics)>,
+    past: Vec<(f64, FftJacobianMeans)>,
     breaking_footprint: f64,
     short_variance: f64,
 }
 
 impl FftBreaking {
-    /// The present statistics and those at past instants `(tⱼ, statistics)` (s), all filtered by
-    /// `breaking_footprint_m` (m), and the variance of `J` that filter removed.
+    /// The present statistics and the means of `J` at past instants `(tⱼ, means)` (s), all
+    /// filtered by `breaking_footprint_m` (m), and the variance of `J` that filter removed.
     pub fn new(
         now: FftJacobianStatistics,
-        past: Vec<(f64, FftJacobianStatistics)>,
+        past: Vec<(f64, FftJacobianMeans)>,
         breaking_footprint_m: f64,
         short_variance: f64,
     ) -> Self {
@@ -186,7 +186,7 @@ impl BreakingSource for FftBreaking {
                 .map(|f| f + j)
                 .filter(|&i| self.past.get(i).is_some_and(|(t, _)| (t - tj).abs() < SAME_INSTANT_S))
                 .or_else(|| self.past.iter().position(|(t, _)| (t - tj).abs() < SAME_INSTANT_S));
-            *o = stored.map_or(1.0, |i| self.past[i].1.moments_at(uj.x, uj.y, footprint_m).mu);
+            *o = stored.map_or(1.0, |i| self.past[i].1.mean_at(uj.x, uj.y, footprint_m));
         }
     }
 }
