@@ -16,7 +16,11 @@ pub fn from_polar(theta: f64, phi: f64) -> DVec3 {
 }
 
 /// The angle (degrees) between two (altitude, azimuth) positions given in degrees, by the
-/// haversine formula (`acos` of the dot product loses precision at small angles).
+/// haversine formula `2 asin √(sin²(Δh/2) + cos h₁ cos h₂ sin²(ΔA/2))` (`acos` of the dot product
+/// loses precision at small angles).
+///
+/// # References
+/// Sinnott R. W. 1984, "Virtues of the haversine", Sky and Telescope 68(2):159.
 pub fn separation_deg(alt1: f64, az1: f64, alt2: f64, az2: f64) -> f64 {
     let (a1, a2) = (alt1.to_radians(), alt2.to_radians());
     let h = ((a2 - a1) / 2.0).sin().powi(2) + a1.cos() * a2.cos() * ((az2 - az1).to_radians() / 2.0).sin().powi(2);

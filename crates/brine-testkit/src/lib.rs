@@ -11,6 +11,8 @@
 //! - [`check`]: a value against a reference within a named tolerance, with one message format.
 //! - [`strategies`] (feature `waves`): `proptest` strategies of random trochoid sets.
 //!
+//! Formulas, sources and limits: `docs/models/brine-testkit.md`.
+//!
 //! ```
 //! use brine_testkit::quadrature::simpson;
 //! let area = simpson(|x| x * x, 0.0, 3.0, 1);

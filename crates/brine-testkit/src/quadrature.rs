@@ -2,7 +2,10 @@
 
 /// Composite Simpson rule of `f` on `[a, b]` with `pairs ≥ 1` pairs of panels:
 /// `h/3 (f₀ + 4f₁ + 2f₂ + … + 4f₂ₙ₋₁ + f₂ₙ)`, `h = (b − a)/2n`; exact for cubics, error
-/// `O(h⁴)`.
+/// `O(h⁴)`. `a`, `b` in the unit of `f`'s argument; the result in that unit times `f`'s.
+///
+/// # References
+/// Abramowitz & Stegun 1964, 25.4.5.
 pub fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, pairs: usize) -> f64 {
     assert!(pairs >= 1, "Simpson's rule needs at least one pair of panels");
     let n = 2 * pairs;
