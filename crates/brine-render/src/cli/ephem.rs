@@ -35,7 +35,12 @@ pub struct PlaceArgs {
 }
 
 impl PlaceArgs {
-    fn resolve(&self) -> Result<(brine_ephem::Timestamp, Observer, Options), CliError> {
+    /// The instant, the observer and the options these arguments name (the Python bindings
+    /// read the place and the options from here, and the instants from their arrays).
+    ///
+    /// # Errors
+    /// [`CliError::Input`] for a bad place, time or refraction setting.
+    pub fn resolve(&self) -> Result<(brine_ephem::Timestamp, Observer, Options), CliError> {
         let input = |e: brine_ephem::EphemError| CliError::Input(e.to_string());
         let t = parse_utc(&self.time).map_err(input)?;
         let o = Observer::from_degrees(self.lat, self.lon, self.height_m).map_err(input)?;
@@ -57,6 +62,16 @@ pub enum SunModelArg {
     Schlyter,
 }
 
+impl SunModelArg {
+    /// The brine-ephem model.
+    pub fn model(self) -> SunModel {
+        match self {
+            SunModelArg::Spa => SunModel::Spa,
+            SunModelArg::Schlyter => SunModel::Schlyter,
+        }
+    }
+}
+
 /// Arguments of `brine sun`.
 #[derive(Debug, Clone, clap::Args)]
 pub struct SunArgs {
@@ -74,10 +89,7 @@ pub struct SunArgs {
 /// [`CliError::Input`] for a bad place, time or refraction setting.
 pub fn run_sun(args: &SunArgs) -> Result<(), CliError> {
     let (t, o, opts) = args.place.resolve()?;
-    let model = match args.model {
-        SunModelArg::Spa => SunModel::Spa,
-        SunModelArg::Schlyter => SunModel::Schlyter,
-    };
+    let model = args.model.model();
     let p = sun_position(t, &o, model, &opts).map_err(|e| CliError::Input(e.to_string()))?;
     let (alt, az) = (p.altitude.to_degrees(), p.azimuth.to_degrees());
     if args.place.json {

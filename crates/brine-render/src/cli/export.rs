@@ -224,6 +224,22 @@ pub struct BakeArgs {
     pub quiet: bool,
 }
 
+/// The tile of a bake when none is given (m): the FFT sea's largest cascade, else the longest
+/// wave rounded up to a metre (at least 10 m).
+///
+/// # Errors
+/// [`CliError::Input`] if the scene's world cannot be built.
+pub fn default_tile_m(scene: &Scene) -> Result<f64, CliError> {
+    let plain = world_of(scene, None)?;
+    Ok(match &plain.ocean {
+        brine_waves::Ocean::Fft { ocean } => ocean.options().tile_sizes[0],
+        o => {
+            let longest = o.waves().map_or(0.0, |s| s.waves().iter().map(|w| w.wavelength()).fold(0.0, f64::max));
+            longest.max(10.0).ceil()
+        }
+    })
+}
+
 /// Runs `brine bake`.
 ///
 /// # Errors
@@ -233,17 +249,7 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
     // The tile: given, or from the sea itself.
     let tile_m = match args.tile_m {
         Some(t) => t,
-        None => {
-            let plain = world_of(&scene, None)?;
-            match &plain.ocean {
-                brine_waves::Ocean::Fft { ocean } => ocean.options().tile_sizes[0],
-                o => {
-                    let longest =
-                        o.waves().map_or(0.0, |s| s.waves().iter().map(|w| w.wavelength()).fold(0.0, f64::max));
-                    longest.max(10.0).ceil()
-                }
-            }
-        }
+        None => default_tile_m(&scene)?,
     };
     let options = BakeOptions { size: args.size, tile_m, up: args.up };
     options.check().map_err(CliError::Input)?;

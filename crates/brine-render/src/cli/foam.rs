@@ -51,7 +51,10 @@ pub struct FoamArgs {
 }
 
 /// The law named by the arguments.
-fn law_of(args: &FoamArgs) -> Result<WhitecapLaw, CliError> {
+///
+/// # Errors
+/// [`CliError::Input`] for temperatures out of range or a law without its temperatures.
+pub fn law_of(args: &FoamArgs) -> Result<WhitecapLaw, CliError> {
     let input = |e: brine_foam::FoamError| CliError::Input(e.to_string());
     let delta_t = match (args.t_water_c, args.t_air_c) {
         (Some(tw), Some(ta)) => match WhitecapLaw::monahan_1986_from_temperatures(tw, ta).map_err(input)? {

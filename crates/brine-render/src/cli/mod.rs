@@ -90,15 +90,17 @@ fn replace_word(text: &str, word: &str, by: &str) -> String {
     out + rest
 }
 
-mod ephem;
-mod export;
-mod foam;
-mod optics;
-mod render;
-mod sky;
-mod texture;
-mod waves;
-mod whitecap;
+// The subcommands' arguments and builders are public: the Python bindings parse their keyword
+// arguments with them, so that defaults, ranges and messages are the command line's.
+pub mod ephem;
+pub mod export;
+pub mod foam;
+pub mod optics;
+pub mod render;
+pub mod sky;
+pub mod texture;
+pub mod waves;
+pub mod whitecap;
 
 /// A command-line failure, with the exit code it maps to.
 #[derive(Debug, thiserror::Error)]

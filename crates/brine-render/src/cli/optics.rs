@@ -28,7 +28,7 @@ pub enum OpticsCommand {
 }
 
 /// Arguments of `brine optics fresnel`.
-#[derive(Debug, clap::Args)]
+#[derive(Debug, Clone, clap::Args)]
 pub struct FresnelArgs {
     /// Index of the medium the light comes from (1.0 for air).
     #[arg(long, value_parser = super::finite)]
@@ -62,15 +62,23 @@ pub struct WaterArgs {
     pub json: bool,
 }
 
+/// The answer of `brine optics fresnel`.
 #[derive(Debug, Serialize)]
-struct FresnelOut {
-    n1: f64,
-    n2: f64,
-    cos_theta: f64,
-    reflectance: f64,
-    transmittance: f64,
-    schlick: f64,
-    total_internal_reflection: bool,
+pub struct FresnelOut {
+    /// Refractive index of the incident medium.
+    pub n1: f64,
+    /// Refractive index of the transmitting medium.
+    pub n2: f64,
+    /// Cosine of the angle of incidence.
+    pub cos_theta: f64,
+    /// Unpolarised Fresnel reflectance.
+    pub reflectance: f64,
+    /// `1 − reflectance`.
+    pub transmittance: f64,
+    /// Schlick's approximation of the reflectance.
+    pub schlick: f64,
+    /// Whether the incidence is beyond the critical angle.
+    pub total_internal_reflection: bool,
 }
 
 #[derive(Debug, Serialize)]
@@ -108,7 +116,11 @@ pub fn run_optics(args: &OpticsArgs) -> Result<(), CliError> {
     }
 }
 
-fn run_fresnel(a: &FresnelArgs) -> Result<(), CliError> {
+/// The Fresnel answer for `a`, its indices and angle checked.
+///
+/// # Errors
+/// [`CliError::Input`] for an index or a cosine out of range.
+pub fn fresnel_of(a: &FresnelArgs) -> Result<FresnelOut, CliError> {
     for (name, n) in [("--n1", a.n1), ("--n2", a.n2)] {
         if !(n.is_finite() && (0.1..=10.0).contains(&n)) {
             return Err(CliError::Input(format!("{name} = {n} is out of range: expected [0.1, 10]")));
@@ -128,6 +140,12 @@ fn run_fresnel(a: &FresnelArgs) -> Result<(), CliError> {
         schlick: fresnel_schlick(a.cos_theta, a.n1, a.n2),
         total_internal_reflection: tir,
     };
+    Ok(out)
+}
+
+fn run_fresnel(a: &FresnelArgs) -> Result<(), CliError> {
+    let out = fresnel_of(a)?;
+    let tir = out.total_internal_reflection;
     if a.json {
         print_json(&out)
     } else {
@@ -181,15 +199,23 @@ fn parse_wavelengths(spec: &str) -> Result<Vec<f64>, CliError> {
     Ok(values)
 }
 
-fn run_water(a: &WaterArgs) -> Result<(), CliError> {
-    let (body, name) = match (&a.water_type, a.chlorophyll_mg_m3) {
+/// The water body `a` names, and its name.
+///
+/// # Errors
+/// [`CliError::Input`] for an unknown type, a concentration out of range, or neither or both.
+pub fn water_body(a: &WaterArgs) -> Result<(WaterBody, String), CliError> {
+    Ok(match (&a.water_type, a.chlorophyll_mg_m3) {
         (Some(t), None) => {
             let t: JerlovType = t.parse().map_err(input)?;
             (WaterBody::jerlov(t), format!("Jerlov {t}"))
         }
         (None, Some(c)) => (WaterBody::case1(c).map_err(input)?, format!("Case-1, C = {c} mg/m3")),
         _ => return Err(CliError::Input("give exactly one of --type and --chlorophyll-mg-m3".to_owned())),
-    };
+    })
+}
+
+fn run_water(a: &WaterArgs) -> Result<(), CliError> {
+    let (body, name) = water_body(a)?;
     let wavelength_nm = parse_wavelengths(&a.wavelength_nm)?;
     let iops: Vec<_> = wavelength_nm.iter().map(|&l| body.iops(l)).collect();
     let out = WaterOut {

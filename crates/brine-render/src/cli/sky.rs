@@ -83,25 +83,16 @@ pub enum ModelArg {
 }
 
 /// Unit vector of a compass bearing and an elevation, in degrees (y up, x east, z south).
-fn direction(elevation_deg: f64, azimuth_deg: f64) -> DVec3 {
+pub fn direction(elevation_deg: f64, azimuth_deg: f64) -> DVec3 {
     let (e, a) = (elevation_deg.to_radians(), azimuth_deg.to_radians());
     DVec3::new(a.sin() * e.cos(), e.sin(), -a.cos() * e.cos())
 }
 
-/// Runs `brine sky`.
+/// The sky `args` describe (sun, moon, clouds, model).
 ///
 /// # Errors
-/// [`CliError::Input`] for a parameter out of range or a missing output; [`CliError::Failure`]
-/// if the image cannot be written.
-pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
-    let input = |m: String| CliError::Input(m);
-    if !args.json && args.out.is_none() {
-        return Err(input("nothing to do: give --json and/or --out FILE".to_string()));
-    }
-    if let Some(path) = &args.out {
-        crate::output::OutputFormat::from_path(path).map_err(|m| input(m.replacen("output.path", "--out", 1)))?;
-        crate::output::check_writable(path).map_err(|m| input(format!("--out: {m}")))?;
-    }
+/// [`CliError::Input`] for a parameter out of range.
+pub fn sky_of(args: &SkyArgs) -> Result<Sky, CliError> {
     let moon = match (args.moon_elevation_deg, args.moon_azimuth_deg) {
         (Some(e), Some(a)) => Some(MoonParams {
             direction: direction(e, a),
@@ -126,7 +117,24 @@ pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
         },
         ..SkyParams::new(args.turbidity, direction(args.sun_elevation_deg, args.sun_azimuth_deg))
     };
-    let sky = Sky::new(&params).map_err(|e| input(e.to_string()))?;
+    Sky::new(&params).map_err(|e| CliError::Input(e.to_string()))
+}
+
+/// Runs `brine sky`.
+///
+/// # Errors
+/// [`CliError::Input`] for a parameter out of range or a missing output; [`CliError::Failure`]
+/// if the image cannot be written.
+pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
+    let input = |m: String| CliError::Input(m);
+    if !args.json && args.out.is_none() {
+        return Err(input("nothing to do: give --json and/or --out FILE".to_string()));
+    }
+    if let Some(path) = &args.out {
+        crate::output::OutputFormat::from_path(path).map_err(|m| input(m.replacen("output.path", "--out", 1)))?;
+        crate::output::check_writable(path).map_err(|m| input(format!("--out: {m}")))?;
+    }
+    let sky = sky_of(args)?;
 
     if args.json {
         let v = direction(args.view_elevation_deg, args.view_azimuth_deg);

@@ -53,7 +53,10 @@ pub struct SpectrumParams {
 
 impl SpectrumParams {
     /// Builds the spectrum, rejecting options that do not apply to the model.
-    fn build(&self) -> Result<Box<dyn Spectrum>, CliError> {
+    ///
+    /// # Errors
+    /// [`CliError::Input`] for a parameter out of range or an option that does not apply.
+    pub fn build(&self) -> Result<Box<dyn Spectrum>, CliError> {
         let input = |e: brine_waves::WaveError| CliError::Input(e.to_string());
         let only = |flag: &str, models: &str| CliError::Input(format!("--{flag} applies to {models} only"));
         use SpectrumModel as M;
@@ -88,7 +91,8 @@ impl SpectrumParams {
         })
     }
 
-    fn model_name(&self) -> &'static str {
+    /// The model's name as typed.
+    pub fn model_name(&self) -> &'static str {
         match self.model {
             SpectrumModel::Pm => "pm",
             SpectrumModel::Jonswap => "jonswap",
@@ -262,12 +266,13 @@ pub struct FitArgs {
     pub json: bool,
 }
 
-/// Fits the set described by `args`.
-fn fit_set(args: &FitArgs) -> Result<(Box<dyn Spectrum>, TrochoidSet), CliError> {
+/// The directional spreading `args` name, for a spectrum of peak `wp` (rad/s).
+///
+/// # Errors
+/// [`CliError::Input`] for a parameter out of range.
+pub fn spreading_of(args: &FitArgs, wp: f64) -> Result<Box<dyn Spreading>, CliError> {
     let input = |e: brine_waves::WaveError| CliError::Input(e.to_string());
-    let s = args.spectrum.build()?;
-    let wp = s.peak_omega();
-    let spreading: Box<dyn Spreading> = match args.spreading {
+    Ok(match args.spreading {
         SpreadingModel::Hasselmann => Box::new(CosineTwoS::hasselmann(wp).map_err(input)?),
         SpreadingModel::Mitsuyasu => Box::new(CosineTwoS::mitsuyasu(wp, args.spectrum.u10).map_err(input)?),
         SpreadingModel::DonelanBanner => Box::new(DonelanBanner::new(wp).map_err(input)?),
@@ -280,7 +285,17 @@ fn fit_set(args: &FitArgs) -> Result<(Box<dyn Spectrum>, TrochoidSet), CliError>
             .map_err(input)?;
             Box::new(e.spreading(Directions::Downwind))
         }
-    };
+    })
+}
+
+/// Fits the set described by `args`.
+///
+/// # Errors
+/// [`CliError::Input`] for a parameter out of range or an option that does not apply.
+pub fn fit_set(args: &FitArgs) -> Result<(Box<dyn Spectrum>, TrochoidSet), CliError> {
+    let input = |e: brine_waves::WaveError| CliError::Input(e.to_string());
+    let s = args.spectrum.build()?;
+    let spreading = spreading_of(args, s.peak_omega())?;
     if !args.wind_direction_deg.is_finite() {
         return Err(CliError::Input(format!(
             "--wind-direction-deg = {} is out of range: expected a finite angle in degrees",

@@ -1,0 +1,244 @@
+//! `brine.Scene`: a scene from TOML text or a dict, rendered to arrays, queried at points and
+//! baked to maps — the same code as `brine render`, `brine query` and `brine bake`.
+
+use std::sync::OnceLock;
+
+use brine_render::export::{BakeOptions, QueryPoint, UpAxis, bake_frame, query_points};
+use brine_render::{RenderOptions, World};
+use numpy::{IntoPyArray, PyArrayMethods, PyReadonlyArray1};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::bad;
+
+/// A checked scene (the TOML keys of docs/scene.md), with its sea built on first use.
+#[pyclass(frozen, module = "brine._brine")]
+pub(crate) struct Scene {
+    scene: brine_render::Scene,
+    toml: String,
+    world: OnceLock<World>,
+}
+
+/// A scene error as a Python exception: file, line and key, as the command line prints it.
+fn scene_err(e: impl std::fmt::Display) -> PyErr {
+    bad(e.to_string())
+}
+
+impl Scene {
+    fn new(scene: brine_render::Scene, toml: String) -> Self {
+        Self { scene, toml, world: OnceLock::new() }
+    }
+
+    /// The world of the scene at its own time, built once.
+    fn world(&self, py: Python<'_>) -> PyResult<&World> {
+        if let Some(w) = self.world.get() {
+            return Ok(w);
+        }
+        let built = py.detach(|| World::new(&self.scene)).map_err(scene_err)?;
+        Ok(self.world.get_or_init(|| built))
+    }
+}
+
+/// Rows of `n` values per pixel as an array of shape `(height, width, n)` (or `(height, width)`).
+fn image<'py>(py: Python<'py>, flat: Vec<f32>, h: usize, w: usize, n: usize) -> PyResult<Bound<'py, PyAny>> {
+    let a = flat.into_pyarray(py);
+    Ok(if n == 1 { a.reshape([h, w])?.into_any() } else { a.reshape([h, w, n])?.into_any() })
+}
+
+#[pymethods]
+impl Scene {
+    /// A scene from TOML text (the format of `brine render SCENE`); without text, the embedded
+    /// default scene. `name` names the text in error messages.
+    #[new]
+    #[pyo3(signature = (toml = None, name = "<string>"))]
+    fn py_new(toml: Option<&str>, name: &str) -> PyResult<Self> {
+        match toml {
+            None => Ok(Self::new(brine_render::Scene::default_scene(), String::new())),
+            Some(text) => {
+                let scene = brine_render::Scene::from_toml_str(text, name).map_err(scene_err)?;
+                Ok(Self::new(scene, text.to_owned()))
+            }
+        }
+    }
+
+    /// A scene from a dict of tables (`{"sea": {"wind_speed_m_s": 16}, "camera": {...}}`): the
+    /// keys not given take their defaults, as in a TOML file.
+    #[staticmethod]
+    fn from_dict(d: &Bound<'_, PyDict>) -> PyResult<Self> {
+        let table: toml::Table = pythonize::depythonize(d.as_any())
+            .map_err(|e| bad(format!("the scene dict is not a table of TOML values: {e}")))?;
+        let text =
+            toml::to_string(&table).map_err(|e| bad(format!("the scene dict cannot be written as TOML: {e}")))?;
+        let scene = brine_render::Scene::from_toml_str(&text, "<dict>").map_err(scene_err)?;
+        Ok(Self::new(scene, text))
+    }
+
+    /// A scene read from a TOML file.
+    #[staticmethod]
+    fn load(path: std::path::PathBuf) -> PyResult<Self> {
+        let scene = brine_render::Scene::load(&path).map_err(scene_err)?;
+        let text = std::fs::read_to_string(&path).unwrap_or_default();
+        Ok(Self::new(scene, text))
+    }
+
+    /// The TOML text the scene was made from (empty for the default scene).
+    #[getter]
+    fn toml(&self) -> &str {
+        &self.toml
+    }
+
+    /// `(width, height)` of the camera's image (pixels).
+    #[getter]
+    fn size(&self) -> (u32, u32) {
+        (self.scene.camera.width, self.scene.camera.height)
+    }
+
+    /// The scene's time (s), where queries and bakes default.
+    #[getter]
+    fn time_s(&self) -> f64 {
+        self.scene.sea.time_s
+    }
+
+    /// Renders the scene as `brine render` does, with Python's lock released.
+    ///
+    /// `threads`: worker threads (`None`: every core; the image does not depend on it);
+    /// `reference`: the reference rendering (nothing filtered by the pixel footprint).
+    ///
+    /// Returns a dict: `rgb` (float32, `(height, width, 3)`, linear sRGB radiance in kcd m⁻²),
+    /// `depth` (m, infinite for the sky), `normal` (`(height, width, 3)`), `foam`, `whitecap`,
+    /// `glint` (sr⁻¹), and `exposure_ev`, the exposure the command line would display it with.
+    #[pyo3(signature = (threads = None, reference = false))]
+    fn render<'py>(&self, py: Python<'py>, threads: Option<usize>, reference: bool) -> PyResult<Bound<'py, PyDict>> {
+        if threads == Some(0) {
+            return Err(bad("threads = 0 is out of range: expected at least 1 (or None for every core)"));
+        }
+        let options = RenderOptions { threads, profile: false, reference };
+        let frame = py
+            .detach(|| brine_render::render(&self.scene, &options, &|| {}))
+            .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
+        let (w, h) = (frame.width as usize, frame.height as usize);
+        let d = PyDict::new(py);
+        let rgb: Vec<f32> = frame.pixels.iter().flat_map(|p| p.as_vec3().to_array()).collect();
+        d.set_item("rgb", image(py, rgb, h, w, 3)?)?;
+        let a = &frame.aovs;
+        d.set_item("depth", image(py, a.iter().map(|v| v.depth).collect(), h, w, 1)?)?;
+        d.set_item("normal", image(py, a.iter().flat_map(|v| v.normal).collect(), h, w, 3)?)?;
+        d.set_item("foam", image(py, a.iter().map(|v| v.foam).collect(), h, w, 1)?)?;
+        d.set_item("whitecap", image(py, a.iter().map(|v| v.whitecap).collect(), h, w, 1)?)?;
+        d.set_item("glint", image(py, a.iter().map(|v| v.glint).collect(), h, w, 1)?)?;
+        d.set_item("exposure_ev", frame.exposure_ev)?;
+        Ok(d)
+    }
+
+    /// The rendered surface at points `(x, z)` (m, east and south) and times `t` (s, the scene's
+    /// clock; `None`: the scene's time), as `brine query`: arrays of one length.
+    ///
+    /// Returns a dict of arrays: `height_m`, `normal` (`(n, 3)`), `displacement_m` (`(n, 2)`),
+    /// `velocity_m_s` (`(n, 3)`), `vertical_acceleration_m_s2`, `jacobian`, `foam`, `whitecap`.
+    #[pyo3(signature = (x, z, t = None))]
+    fn query<'py>(
+        &self,
+        py: Python<'py>,
+        x: PyReadonlyArray1<'py, f64>,
+        z: PyReadonlyArray1<'py, f64>,
+        t: Option<PyReadonlyArray1<'py, f64>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let (xs, zs) = (x.as_slice()?, z.as_slice()?);
+        let ts: Option<&[f64]> = match &t {
+            Some(a) => Some(a.as_slice()?),
+            None => None,
+        };
+        if xs.len() != zs.len() || ts.is_some_and(|t| t.len() != xs.len()) {
+            return Err(bad("x, z and t must have one length"));
+        }
+        let t0 = self.scene.sea.time_s;
+        let mut points = Vec::with_capacity(xs.len());
+        for i in 0..xs.len() {
+            let p = QueryPoint { x: xs[i], z: zs[i], t: ts.map_or(t0, |t| t[i]) };
+            if !(p.x.is_finite() && p.z.is_finite() && p.t.is_finite()) {
+                return Err(bad(format!(
+                    "point {i} = ({}, {}, {}): expected finite x, z (m) and t (s)",
+                    p.x, p.z, p.t
+                )));
+            }
+            points.push(p);
+        }
+        let world = self.world(py)?;
+        let r = py.detach(|| query_points(&self.scene, world, &points)).map_err(scene_err)?;
+        let d = PyDict::new(py);
+        let n = r.len();
+        let col = |f: &dyn Fn(&brine_render::export::QueryResult) -> f64| -> Vec<f64> { r.iter().map(f).collect() };
+        let rows = |v: Vec<f64>, k: usize| -> PyResult<Bound<'py, PyAny>> {
+            Ok(v.into_pyarray(py).reshape([n, k])?.into_any())
+        };
+        d.set_item("height_m", col(&|q| q.height_m).into_pyarray(py))?;
+        d.set_item("normal", rows(r.iter().flat_map(|q| q.normal).collect(), 3)?)?;
+        d.set_item("displacement_m", rows(r.iter().flat_map(|q| q.displacement_m).collect(), 2)?)?;
+        d.set_item("velocity_m_s", rows(r.iter().flat_map(|q| q.velocity_m_s).collect(), 3)?)?;
+        d.set_item("vertical_acceleration_m_s2", col(&|q| q.vertical_acceleration_m_s2).into_pyarray(py))?;
+        d.set_item("jacobian", col(&|q| q.jacobian).into_pyarray(py))?;
+        d.set_item("foam", col(&|q| q.foam).into_pyarray(py))?;
+        d.set_item("whitecap", col(&|q| q.whitecap).into_pyarray(py))?;
+        Ok(d)
+    }
+
+    /// Tileable maps of the sea over a square tile at time `t`, as `brine bake` writes them.
+    ///
+    /// `size`: texels per side, [2, 16384]; `tile_m`: side of the tile (m; `None`: the sea's
+    /// own, as `brine bake`); `t`: time (s; `None`: the scene's); `up`: `"y"` (Brine, glTF,
+    /// Houdini, Unity) or `"z"` (Blender) for the vector maps.
+    ///
+    /// Returns a dict of float32 arrays, row `j` at `z = j·tile/size`: `displacement`
+    /// (`(size, size, 3)`, m), `normal`, `foam`, `whitecap`, `jacobian`, `spray` (the minor
+    /// eigenvector and its eigenvalue); and `tile_m`, `time_s`.
+    #[pyo3(signature = (size = 512, tile_m = None, t = None, up = "y"))]
+    fn bake<'py>(
+        &self,
+        py: Python<'py>,
+        size: usize,
+        tile_m: Option<f64>,
+        t: Option<f64>,
+        up: &str,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let up = match up {
+            "y" | "Y" => UpAxis::Y,
+            "z" | "Z" => UpAxis::Z,
+            other => return Err(bad(format!("up = {other:?}: expected \"y\" or \"z\""))),
+        };
+        let tile_m = match tile_m {
+            Some(v) => v,
+            None => brine_render::cli::export::default_tile_m(&self.scene).map_err(crate::py_err)?,
+        };
+        let options = BakeOptions { size, tile_m, up };
+        options.check().map_err(|m| bad(m.replace("--size", "size").replace("--tile-m", "tile_m")))?;
+        let t = t.unwrap_or(self.scene.sea.time_s);
+        if !t.is_finite() {
+            return Err(bad(format!("t = {t}: expected a finite time (s)")));
+        }
+        let lattice = brine_waves::TileLattice::new(tile_m, None).map_err(scene_err)?;
+        let mut scene = self.scene.clone();
+        if matches!(scene.sea.surface, brine_render::scene::SurfaceKind::Fft) {
+            // The FFT sea's white water belongs to its frame: the world is built at `t`.
+            scene.sea.time_s = t;
+        }
+        let frame = py
+            .detach(|| World::on_lattice(&scene, Some(&lattice)).map(|w| bake_frame(&w, t, &options)))
+            .map_err(scene_err)?;
+        let n = frame.size;
+        let m = frame.maps;
+        let grid3 = |v: Vec<[f32; 3]>| -> PyResult<Bound<'py, PyAny>> {
+            Ok(v.into_iter().flatten().collect::<Vec<f32>>().into_pyarray(py).reshape([n, n, 3])?.into_any())
+        };
+        let grid1 = |v: Vec<f32>| -> PyResult<Bound<'py, PyAny>> { Ok(v.into_pyarray(py).reshape([n, n])?.into_any()) };
+        let d = PyDict::new(py);
+        d.set_item("displacement", grid3(m.displacement)?)?;
+        d.set_item("normal", grid3(m.normal)?)?;
+        d.set_item("foam", grid1(m.foam)?)?;
+        d.set_item("whitecap", grid1(m.whitecap)?)?;
+        d.set_item("jacobian", grid1(m.jacobian)?)?;
+        d.set_item("spray", grid3(m.spray)?)?;
+        d.set_item("tile_m", tile_m)?;
+        d.set_item("time_s", frame.time)?;
+        Ok(d)
+    }
+}

@@ -1,0 +1,98 @@
+"""Scenes from Python: rendered, queried and baked by the same code as `brine render`, `query`
+and `bake`."""
+
+import numpy as np
+import pytest
+
+import brine
+
+SMALL = {"camera": {"width": 48, "height": 27}, "sea": {"wind_speed_m_s": 12.0}}
+
+
+@pytest.fixture(scope="module")
+def scene():
+    return brine.Scene.from_dict(SMALL)
+
+
+@pytest.fixture(scope="module")
+def frame(scene):
+    return scene.render()
+
+
+def test_a_render_is_the_cli_render(scene, frame, brine_cli, tmp_path_factory):
+    openexr = pytest.importorskip("OpenEXR")
+    d = tmp_path_factory.mktemp("render")
+    toml = d / "scene.toml"
+    toml.write_text("[camera]\nwidth = 48\nheight = 27\n[sea]\nwind_speed_m_s = 12.0\n")
+    exr = d / "out.exr"
+    import subprocess
+
+    subprocess.run([str(brine_cli.path), "render", str(toml), "-o", str(exr), "-q"], check=True)
+    channels = openexr.File(str(exr)).channels()
+    if "RGB" in channels:
+        cli = channels["RGB"].pixels
+    else:
+        cli = np.stack([channels[c].pixels for c in "RGB"], axis=-1)
+    assert frame["rgb"].shape == (27, 48, 3) and frame["rgb"].dtype == np.float32
+    np.testing.assert_array_equal(frame["rgb"], cli)
+
+
+def test_renders_are_the_same_at_any_thread_count_and_from_toml(scene, frame):
+    one = scene.render(threads=1)
+    np.testing.assert_array_equal(one["rgb"], frame["rgb"])
+    from_text = brine.Scene("[camera]\nwidth = 48\nheight = 27\n[sea]\nwind_speed_m_s = 12.0\n")
+    np.testing.assert_array_equal(from_text.render()["rgb"], frame["rgb"])
+
+
+def test_the_aovs_describe_sea_and_sky(frame):
+    depth = frame["depth"]
+    assert np.isinf(depth[0]).all(), "the top row is sky"
+    assert np.isfinite(depth[-1]).all() and (depth[-1] > 0).all(), "the bottom row is sea"
+    n = frame["normal"][-1]
+    np.testing.assert_allclose(np.linalg.norm(n, axis=-1), 1.0, atol=1e-5)
+    assert (frame["rgb"] >= 0).all() and np.isfinite(frame["exposure_ev"])
+
+
+def test_queries_equal_the_cli(scene, brine_cli, tmp_path):
+    toml = tmp_path / "scene.toml"
+    toml.write_text("[camera]\nwidth = 48\nheight = 27\n[sea]\nwind_speed_m_s = 12.0\n")
+    pts = [(0.0, 40.0, None), (12.5, -3.0, 2.0), (-80.0, 300.0, 7.25)]
+    spec = ";".join(f"{x},{z}" + ("" if t is None else f",{t}") for x, z, t in pts)
+    cli = brine_cli("query", str(toml), "--points", spec, "--format", "json")
+    t = [scene.time_s if t is None else t for _, _, t in pts]
+    py = scene.query([p[0] for p in pts], [p[1] for p in pts], t)
+    for i, c in enumerate(cli):
+        assert py["height_m"][i] == c["height_m"]
+        assert py["normal"][i].tolist() == c["normal"]
+        assert py["foam"][i] == c["foam"] and py["whitecap"][i] == c["whitecap"]
+
+
+def test_a_bake_samples_one_surface_at_any_size(scene):
+    n, tile = 32, 64.0
+    b = scene.bake(size=n, tile_m=tile)
+    assert b["displacement"].shape == (n, n, 3) and b["foam"].shape == (n, n) and b["tile_m"] == tile
+    fine = scene.bake(size=2 * n, tile_m=tile)
+    # Texel (i, j) is the rest point (i, j)·tile/n (exact here: 2 m and 1 m texels): the finer
+    # bake's even texels are the same rest points, so the same surface to the bit.
+    np.testing.assert_array_equal(fine["displacement"][::2, ::2], b["displacement"])
+    np.testing.assert_array_equal(fine["normal"][::2, ::2], b["normal"])
+    h = b["displacement"][..., 1]
+    assert 0.1 < h.std() < 5.0
+    np.testing.assert_allclose(np.linalg.norm(b["normal"], axis=-1), 1.0, atol=1e-5)
+    # Blender's axes: (x, −z, y).
+    zup = scene.bake(size=n, tile_m=tile, up="z")["displacement"]
+    np.testing.assert_array_equal(zup[..., 2], b["displacement"][..., 1])
+    np.testing.assert_array_equal(zup[..., 1], -b["displacement"][..., 2])
+
+
+def test_bad_scenes_and_arguments_raise():
+    with pytest.raises(brine.BrineError, match=r"my\.toml line 2: sea\.wind_speed_m_s = 900"):
+        brine.Scene("[sea]\nwind_speed_m_s = 900\n", "my.toml")
+    with pytest.raises(brine.BrineError, match="camera.width"):
+        brine.Scene.from_dict({"camera": {"width": -4}})
+    with pytest.raises(brine.BrineError, match="size"):
+        brine.Scene.from_dict(SMALL).bake(size=1)
+    with pytest.raises(brine.BrineError, match="point 0"):
+        brine.Scene.from_dict(SMALL).query([np.nan], [0.0])
+    with pytest.raises(brine.BrineError, match="up"):
+        brine.Scene.from_dict(SMALL).bake(size=8, up="x")
