@@ -388,12 +388,19 @@ impl FoamMemory {
     /// not the pixel sees the mean `b`. Both laces' thickness shading
     /// ([`FoamLace::cover_and_shade`], mean 1 over the foam) multiply the brightness. The area
     /// means of the cover and of `cover × brightness` are unchanged. Unchanged without a lace.
+    /// Where the lace leaves open water (`c = 0`) the brightness is the mean's, `b`, and the
+    /// second lace is not read.
     pub fn laced(&self, ww: WhiteWater, x: f64, z: f64, sigma_m: f64) -> WhiteWater {
         let Some(lace) = &self.lace else { return ww };
         if ww.white <= 0.0 {
             return ww;
         }
         let (c, shade) = lace.cover_and_shade(x, z, sigma_m, ww.white);
+        if c <= 0.0 {
+            // Open water between the filaments: no white, so no brightness to draw (the second
+            // lace is not read; the brightness stays the mean's, as where there is no white).
+            return WhiteWater { active: 0.0, residual: 0.0, white: 0.0, brightness: ww.brightness };
+        }
         let [dx, dz] = AGEING_LACE_OFFSET_M;
         let (thick, thick_shade) = lace.cover_and_shade(x + dx, z + dz, sigma_m, ww.brightness.clamp(0.0, 1.0));
         let active = (ww.active * c / ww.white).min(c);

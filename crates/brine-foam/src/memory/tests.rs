@@ -196,3 +196,27 @@ fn ageing_foam_opens_holes_of_the_same_mean() {
         }
     }
 }
+
+/// Where the lace leaves open water, no white water of any kind is left there (the active and
+/// residual covers follow the white one to 0), and the brightness is the mean's; where it does
+/// not, the union of active and residual is the laced cover.
+#[test]
+fn open_water_in_the_lace_holds_no_white_water() {
+    let mem = memory();
+    let ww = WhiteWater { active: 0.03, residual: 0.12, white: 1.0 - 0.97 * 0.88, brightness: 0.7 };
+    let (mut open, mut foam) = (0, 0);
+    for p in points() {
+        let l = mem.laced(ww, p[0], p[1], 0.0);
+        if l.white <= 0.0 {
+            open += 1;
+            assert!(l.active <= 0.0 && l.residual <= 0.0, "{l:?}");
+            assert_eq!(l.brightness.to_bits(), ww.brightness.to_bits());
+        } else {
+            foam += 1;
+            let union = 1.0 - (1.0 - l.active) * (1.0 - l.residual);
+            assert!((union - l.white).abs() < 1e-12, "{l:?}");
+        }
+    }
+    // A cover of 0.15 drawn as lace: most of the sea open, some of it foam.
+    assert!(open > 20_000 && foam > 2_000, "open {open}, foam {foam}");
+}
