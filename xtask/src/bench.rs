@@ -17,6 +17,11 @@ const BENCHES: &[(&str, &str, &[&str])] = &[
         &["bench", "-p", "brine-render", "--bench", "export"],
     ),
     (
+        "peers",
+        "Brine against the mesh route: the same sea as a camera-adaptive mesh traced by Mitsuba 3 (venv made in target/peers), accuracy matched on Brine's depth",
+        &["bench", "-p", "brine-render", "--bench", "peers"],
+    ),
+    (
         "optics",
         "brine-optics per-pixel and per-scene costs (criterion)",
         &["bench", "-p", "brine-optics", "--bench", "optics"],
