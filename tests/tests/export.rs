@@ -178,3 +178,47 @@ fn meshes_are_valid() {
         None => eprintln!("BRINE_GLTF_VALIDATOR is not set: the Khronos validator was not run (.ci/run runs it)"),
     }
 }
+
+/// Every primary hit of a rendered frame within the trace distance lies on the faded height (`TracedTrochoids::
+/// faded_height` with the ray's direction and distance: the surface `brine mesh --camera
+/// --faded` is made of), near and far, within the tracer's tolerance; and the faded camera mesh's
+/// vertices are that surface.
+#[test]
+fn the_faded_height_is_what_the_primary_rays_hit() {
+    let mut scene = Scene::default_scene();
+    scene.camera.width = 200;
+    scene.camera.height = 112;
+    scene.camera.spp = 1;
+    scene.phenomena.glare = false;
+    let world = World::new(&scene).unwrap();
+    let brine_waves::FrameSurface::Trochoids(traced) = world.sea().surface() else { panic!("trochoids") };
+    let frame = render_world(&scene, &world, &RenderOptions::default(), &|| {}).unwrap();
+    let cam = world.camera();
+    let (mut n, mut far, mut worst) = (0, 0, 0.0f64);
+    for y in 0..scene.camera.height {
+        for x in 0..scene.camera.width {
+            let depth = f64::from(frame.aovs[(y * scene.camera.width + x) as usize].depth);
+            // Beyond the trace distance a ray meets the curved mean sea, not the waves.
+            if !(depth < scene.sea.trace_distance_m) {
+                continue;
+            }
+            let d = cam.direction(f64::from(x) + 0.5, f64::from(y) + 0.5);
+            let p = cam.position + depth * d;
+            let h = traced.faded_height(p.x, p.z, d, world.filtering_angle(), depth);
+            worst = worst.max((p.y - h).abs() / ON_THE_SURFACE_M.max(TRACE_RELATIVE * depth));
+            n += 1;
+            far += usize::from(depth > 200.0);
+        }
+    }
+    assert!(n > 10_000 && far > 1000, "{n} hits, {far} beyond 200 m");
+    assert!(worst < 1.0, "a hit {worst} tolerances off the faded height");
+    let mesh = brine_render::export::camera_mesh(&world, scene.sea.time_s, 2.0, true);
+    for v in mesh.positions.iter().step_by(101) {
+        let p = DVec3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]));
+        let s = world.sea().sample(p.x, p.z);
+        let ray = DVec3::new(p.x, s.height, p.z) - cam.position;
+        let h = traced.faded_height(p.x, p.z, ray.normalize(), world.filtering_angle(), ray.length());
+        // The vertex is stored in f32: 2⁻²⁴ of its coordinates.
+        assert!((h - p.y).abs() < 1e-5 * (1.0 + h.abs()), "vertex {p} against {h}");
+    }
+}

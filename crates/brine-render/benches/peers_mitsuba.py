@@ -3,8 +3,9 @@
 Arguments: camera.json, depth.f32 (Brine's depth AOV, row-major f32, top row first), runs,
 ranges (m, comma-separated), then the meshes (PLY). For each mesh, prints (as one JSON list on standard output)
 the median time of loading the scene (the BVH build) and of one 1-spp pass of the depth AOV
-integrator at the pixel centres, and the 99th percentile of |depth − Brine's| over the pixels
-where Brine's depth is below each range, silhouette pixels left out.
+integrator at the pixel centres, and the 99th percentiles of |depth − Brine's| and of the height
+difference |depth − Brine's|·|d_y| over the pixels where Brine's depth is below each range,
+silhouette pixels left out.
 """
 
 import json
@@ -46,6 +47,14 @@ def main():
     silhouettes = np.zeros_like(jump, shape=d.shape)
     silhouettes[:, 1:] |= jump
     silhouettes[:, :-1] |= jump
+    # The vertical component of each pixel-centre ray (Brine's pinhole camera): a depth
+    # difference `e` along a ray is a height difference `e |d_y|` between the two surfaces.
+    fw, up, right = (np.array(cam[k]) for k in ("forward", "up", "right"))
+    tan = np.tan(np.radians(cam["fov_y_deg"]) / 2.0)
+    xs = (2.0 * (np.arange(w) + 0.5) / w - 1.0) * tan * w / h
+    ys = (1.0 - 2.0 * (np.arange(h) + 0.5) / h) * tan
+    rays = fw + xs[None, :, None] * right + ys[:, None, None] * up
+    dy = np.abs(rays[..., 1]) / np.linalg.norm(rays, axis=-1)
     results = []
     for path in sys.argv[5:]:
         desc = {
@@ -76,15 +85,17 @@ def main():
         depth = img[..., -1]
         err = np.abs(depth - brine)
         ok = np.isfinite(brine) & (depth > 0) & ~silhouettes
-        p99 = []
+        p99, height = [], []
         for reach in reaches:
             sel = ok & (brine < reach)
             p99.append(float(np.percentile(err[sel], 99)) if sel.any() else float("nan"))
+            height.append(float(np.percentile((err * dy)[sel], 99)) if sel.any() else float("nan"))
         results.append(
             {
                 "load_s": load_s,
                 "trace_s": trace_s,
                 "depth_p99_m": p99,
+                "height_p99_m": height,
                 "silhouette_pixels": int(silhouettes.sum()),
             }
         )

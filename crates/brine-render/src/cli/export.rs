@@ -149,6 +149,10 @@ pub struct MeshArgs {
     /// With `--camera`: pixel footprints per edge.
     #[arg(long, default_value_t = 2.0, value_parser = super::within(0.25, 64.0), requires = "camera")]
     pub pixels: f64,
+    /// With `--camera`: the surface as the camera's rays draw it, the far waves faded with the
+    /// pixel footprint (the trochoid sea); without, every wave everywhere.
+    #[arg(long, requires = "camera")]
+    pub faded: bool,
     /// Time of the surface (s); overrides `sea.time_s`.
     #[arg(long, value_parser = super::finite)]
     pub time: Option<f64>,
@@ -175,7 +179,12 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
     let mesh = if args.camera {
         let (_, _, n) = crate::export::mesh::camera_layout(&world, args.pixels);
         crate::export::check_memory(&format!("a camera mesh of {n} vertices"), n * 112).map_err(CliError::Input)?;
-        crate::export::camera_mesh(&world, scene.sea.time_s, args.pixels)
+        if args.faded && !crate::export::mesh::camera_mesh_faded_supported(&world) {
+            return Err(CliError::Input(
+                "--faded: only the trochoid sea (sea.surface = \"trochoids\") has a faded height".to_owned(),
+            ));
+        }
+        crate::export::camera_mesh(&world, scene.sea.time_s, args.pixels, args.faded)
     } else {
         crate::export::grid_mesh(&world, scene.sea.time_s, &grid)
     };

@@ -143,28 +143,69 @@ pub fn grid_mesh(world: &World, t: f64, grid: &MeshGrid) -> Mesh {
 /// view meets the sea out to the trace distance, with vertices `pixels` pixel footprints apart —
 /// across, `r α`; along the view, `r α/sin γ` (`α` the pixel angle, `γ` the grazing angle).
 ///
+/// With `faded`, each vertex is on the surface the renderer draws along the ray from the eye
+/// to it: the trochoid sea's waves weighted by their fade at that distance (brine-waves
+/// `TracedTrochoids::faded_height`, the primary rays' weights), so the far sea is the smoother
+/// one of the image. The other seas have no faded height: [`camera_mesh_faded_supported`].
+///
 /// # Arguments
-/// - `world`, `t`: as [`grid_mesh`]; `pixels`: pixel footprints per edge, `≥ 0.25`.
+/// - `world`, `t`: as [`grid_mesh`]; `pixels`: pixel footprints per edge, `≥ 0.25`;
+///   `faded`: the waves faded as the camera's primary rays fade them.
 ///
 /// # Returns
 /// The [`Mesh`] (Eulerian vertices: each on the traced surface above its grid point).
-pub fn camera_mesh(world: &World, t: f64, pixels: f64) -> Mesh {
+pub fn camera_mesh(world: &World, t: f64, pixels: f64, faded: bool) -> Mesh {
     let (rings, angles, _) = camera_layout(world, pixels);
     world.with_sea_at(t, |frame| {
         let c = world.camera.position;
         let alpha = world.camera.pixel_angle();
+        let fade = world.filtering_angle();
         let cols = angles.len();
+        let traced = match (faded, frame.surface()) {
+            (true, brine_waves::FrameSurface::Trochoids(s)) => Some(s),
+            _ => None,
+        };
         let vertices: Vec<_> = (0..rings.len() * cols)
             .into_par_iter()
             .with_min_len(1024)
             .map(|k| {
                 let (r, a) = (rings[k / cols], angles[k % cols]);
                 let x = DVec2::new(c.x + r * a.cos(), c.z + r * a.sin());
-                vertex(world, frame, x, pixels * alpha * r)
+                match traced {
+                    Some(s) => faded_vertex(world, frame, s, x, pixels * alpha * r, fade),
+                    None => vertex(world, frame, x, pixels * alpha * r),
+                }
             })
             .collect();
         grid_of(rings.len(), cols, vertices)
     })
+}
+
+/// Whether [`camera_mesh`] can fade the waves of `world`'s sea (the trochoid sum).
+pub fn camera_mesh_faded_supported(world: &World) -> bool {
+    matches!(world.sea().surface(), brine_waves::FrameSurface::Trochoids(_))
+}
+
+/// A vertex of the faded surface above `x`: the fade of the ray from the eye to the point of the
+/// full surface there (the weights change by far less than a wave between the two points).
+fn faded_vertex(
+    world: &World,
+    frame: &brine_waves::SeaFrame,
+    traced: &brine_waves::TracedTrochoids,
+    x: DVec2,
+    footprint_m: f64,
+    angle: f64,
+) -> ([f32; 3], [f32; 3], f32, f32) {
+    let c = world.camera.position;
+    let s = frame.sample(x.x, x.y);
+    let ray = DVec3::new(x.x, s.height, x.y) - c;
+    let (t, d) = (ray.length(), ray.normalize_or_zero());
+    let h = traced.faded_height(x.x, x.y, d, angle, t);
+    let g = traced.faded_gradient(x.x, x.y, d, angle, t);
+    let n = DVec3::new(-g.x, 1.0, -g.y).normalize();
+    let p = DVec3::new(x.x, h, x.y);
+    let cover = world.cover_at_time(p, n, frame.time(), footprint_m);
+    (p.as_vec3().to_array(), n.as_vec3().to_array(), cover.foam as f32, cover.whitecap as f32)
 }
 
 /// The radii and azimuths (atan2 in the x–z plane) of [`camera_mesh`] and its vertex count.

@@ -353,49 +353,18 @@ impl TracedTrochoids {
         footprint_angle: f64,
         t: f64,
     ) -> (DVec2, DVec3) {
-        // Fade weights by halves of 4 f64 lanes: wᵢ = smoothstep(1, 1.5, Tᵢ/t) with
-        // Tᵢ/t = (2π/(α t))/√(kᵢ² + σᵢ²/d_y²) (`footprint_weight`, `component_fade_distance`);
-        // padding lanes (k = 0) get Tᵢ = ∞, w = 1 and no covariance.
-        let fading = footprint_angle > 0.0 && t > 0.0;
-        let inv_dy2 = f64x4::splat(1.0 / (direction.y * direction.y).max(1e-300));
-        let reach = f64x4::splat(if fading { TAU / (footprint_angle * t) } else { 0.0 });
-        let (dx, dz) = (f64x4::splat(direction.x), f64x4::splat(direction.z));
-        let (one, zero) = (f64x4::splat(1.0), f64x4::splat(0.0));
+        let fade = Fade::new(direction, footprint_angle, t);
         let (mut gx, mut gz) = (0.0, 0.0);
         let mut lost = [f64x4::splat(0.0); 3];
         for tier in &self.tiers {
             let mut s = [0.0; LANES];
-            let (mut weight, mut kx, mut kz) = ([1.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
+            let (mut kx, mut kz) = ([0.0f32; LANES], [0.0f32; LANES]);
             for l in 0..LANES {
                 s[l] = tier.kx[l] * x + tier.kz[l] * z + tier.offset[l];
                 kx[l] = tier.kx[l] as f32;
                 kz[l] = tier.kz[l] as f32;
             }
-            if fading {
-                for half in 0..2 {
-                    let lanes = half * 4..half * 4 + 4;
-                    let v = |a: &[f64; LANES]| f64x4::new(a[lanes.clone()].try_into().expect("4 lanes"));
-                    let (tkx, tkz, k) = (v(&tier.kx), v(&tier.kz), v(&tier.wavenumber));
-                    let sigma = tkx * dx + tkz * dz;
-                    let resolution = k * k + sigma * sigma * inv_dy2;
-                    // Tᵢ/t ≥ 1.5 on every lane, i.e. (2π/(αt))² ≥ 2.25 (kᵢ² + σᵢ²/d_y²): no wave of
-                    // these four has begun to fade (w = 1, nothing lost), without the square root
-                    // and division, which cost as much as the profile itself.
-                    if (reach * reach).simd_ge(f64x4::splat(2.25) * resolution).all() {
-                        continue;
-                    }
-                    let ratio = reach / resolution.sqrt();
-                    let u = ((ratio - one) * f64x4::splat(2.0)).max(zero).min(one);
-                    let w = u * u * (f64x4::splat(3.0) - f64x4::splat(2.0) * u);
-                    let gone = one - w;
-                    for (o, c) in lost.iter_mut().zip(&tier.slope_covariance) {
-                        *o += gone * v(c);
-                    }
-                    for (dst, wl) in weight[lanes].iter_mut().zip(w.to_array()) {
-                        *dst = wl as f32;
-                    }
-                }
-            }
+            let weight = fade.weights(tier, Some(&mut lost));
             let (_, g) = profile8(reduce_phases(&s), f32x8::new(tier.steepness), &tier.series, tier.mode);
             let dh = -(f32x8::new(tier.amplitude) * g * f32x8::new(weight));
             gx += f64::from((dh * f32x8::new(kx)).reduce_add());
@@ -403,6 +372,36 @@ impl TracedTrochoids {
         }
         let lost = lost.map(|v| v.reduce_add());
         (DVec2::new(gx, gz), DVec3::from_array(lost))
+    }
+
+    /// Height of the surface as a primary ray draws it at `(x, z)`: each wave weighted by its
+    /// fade `wᵢ = smoothstep(1, 1.5, Tᵢ/t)` along the ray (the weights of
+    /// [`Self::faded_gradient`]), `h = Σ wᵢ Aᵢ cos θᵢ` in the kernel's f32 lanes; every wave
+    /// (the traced height) when `footprint_angle` is 0.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m).
+    /// - `direction`: unit direction of the ray from the eye to the point; `footprint_angle`
+    ///   (rad, `≥ 0`) and `t` (m, the distance along the ray) as traced.
+    ///
+    /// # Returns
+    /// The height (m).
+    ///
+    /// # References
+    /// Darles et al. 2007, Eq. 2 (trochoid sum); docs/equations.md §11 (fade weights).
+    pub fn faded_height(&self, x: f64, z: f64, direction: DVec3, footprint_angle: f64, t: f64) -> f64 {
+        let fade = Fade::new(direction, footprint_angle, t);
+        let mut h = 0.0;
+        for tier in &self.tiers {
+            let mut s = [0.0; LANES];
+            for l in 0..LANES {
+                s[l] = tier.kx[l] * x + tier.kz[l] * z + tier.offset[l];
+            }
+            let weight = fade.weights(tier, None);
+            let (c, _) = profile8(reduce_phases(&s), f32x8::new(tier.steepness), &tier.series, tier.mode);
+            h += f64::from((f32x8::new(tier.amplitude) * c * f32x8::new(weight)).reduce_add());
+        }
+        h
     }
 
     /// The slope covariance `(⟨ζx²⟩, ⟨ζx ζz⟩, ⟨ζz²⟩)` of the waves the tracer faded at `t`:
@@ -501,6 +500,67 @@ fn rest_displacement_of(tiers: &[Tier], u: DVec2) -> DVec2 {
         d -= DVec2::new(f64::from((sn * f32x8::new(fx)).reduce_add()), f64::from((sn * f32x8::new(fz)).reduce_add()));
     }
     d
+}
+
+/// The fade of the waves along one ray: `wᵢ = smoothstep(1, 1.5, Tᵢ/t)` with
+/// `Tᵢ/t = (2π/(α t))/√(kᵢ² + σᵢ²/d_y²)` (`footprint_weight`, `component_fade_distance`), computed
+/// by halves of 4 f64 lanes; padding lanes (k = 0) get `Tᵢ = ∞`, `w = 1` and no covariance.
+struct Fade {
+    fading: bool,
+    inv_dy2: f64x4,
+    reach: f64x4,
+    dx: f64x4,
+    dz: f64x4,
+}
+
+impl Fade {
+    fn new(direction: DVec3, footprint_angle: f64, t: f64) -> Self {
+        let fading = footprint_angle > 0.0 && t > 0.0;
+        Self {
+            fading,
+            inv_dy2: f64x4::splat(1.0 / (direction.y * direction.y).max(1e-300)),
+            reach: f64x4::splat(if fading { TAU / (footprint_angle * t) } else { 0.0 }),
+            dx: f64x4::splat(direction.x),
+            dz: f64x4::splat(direction.z),
+        }
+    }
+
+    /// The weights of `tier`'s lanes; the slope covariance of what they remove is added to
+    /// `lost` when given.
+    #[inline]
+    fn weights(&self, tier: &Tier, mut lost: Option<&mut [f64x4; 3]>) -> [f32; LANES] {
+        let mut weight = [1.0f32; LANES];
+        if !self.fading {
+            return weight;
+        }
+        let (one, zero) = (f64x4::splat(1.0), f64x4::splat(0.0));
+        for half in 0..2 {
+            let lanes = half * 4..half * 4 + 4;
+            let v = |a: &[f64; LANES]| f64x4::new(a[lanes.clone()].try_into().expect("4 lanes"));
+            let (tkx, tkz, k) = (v(&tier.kx), v(&tier.kz), v(&tier.wavenumber));
+            let sigma = tkx * self.dx + tkz * self.dz;
+            let resolution = k * k + sigma * sigma * self.inv_dy2;
+            // Tᵢ/t ≥ 1.5 on every lane, i.e. (2π/(αt))² ≥ 2.25 (kᵢ² + σᵢ²/d_y²): no wave of
+            // these four has begun to fade (w = 1, nothing lost), without the square root
+            // and division, which cost as much as the profile itself.
+            if (self.reach * self.reach).simd_ge(f64x4::splat(2.25) * resolution).all() {
+                continue;
+            }
+            let ratio = self.reach / resolution.sqrt();
+            let u = ((ratio - one) * f64x4::splat(2.0)).max(zero).min(one);
+            let w = u * u * (f64x4::splat(3.0) - f64x4::splat(2.0) * u);
+            if let Some(lost) = lost.as_deref_mut() {
+                let gone = one - w;
+                for (o, c) in lost.iter_mut().zip(&tier.slope_covariance) {
+                    *o += gone * v(c);
+                }
+            }
+            for (dst, wl) in weight[lanes].iter_mut().zip(w.to_array()) {
+                *dst = wl as f32;
+            }
+        }
+        weight
+    }
 }
 
 #[cfg(all(test, feature = "tracing"))]

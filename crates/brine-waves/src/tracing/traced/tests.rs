@@ -214,3 +214,36 @@ fn fast_height_matches_the_f64_surface_within_its_error_bound() {
         }
     }
 }
+
+/// The faded height against the f64 sum of each wave's height weighted by its own fade weight
+/// (`fade_weight`, from `fade_distance` and brine-core's smoothstep, wave by wave in set order):
+/// the kernel's f32 error bound covers the difference, each weight in `[0, 1]` only shrinking a
+/// wave's error.
+#[test]
+fn faded_height_is_each_wave_weighted_by_its_fade() {
+    let set = set(80, 0.6, 11);
+    let time = 0.9;
+    let sea = TracedTrochoids::new(&set, time);
+    let d = DVec3::new(-0.5, -0.12, 0.85).normalize();
+    let angle = 0.0015;
+    let mut faded_some = 0;
+    for (i, t) in [0.0, 2.0, 25.0, 180.0, 1500.0, 1e5].into_iter().enumerate() {
+        let (x, z) = (i as f64 * 31.7 - 60.0, 14.0 - i as f64 * 9.1);
+        let fast = sea.faded_height(x, z, d, angle, t);
+        let mut reference = 0.0;
+        let mut weights = 0.0;
+        for (k, w) in set.waves().iter().enumerate() {
+            let weight = if t > 0.0 { sea.fade_weight(k, d, angle, t) } else { 1.0 };
+            let dir = w.direction_vector();
+            let s = w.wavenumber() * (dir.x * x + dir.y * z) - w.omega() * time + w.phase();
+            let (_, c, _) = solve_trochoid_phase(s, w.steepness());
+            reference += weight * w.amplitude() * c;
+            weights += weight;
+        }
+        assert!((fast - reference).abs() <= sea.error_bound(), "t = {t}: {fast} vs {reference}");
+        faded_some += usize::from(weights < set.len() as f64 - 0.5);
+    }
+    // Without a footprint angle nothing fades: the traced height.
+    assert_eq!(sea.faded_height(3.0, 4.0, d, 0.0, 50.0).to_bits(), sea.height(3.0, 4.0).to_bits());
+    assert!(faded_some >= 3, "the distances must fade some waves");
+}
