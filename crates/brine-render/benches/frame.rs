@@ -5,9 +5,12 @@
 //! The same scene on the FFT ocean (`surface = "fft"`, 4 cascades of 256²) is measured alongside,
 //! in the same process, and the ratio printed.
 
+#[path = "common/mod.rs"]
+mod common;
+
 use std::time::Instant;
 
-use brine_render::scene::{CloudConfig, SurfaceKind};
+use brine_render::scene::SurfaceKind;
 use brine_render::{RenderOptions, Scene, World, render_world};
 
 /// Renders per variant; the median is reported.
@@ -61,12 +64,7 @@ fn measure(label: &str, scene: &Scene) -> f64 {
 }
 
 fn main() {
-    let mut scene = Scene::default_scene();
-    scene.camera.width = 640;
-    scene.camera.height = 480;
-    scene.camera.spp = 1;
-    scene.sea.waves = 100;
-    scene.sky.clouds = Some(CloudConfig::default());
+    let mut scene = common::reference_frame_scene();
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|s| {

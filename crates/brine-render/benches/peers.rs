@@ -10,13 +10,15 @@
 //! Mitsuba runs in a Python virtual environment this bench makes under `target/peers/venv`
 //! (`pip install mitsuba==3.9.1 numpy`); where it cannot be made the bench says so and stops.
 
+#[path = "common/mod.rs"]
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
 use brine_render::export::{camera_mesh, write_mesh};
-use brine_render::scene::CloudConfig;
-use brine_render::{RenderOptions, Scene, World, render_world};
+use brine_render::{RenderOptions, World, render_world};
 use brine_testkit::timing::median;
 
 /// Runs per timing; the median is reported (this 2-core machine spreads by about ±10 %).
@@ -75,12 +77,7 @@ fn mitsuba_python(dir: &Path) -> Result<PathBuf, String> {
 }
 
 fn main() {
-    let mut scene = Scene::default_scene();
-    scene.camera.width = 640;
-    scene.camera.height = 480;
-    scene.camera.spp = 1;
-    scene.sea.waves = 100;
-    scene.sky.clouds = Some(CloudConfig::default());
+    let scene = common::reference_frame_scene();
     let threads = rayon::current_num_threads();
     println!(
         "peers: Brine against Mitsuba 3 on the mesh of the same sea (640×480, 100 waves, 1 spp, {threads} threads)"
