@@ -412,6 +412,28 @@ fn energy_bands(surface: &str, wind: f64) -> Result<Vec<f64>, String> {
     Ok((3..10).map(|b| band(&fast, b) / band(&reference, b)).collect())
 }
 
+/// The far-field sparkle of one surface at one wind: [`far_noise`] at one sample per pixel over
+/// that at [`SPARKLE_SPP`]; the two frames are written to `target/`.
+fn sparkle_of(root: &Path, surface: &str, wind: f64) -> Result<f64, String> {
+    let name = format!("{surface}-{wind:02}");
+    let frame = render(&scene_text(surface, wind, false, 1), &format!("{name}.toml"))?;
+    let fine = render(&scene_text(surface, wind, false, SPARKLE_SPP), &format!("{name}-spp.toml"))?;
+    let target = root.join("target");
+    let coarse = target.join(format!("beaufort-{name}-spp1.png"));
+    let reference = target.join(format!("beaufort-{name}-spp{SPARKLE_SPP}.png"));
+    Ok(far_noise(&frame, &coarse)? / far_noise(&fine, &reference)?)
+}
+
+/// `cargo xtask beaufort --sparkle`: the sheet's sparkle figures alone, printed.
+pub fn sparkle(root: &Path) -> Result<(), String> {
+    for wind in WINDS.into_iter().filter(|&w| w <= SPARKLE_MAX_WIND) {
+        for surface in SURFACES {
+            println!("sparkle {surface} {wind} m/s: {:.2}", sparkle_of(root, surface, wind)?);
+        }
+    }
+    Ok(())
+}
+
 /// Renders and measures the sheet, writing `docs/beaufort.md` and `docs/beaufort/*.png`.
 pub fn run(root: &Path) -> Result<(), String> {
     let dir = root.join("docs/beaufort");
@@ -437,9 +459,7 @@ pub fn run(root: &Path) -> Result<(), String> {
             let top = render(&scene_text(surface, wind, true, 1), &format!("{name}-top.toml"))?;
             let peaks = peak_share(&top);
             let sparkle = if wind <= SPARKLE_MAX_WIND {
-                let fine = render(&scene_text(surface, wind, false, SPARKLE_SPP), &format!("{name}-spp.toml"))?;
-                let reference = root.join("target").join(format!("beaufort-{name}-spp{SPARKLE_SPP}.png"));
-                format!(" · sparkle {:.2}", far_noise(&frame, &png)? / far_noise(&fine, &reference)?)
+                format!(" · sparkle {:.2}", sparkle_of(root, surface, wind)?)
             } else {
                 String::new()
             };
@@ -507,8 +527,9 @@ pub fn run(root: &Path) -> Result<(), String> {
            slopes a pixel of the top-down view shows (averaged over its {px:.2} m footprint, {LAG_POINTS}\n\
            points), and (in brackets) of the drawn surface, down to its millimetre waves.\n\
          - **sparkle** (2 and 5 m/s): the high-pass noise of the far field (150 m to 2.5 km) at 1\n\
-           sample per pixel over that at {SPARKLE_SPP}: near 1 when each pixel is filtered over its\n\
-           footprint, large when sub-pixel glints alias.\n\
+           sample per pixel over that at {SPARKLE_SPP} (whose samples each filter over a quarter of the\n\
+           pixel's width, the rest covered by their spread): near 1 when each pixel is filtered over\n\
+           its footprint, large when sub-pixel glints alias.\n\
          - **sky R²** (16 m/s): over the sea 10–30 m away (under a tenth foam), the squared correlation of the\n\
            pixels' luminance with the sky reflected at each pixel's mirror direction blurred by the\n\
            reflection lobe of the waves not drawn, and (in brackets) with the unblurred mirror sky.\n\

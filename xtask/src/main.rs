@@ -51,7 +51,12 @@ enum Task {
         bless: bool,
     },
     /// Render and measure the Beaufort sheet only (docs/beaufort.md, docs/beaufort/*.png).
-    Beaufort,
+    Beaufort {
+        /// Only measure the far-field sparkle (2 and 5 m/s, both surfaces) and print it; write
+        /// nothing in docs/.
+        #[arg(long)]
+        sparkle: bool,
+    },
     /// Measure white water from above (docs/whitewater.md, docs/whitewater/*.png).
     Whitewater {
         /// Only measure the streaks (correlation lengths at 18 m/s) and print them; write nothing.
@@ -93,7 +98,13 @@ fn run(cli: Cli) -> Result<(), String> {
             gallery(&names)?;
             if names.is_empty() { beaufort::run(&root()) } else { Ok(()) }
         }
-        Task::Beaufort => beaufort::run(&root()),
+        Task::Beaufort { sparkle } => {
+            if sparkle {
+                beaufort::sparkle(&root())
+            } else {
+                beaufort::run(&root())
+            }
+        }
         Task::Whitewater { streaks } => {
             if streaks {
                 whitewater::streaks().map(|_| ())

@@ -5,6 +5,8 @@
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
+use brine_core::lattice_floor;
+
 use crate::error::{FoamError, check};
 use crate::noise::{FoamNoise, smoothstep};
 use crate::windrows::{EmpiricalCdf, QUANTILE_SAMPLES};
@@ -19,6 +21,9 @@ const LACE_OCTAVES: usize = 3;
 
 /// Ratio of the cell sizes of successive octaves (3, not 2, so that the two nets do not line up).
 const LACE_OCTAVE_RATIO: f64 = 3.0;
+
+/// `LACE_OCTAVE_RATIO^o`, the cells per first-octave cell of octave `o` (exact integers).
+const OCTAVE_SCALE: [f64; LACE_OCTAVES] = [1.0, LACE_OCTAVE_RATIO, LACE_OCTAVE_RATIO * LACE_OCTAVE_RATIO];
 
 /// Weight of each octave relative to the previous one.
 const LACE_OCTAVE_WEIGHT: f64 = 0.5;
@@ -196,10 +201,11 @@ impl FoamLace {
 
     /// `(F₂ − F₁)/λₒ` at `(x, z)` for octave `o`: 0 on a cell border, up to about 1 at a centre.
     fn border_distance(&self, x: f64, z: f64, o: u32) -> f64 {
-        let scale = LACE_OCTAVE_RATIO.powi(o as i32);
+        let scale = OCTAVE_SCALE[o as usize];
         let lambda = self.cell_m / scale;
         let (u, v) = (x / lambda, z / lambda);
-        let (i0, j0) = (u.floor() as i64, v.floor() as i64);
+        // `lattice_floor`: no `libm` call on the SSE2 baseline (`|u|, |v| < 2⁶³`).
+        let (i0, j0) = (lattice_floor(u) as i64, lattice_floor(v) as i64);
         let cells = self.period.map(|n| n * scale as i64);
         let (mut f1, mut f2) = (f64::INFINITY, f64::INFINITY);
         for dj in -1..=1 {
@@ -265,17 +271,17 @@ impl FoamLace {
         }
         // `n` whole octaves, octave `n` (if any) faded by `f`.
         let mut n = 1;
-        while n < LACE_OCTAVES && Self::fade(self.cell_m / LACE_OCTAVE_RATIO.powi(n as i32), sigma_m) >= 1.0 {
+        while n < LACE_OCTAVES && Self::fade(self.cell_m / OCTAVE_SCALE[n], sigma_m) >= 1.0 {
             n += 1;
         }
         let (n, f) = if n == LACE_OCTAVES {
             (LACE_OCTAVES - 1, 1.0)
         } else {
-            (n, Self::fade(self.cell_m / LACE_OCTAVE_RATIO.powi(n as i32), sigma_m))
+            (n, Self::fade(self.cell_m / OCTAVE_SCALE[n], sigma_m))
         };
         let d = self.normalised_first(x, z, if f > 0.0 { n + 1 } else { n });
         let last = (FADE_TABLES - 1) as f64;
-        let j = ((f * last).floor() as usize).min(FADE_TABLES - 2);
+        let j = (lattice_floor(f * last) as usize).min(FADE_TABLES - 2);
         let t = f * last - j as f64;
         let tables = &self.cdfs[n - 1];
         let at = |j: usize| tables[j].uniform(partial_sum(&d, n, j as f64 / last));

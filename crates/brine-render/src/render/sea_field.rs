@@ -1,6 +1,8 @@
 //! The sea of a frame as the renderer traces it: primary rays faded with the pixel footprint, secondary rays with every wave, and the shading geometry at a hit.
 
 use super::*;
+use brine_waves::EllipticalFootprint;
+use glam::DVec2;
 
 /// Smallest `|d_y|` of the pixel footprint's stretch `1/√|d_y|` on the sea (the FFT fading's).
 pub(super) const MIN_FOOTPRINT_GRAZING: f64 = 0.05;
@@ -69,18 +71,21 @@ impl<'a> SeaField<'a> {
     /// read through the pixel's footprint, and the slopes the footprint hides join the BRDF's.
     pub(super) fn hit_geometry(&self, p: DVec3, d: DVec3, t: f64, world: &World) -> (DVec3, SlopeVariance) {
         let angle = world.filtering_angle();
-        // The pixel's side on the sea, the geometric mean of its two axes (as the fading's).
-        let footprint = angle * t / d.y.abs().max(MIN_FOOTPRINT_GRAZING).sqrt();
+        // The pixel on the sea: `αt` across the view, `αt/|d_y|` along it, as Gaussians of the
+        // same spread as those boxes.
+        let across = angle * t / brine_waves::BOX_WIDTH_PER_SIGMA;
+        let along = across / d.y.abs().max(MIN_FOOTPRINT_GRAZING);
+        let footprint = EllipticalFootprint::new(across, along, DVec2::new(d.x, d.z));
         let (mut g, mut c) = match (&self.sea, &world.fft_slopes) {
             // The FFT cascades read through the footprint (LEAN mapping) rather than faded whole.
             (TracedSea::Fft(_), Some(lean)) => {
-                let l = lean.filtered(p.x, p.z, footprint / brine_waves::BOX_WIDTH_PER_SIGMA);
+                let l = lean.filtered_elliptical(p.x, p.z, &footprint);
                 (l.gradient, l.covariance)
             }
             _ => self.sea.faded_gradient_and_covariance(p.x, p.z, d, angle, t),
         };
         if let Some(detail) = &world.detail {
-            let f = detail.filtered(p.x, p.z, footprint / brine_waves::BOX_WIDTH_PER_SIGMA);
+            let f = detail.filtered_elliptical(p.x, p.z, &footprint);
             g += f.gradient;
             c += f.covariance;
         }

@@ -344,9 +344,9 @@ pub(super) fn white_water(
     if world.foam.is_none() && world.whitecaps.is_none() && world.white_water.is_none() {
         return shade;
     }
-    // Pixel footprint on the sea: the pixel's angle at distance t, stretched by the grazing view
+    // Sample footprint on the sea: the sample's angle at distance t, stretched by the grazing view
     // (geometric mean of the two axes); a Gaussian footprint of the same area has σ = ℓ/√12.
-    let footprint = t * world.camera.pixel_angle() / d.y.abs().max(0.05).sqrt();
+    let footprint = t * world.sample_angle() / d.y.abs().max(0.05).sqrt();
     let sun = world.sky.sun();
     let cos_sun = n.dot(sun.direction);
     let e_sky = world.sky.horizontal_irradiance_rgb();

@@ -140,6 +140,9 @@ pub struct World {
     /// it (the slopes a footprint would hide stay in the normals, for many samples per pixel to
     /// average), so that a supersampled frame shows what the filtering is meant to preserve.
     pub(crate) reference: bool,
+    /// The share of the pixel's angle one sample's footprint covers,
+    /// `max(1/8, 1/√spp)` ([`sample_footprint_scale`]).
+    pub(crate) sample_scale: f64,
 }
 
 /// What a caller outside the renderer reads of a world; the rest is the renderer's own.
@@ -254,11 +257,37 @@ impl World {
 }
 
 impl World {
-    /// The pixel angle (rad) the waves fade with and the normals are filtered by: the camera's,
-    /// or 0 in the reference rendering.
+    /// The angle (rad) the waves fade with and the normals are filtered by: one sample's
+    /// ([`Self::sample_angle`]), or 0 in the reference rendering.
     pub fn filtering_angle(&self) -> f64 {
-        if self.reference { 0.0 } else { self.camera.pixel_angle() }
+        if self.reference { 0.0 } else { self.sample_angle() }
     }
+
+    /// The angle (rad) one sample's footprint spans: the pixel's, shrunk as the samples of the
+    /// pixel share it ([`sample_footprint_scale`]).
+    pub fn sample_angle(&self) -> f64 {
+        self.camera.pixel_angle() * self.sample_scale
+    }
+}
+
+/// The share of a pixel's footprint one of its `spp` samples filters over, `max(1/8, 1/√spp)`:
+/// at one sample per pixel the sample stands for the whole pixel; with more, the samples spread
+/// over the pixel cover part of it by their number (each one the `1/√spp`-wide cell of a
+/// stratified pattern), and the filter covers the rest. Without it a supersampled frame would
+/// be blurred by the filter and by the samples' spread both; the floor of `1/8` keeps the
+/// tracer's fading from vanishing at thousands of samples.
+///
+/// # Arguments
+/// - `spp`: samples per pixel, `≥ 1`.
+///
+/// # Returns
+/// The scale (1), `[1/8, 1]`.
+///
+/// # References
+/// Pharr, Jakob & Humphreys, *Physically Based Rendering* (4th ed.), §5.2 (camera ray
+/// differentials scaled by `max(1/8, 1/√spp)`).
+pub fn sample_footprint_scale(spp: u32) -> f64 {
+    (1.0 / f64::from(spp.max(1)).sqrt()).max(0.125)
 }
 
 /// Illuminance below which the automatic exposure stops following the light fully (lx), about
@@ -683,6 +712,7 @@ impl World {
             exposure_compensation_ev: scene.output.exposure_compensation_ev,
             illuminance_lx: e_horizontal * 1000.0,
             reference: false,
+            sample_scale: sample_footprint_scale(scene.camera.spp),
         };
         let mut world = world;
         let c = camera.position;

@@ -115,3 +115,20 @@ fn white_water_on_both_surfaces_has_monahans_mean() {
         assert!((mean / target - 1.0).abs() < WHITE_WATER_REL_TOL, "{surface}: mean {mean}, W {target}");
     }
 }
+
+/// One sample's footprint is the pixel's at one sample per pixel and shrinks as `1/√spp` down to
+/// an eighth (pbrt-v4's rule, whose values these are: 1, 1/2, 1/4, 1/8 and the floor); the
+/// world's filtering angle follows it, and the reference keeps none.
+#[test]
+fn samples_share_the_pixel_footprint() {
+    for (spp, scale) in [(1, 1.0), (4, 0.5), (16, 0.25), (64, 0.125), (1024, 0.125)] {
+        assert_eq!(sample_footprint_scale(spp).to_bits(), f64::to_bits(scale), "{spp} spp");
+        let mut scene = Scene::default_scene();
+        scene.camera.spp = spp;
+        let mut world = World::new(&scene).expect("a valid scene");
+        approx::assert_relative_eq!(world.filtering_angle(), world.camera.pixel_angle() * scale, max_relative = 1e-15);
+        world.set_reference(true);
+        assert!(world.filtering_angle() <= 0.0);
+        approx::assert_relative_eq!(world.sample_angle(), world.camera.pixel_angle() * scale, max_relative = 1e-15);
+    }
+}

@@ -1,8 +1,98 @@
-//! Mip pyramids of periodic grid quantities, read with trilinear filtering over a footprint.
+//! Mip pyramids of periodic grid quantities, read with trilinear filtering over a footprint,
+//! round or elliptical.
+
+use brine_core::lattice_floor;
+use glam::DVec2;
 
 /// `√12`: a box of width `w` has the standard deviation `w/√12`, so a Gaussian footprint of
 /// standard deviation `s` reads the pyramid level of texel width `√12 s` (same spread).
 pub const BOX_WIDTH_PER_SIGMA: f64 = 3.464_101_615_137_754_6;
+
+/// Largest ratio of an [`EllipticalFootprint`]'s major axis to its minor axis that is read as
+/// such: beyond it the minor axis is widened to `major/8`, as GPUs cap anisotropic filtering, so
+/// that at most 15 probes cover the ellipse.
+pub const MAX_ANISOTROPY: f64 = 8.0;
+
+/// Ratio of the probe spacing to the minor axis's standard deviation that the probes of an
+/// [`EllipticalFootprint`] stay within: a row of round Gaussians of standard deviation `s`
+/// spaced `2s` apart sums to a flat band within `2e^{−2π²/4} ≈ 1.4 %`.
+const PROBE_SPACING_PER_SIGMA: f64 = 2.0;
+
+/// An elliptical Gaussian footprint on the sea (a pixel seen at a slant: stretched along the
+/// view), read from a pyramid as GPUs filter anisotropically: a row of round reads of the minor
+/// axis's width along the major axis.
+///
+/// The ellipse of standard deviations `(s_major, s_minor)` is the round Gaussian of `s_minor`
+/// convolved with a 1-D Gaussian of `s_e = √(s_major² − s_minor²)` along the major axis; that
+/// 1-D blur is replaced by `n` equal probes spaced `h` apart with the same variance,
+/// `h² (n² − 1)/12 = s_e²`, `n ≥ 2` the fewest with `h ≤ 2 s_minor` (15 at most). A ratio above
+/// [`MAX_ANISOTROPY`] widens the minor axis to `s_major/8`.
+///
+/// # References
+/// Heckbert P. 1989, "Fundamentals of texture mapping and image warping" (elliptical
+/// footprints); the `EXT_texture_filter_anisotropic` extension (probes along the major axis).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EllipticalFootprint {
+    /// The round reads' standard deviation (m), after any widening.
+    minor_m: f64,
+    /// The step from one probe to the next (m, along the major axis).
+    step: DVec2,
+    /// Number of probes `n ≥ 1`.
+    count: usize,
+    /// The major axis's standard deviation (m).
+    major_m: f64,
+}
+
+impl EllipticalFootprint {
+    /// A round footprint of standard deviation `sigma_m` (m, `≥ 0`): one read.
+    pub fn round(sigma_m: f64) -> Self {
+        debug_assert!(sigma_m >= 0.0);
+        Self { minor_m: sigma_m, step: DVec2::ZERO, count: 1, major_m: sigma_m }
+    }
+
+    /// The footprint of standard deviations `sigma_major_m ≥ sigma_minor_m ≥ 0` (m; swapped if
+    /// given the other way), the major one along `major_axis` (a horizontal direction, any
+    /// non-zero length; a zero or non-finite axis gives the round footprint of the major
+    /// deviation's geometric mean with the minor one).
+    pub fn new(sigma_minor_m: f64, sigma_major_m: f64, major_axis: DVec2) -> Self {
+        let (minor, major) = if sigma_minor_m <= sigma_major_m {
+            (sigma_minor_m, sigma_major_m)
+        } else {
+            (sigma_major_m, sigma_minor_m)
+        };
+        debug_assert!(minor >= 0.0 && major.is_finite());
+        let axis = major_axis.try_normalize();
+        let Some(axis) = axis else { return Self::round((minor * major).sqrt()) };
+        let minor = minor.max(major / MAX_ANISOTROPY);
+        let extra2 = major * major - minor * minor;
+        // Under a tenth of the minor deviation added along the axis: one read (the round one).
+        if minor <= 0.0 || extra2 <= 0.01 * minor * minor {
+            return Self::round(minor);
+        }
+        let extra = extra2.sqrt();
+        // The fewest with `h = s_e √(12/(n² − 1)) ≤ 2 s_minor`: `n² ≥ 1 + 12 s_e²/(2 s_minor)²`.
+        let ratio = extra / (PROBE_SPACING_PER_SIGMA * minor);
+        let count = ((1.0 + 12.0 * ratio * ratio).sqrt().ceil() as usize).max(2);
+        let spacing = extra * (12.0 / (count * count - 1) as f64).sqrt();
+        Self { minor_m: minor, step: axis * spacing, count, major_m: major }
+    }
+
+    /// The round reads' standard deviation (m).
+    pub fn minor_m(&self) -> f64 {
+        self.minor_m
+    }
+
+    /// The number of probes.
+    pub fn probes(&self) -> usize {
+        self.count
+    }
+
+    /// The probes' offsets from the centre (m), evenly spaced and centred.
+    fn offsets(&self) -> impl Iterator<Item = DVec2> + '_ {
+        let half = 0.5 * (self.count - 1) as f64;
+        (0..self.count).map(move |i| self.step * (i as f64 - half))
+    }
+}
 
 /// A mip pyramid of `C` channels over a periodic `N × N` grid of spacing `Δ` (`N` a power of
 /// two): level 0 holds the grid values at the grid points `(iΔ, jΔ)`, level `l` the means over
@@ -84,7 +174,8 @@ impl<const C: usize> FftPyramid<C> {
         let scale = (1usize << l) as f64;
         let offset = 0.5 * (scale - 1.0);
         let (u, v) = ((x / self.spacing - offset) / scale, (z / self.spacing - offset) / scale);
-        let (fu, fv) = (u.floor(), v.floor());
+        // `lattice_floor`: `floor` without the `libm` call of the SSE2 baseline.
+        let (fu, fv) = (lattice_floor(u), lattice_floor(v));
         let (s, t) = (u - fu, v - fv);
         let mask = n as i64 - 1;
         let (i0, j0) = (fu as i64 & mask, fv as i64 & mask);
@@ -107,15 +198,25 @@ impl<const C: usize> FftPyramid<C> {
     /// - `x`, `z`: centre (m), finite; `width_m`: box width (m), `≥ 0` (`0` reads level 0, the
     ///   bilinear interpolant of the grid).
     pub fn box_mean(&self, x: f64, z: f64, width_m: f64) -> [f64; C] {
+        self.trilinear(self.level(width_m), x, z)
+    }
+
+    /// The level `log₂(w/Δ)` of a box of width `w` (m), clamped to `[0, log₂ N]`, as its whole
+    /// part and fraction.
+    fn level(&self, width_m: f64) -> (usize, f64) {
         let top = (self.levels.len() - 1) as f64;
         let level = if width_m > self.spacing { (width_m / self.spacing).log2().min(top) } else { 0.0 };
         let l0 = level.floor();
-        let f = level - l0;
-        let a = self.sample(l0 as usize, x, z);
+        (l0 as usize, level - l0)
+    }
+
+    /// The trilinear read at `(x, z)` between level `l0` and the next, a fraction `f` of the way.
+    fn trilinear(&self, (l0, f): (usize, f64), x: f64, z: f64) -> [f64; C] {
+        let a = self.sample(l0, x, z);
         if f <= 0.0 {
             return a;
         }
-        let b = self.sample(l0 as usize + 1, x, z);
+        let b = self.sample(l0 + 1, x, z);
         let mut out = a;
         for k in 0..C {
             out[k] += (b[k] - a[k]) * f;
@@ -127,6 +228,31 @@ impl<const C: usize> FftPyramid<C> {
     /// [`FftPyramid::box_mean`] with the box width `√12 s`.
     pub fn footprint_mean(&self, x: f64, z: f64, footprint_m: f64) -> [f64; C] {
         self.box_mean(x, z, BOX_WIDTH_PER_SIGMA * footprint_m)
+    }
+
+    /// The channels' means over an elliptical footprint: the mean of its probes' round reads
+    /// ([`EllipticalFootprint`]). One read where the probes could not differ: the footprint is
+    /// round, or the round reads reach the `1 × 1` level (all the grid mean), or the major
+    /// axis's box is within one texel of level 0 (the probes would all read one bilinear patch,
+    /// linear along the axis, whose mean over the row is its centre's value).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: centre (m), finite; `footprint`: the ellipse.
+    pub fn ellipse_mean(&self, x: f64, z: f64, footprint: &EllipticalFootprint) -> [f64; C] {
+        let width = BOX_WIDTH_PER_SIGMA * footprint.minor_m;
+        let whole = self.spacing * self.resolution() as f64;
+        if footprint.count == 1 || width >= whole || BOX_WIDTH_PER_SIGMA * footprint.major_m <= self.spacing {
+            return self.box_mean(x, z, width);
+        }
+        let level = self.level(width);
+        let mut out = [0.0; C];
+        for o in footprint.offsets() {
+            for (a, b) in out.iter_mut().zip(self.trilinear(level, x + o.x, z + o.y)) {
+                *a += b;
+            }
+        }
+        let inv = 1.0 / footprint.count as f64;
+        out.map(|v| v * inv)
     }
 }
 
@@ -153,5 +279,109 @@ mod tests {
         // Level 0 at a grid point is the grid value; beyond the tile, the mean.
         assert_eq!(p.box_mean(3.0 * 0.5, 7.0 * 0.5, 0.0)[0].to_bits(), base[7 * n + 3][0].to_bits());
         assert!((p.box_mean(1.0, 2.0, 1e6)[0] - mean).abs() < MEAN_ROUND_ABS);
+    }
+
+    /// A pyramid of a plane wave `cos(2πx/λ)` (channel 0) and its square (channel 1) on a
+    /// `256²` grid of 0.1 m, `λ` = 0.8 m (8 texels, a whole number of periods per tile).
+    fn wave_pyramid() -> FftPyramid<2> {
+        let (n, dx, lambda) = (256, 0.1, 0.8);
+        let base = (0..n * n)
+            .map(|k| {
+                let c = (std::f64::consts::TAU * (k % n) as f64 * dx / lambda).cos();
+                [c, c * c]
+            })
+            .collect();
+        FftPyramid::new(n, dx, base)
+    }
+
+    /// The largest `|value|` of channel 0 read at 64 points along x.
+    fn amplitude(read: impl Fn(f64) -> f64) -> f64 {
+        (0..64).map(|i| read(0.0137 + 0.0125 * f64::from(i)).abs()).fold(0.0, f64::max)
+    }
+
+    /// Relative rounding of the probes' variance: a sum of at most 14 squares.
+    const PROBE_VARIANCE_ROUNDING: f64 = 1e-12;
+
+    proptest::proptest! {
+        /// The probes have the ellipse's extra variance along the axis, `s_major² − s_minor²`
+        /// (the minor axis widened to `s_major/8` beyond [`MAX_ANISOTROPY`]), at most 15 of them,
+        /// spaced at most `2 s_minor` apart, centred.
+        #[test]
+        fn the_probes_carry_the_ellipses_variance(
+            minor in 1e-3f64..10.0, ratio in 1.0f64..40.0, angle in 0.0f64..std::f64::consts::TAU,
+        ) {
+            let major = minor * ratio;
+            let e = EllipticalFootprint::new(minor, major, DVec2::from_angle(angle) * 3.0);
+            let widened = minor.max(major / MAX_ANISOTROPY);
+            proptest::prop_assert!((e.minor_m() - widened).abs() <= 1e-15 * widened);
+            let n = e.probes() as f64;
+            proptest::prop_assert!(e.probes() <= 15);
+            let offsets: Vec<DVec2> = e.offsets().collect();
+            let mean = offsets.iter().sum::<DVec2>() / n;
+            proptest::prop_assert!(mean.length() <= 1e-12 * major);
+            let variance = offsets.iter().map(|o| o.length_squared()).sum::<f64>() / n;
+            let extra = major * major - widened * widened;
+            if e.probes() > 1 {
+                proptest::prop_assert!((variance - extra).abs() <= PROBE_VARIANCE_ROUNDING * extra);
+                proptest::prop_assert!(e.step.length() <= PROBE_SPACING_PER_SIGMA * widened * (1.0 + 1e-12));
+                // Along the axis given.
+                proptest::prop_assert!(e.step.perp_dot(DVec2::from_angle(angle)).abs() <= 1e-12 * e.step.length());
+            } else {
+                proptest::prop_assert!(extra <= 0.01 * widened * widened * (1.0 + 1e-12));
+            }
+        }
+
+        /// Each probe is a mean over the grid, so the ellipse's mean of `x²` stays above the square
+        /// of its mean of `x` (a covariance stays a covariance).
+        #[test]
+        fn an_elliptical_mean_keeps_jensens_inequality(
+            x in -20.0f64..20.0, z in -20.0f64..20.0, minor in 0.0f64..2.0, ratio in 1.0f64..30.0,
+            angle in 0.0f64..std::f64::consts::TAU,
+        ) {
+            let p = wave_pyramid();
+            let m = p.ellipse_mean(x, z, &EllipticalFootprint::new(minor, minor * ratio, DVec2::from_angle(angle)));
+            proptest::prop_assert!(m[1] - m[0] * m[0] >= -MEAN_ROUND_ABS, "{m:?}");
+        }
+    }
+
+    /// A round ellipse reads exactly as the round footprint.
+    #[test]
+    fn a_round_ellipse_is_the_round_read() {
+        let p = wave_pyramid();
+        for (x, s) in [(0.31, 0.0), (1.7, 0.05), (-3.2, 0.4), (5.5, 30.0)] {
+            let round = p.footprint_mean(x, 0.7, s);
+            for e in [
+                EllipticalFootprint::round(s),
+                EllipticalFootprint::new(s, s, DVec2::X),
+                EllipticalFootprint::new(s, s, DVec2::ZERO),
+            ] {
+                let m = p.ellipse_mean(x, 0.7, &e);
+                assert_eq!(m.map(f64::to_bits), round.map(f64::to_bits), "x = {x}, s = {s}");
+            }
+        }
+    }
+
+    /// An ellipse 8 times longer than wide averages away a wave along its major axis and keeps
+    /// one across it as the round read of its width does. Along x, the 14 probes 0.123 m apart
+    /// over the 0.8 m wave respond by `|sin(nkh/2)/(n sin(kh/2))| ≈ 0.07`; across, every probe
+    /// reads the same column of the wave.
+    #[test]
+    fn an_ellipse_averages_the_waves_along_its_axis_only() {
+        /// The comb's response (0.07) with room for the trilinear reads' own blur.
+        const ALONG_RESPONSE: f64 = 0.1;
+        /// Probes on one column of a wave constant along z: the same values summed 14 times.
+        const ACROSS_ROUNDING: f64 = 1e-12;
+        let p = wave_pyramid();
+        let (minor, major) = (0.0625, 0.5);
+        let round = amplitude(|x| p.footprint_mean(x, 0.3, minor)[0]);
+        assert!(round > 0.5, "the round read keeps the wave: {round}");
+        let along = amplitude(|x| p.ellipse_mean(x, 0.3, &EllipticalFootprint::new(minor, major, DVec2::X))[0]);
+        assert!(along < ALONG_RESPONSE * round, "along the axis: {along} vs {round}");
+        for i in 0..32 {
+            let x = 0.011 + 0.05 * f64::from(i);
+            let across = p.ellipse_mean(x, 0.3, &EllipticalFootprint::new(minor, major, DVec2::Y))[0];
+            let r = p.footprint_mean(x, 0.3, minor)[0];
+            assert!((across - r).abs() <= ACROSS_ROUNDING, "x = {x}: {across} vs {r}");
+        }
     }
 }

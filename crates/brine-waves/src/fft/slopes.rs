@@ -3,7 +3,7 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::{FftFrame, FftPyramid};
+use crate::{EllipticalFootprint, FftFrame, FftPyramid};
 
 /// The slopes of an FFT sea over a pixel footprint.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -69,9 +69,29 @@ impl FftSlopeFilter {
     /// [`FilteredSlopes`].
     pub fn filtered(&self, x: f64, z: f64, footprint_m: f64) -> FilteredSlopes {
         debug_assert!(footprint_m >= 0.0);
+        Self::from_moments(self.cascades.iter().map(|p| p.footprint_mean(x, z, footprint_m)))
+    }
+
+    /// Mean gradient and slope covariance over an elliptical Gaussian footprint (a pixel seen at
+    /// a slant, stretched along the view): as [`Self::filtered`], each cascade read by
+    /// [`FftPyramid::ellipse_mean`]. The waves along the major axis are averaged over its length,
+    /// those across it over the minor axis only, and what the footprint averages away joins the
+    /// covariance.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: footprint centre on the sea (m).
+    /// - `footprint`: the ellipse ([`EllipticalFootprint`]).
+    ///
+    /// # Returns
+    /// [`FilteredSlopes`].
+    pub fn filtered_elliptical(&self, x: f64, z: f64, footprint: &EllipticalFootprint) -> FilteredSlopes {
+        Self::from_moments(self.cascades.iter().map(|p| p.ellipse_mean(x, z, footprint)))
+    }
+
+    /// The gradient and covariance of the cascades' footprint moments `(ζₓ, ζ_z, ζₓ², ζₓζ_z, ζ_z²)`.
+    fn from_moments(moments: impl Iterator<Item = [f64; 5]>) -> FilteredSlopes {
         let (mut g, mut cov) = (DVec2::ZERO, DVec3::ZERO);
-        for p in &self.cascades {
-            let m = p.footprint_mean(x, z, footprint_m);
+        for m in moments {
             g += DVec2::new(m[0], m[1]);
             // Footprint means are convex combinations, so the covariance is a covariance (Jensen,
             // Cauchy–Schwarz) but for the f32 storage, which alone the clamps absorb.

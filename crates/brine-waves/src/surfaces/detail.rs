@@ -263,6 +263,21 @@ impl DetailSlopes {
         self.filter.filtered(x, z, footprint_m)
     }
 
+    /// [`Self::filtered`] over an elliptical footprint ([`FftSlopeFilter::filtered_elliptical`]):
+    /// a pixel seen at a slant averages the detail along the view over its length.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: point on the sea (m), finite; `footprint`: the ellipse.
+    ///
+    /// # Returns
+    /// [`FilteredSlopes`], as [`Self::filtered`].
+    ///
+    /// # References
+    /// Olano & Baker 2010 (LEAN mapping); Heckbert 1989 (elliptical footprints).
+    pub fn filtered_elliptical(&self, x: f64, z: f64, footprint: &crate::EllipticalFootprint) -> FilteredSlopes {
+        self.filter.filtered_elliptical(x, z, footprint)
+    }
+
     /// Expected slope covariance of the detail band (world axes `(xx, xz, zz)`).
     pub fn expected_slope_covariance(&self) -> DVec3 {
         self.covariance
