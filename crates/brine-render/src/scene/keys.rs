@@ -242,7 +242,7 @@ pub const KEYS: &[KeySpec] = &[
         Kind::Int { lo: 1, hi: 4096 },
         "1",
         "1",
-        "samples per pixel (1: pixel centre; more: jittered from the seed)",
+        "samples per pixel (1: pixel centre; more: jittered from the seed, each filtering over `max(1/8, 1/√spp)` of the pixel's footprint)",
     ),
     // [sea]
     k(
