@@ -7,7 +7,8 @@
 //!   scene's wind (12.5 m above the sea, the neutral log profile);
 //! - **peaks**: on a top-down view of the same sea (50 m up, 256² normals), the share of the slope
 //!   power held by the 20 strongest wave vectors of its 2-D spectrum; a handful of crossing waves
-//!   (a lattice of glints) puts most of the power there, a sea of many waves very little;
+//!   (a lattice of glints) puts most of the power there, a sea of many waves very little; also
+//!   of the wave vectors the view resolves (four cycles across it or more, Hann-tapered);
 //! - **glitter** (2, 5 and 12 m/s): the total slope variance that the sun's glitter implies,
 //!   inverted as Cox & Munk (1954) did from their photographs, over that of a Gaussian sea of
 //!   Cox & Munk's total seen through the same image.
@@ -86,42 +87,62 @@ fn slope_variance(s: &[(f64, f64)]) -> f64 {
     s.iter().map(|p| (p.0 - mx).powi(2) + (p.1 - mz).powi(2)).sum::<f64>() / n
 }
 
+/// Fewest cycles across the top-down view a wave vector needs to count in the resolved peak
+/// share: a wave longer than a quarter of the view shows as a tilt or a bend of it, not as a
+/// wave vector the view can tell from its neighbours.
+const RESOLVED_CYCLES: f64 = 4.0;
+
 /// Share of the slope power (mean removed) in the [`PEAKS`] strongest bins of the 2-D spectra of
-/// both slope components of a top-down frame.
-fn peak_share(frame: &Frame) -> f64 {
+/// both slope components of a top-down frame: `(plain, resolved)`. The plain share is of the
+/// image as it is; the resolved one tapers it with a Hann window (so the image's edges leak no
+/// power) and keeps the wave vectors of at least [`RESOLVED_CYCLES`] cycles across the view,
+/// where a lattice of crossing short waves shows. Waves longer than the view put their slope in
+/// the few lowest bins whatever the sea, which the plain share counts as peaks.
+fn peak_share(frame: &Frame) -> (f64, f64) {
     let n = frame.width as usize;
     let mut planner = FftPlanner::new();
     let fft = planner.plan_fft_forward(n);
-    let mut power = vec![0.0; n * n];
-    for component in [0usize, 2] {
-        let mut grid: Vec<Complex64> = frame
-            .aovs
-            .iter()
-            .map(|a| {
-                let ny = a.normal[1].max(0.05);
-                Complex64::new(-f64::from(a.normal[component] / ny), 0.0)
-            })
-            .collect();
-        let mean = grid.iter().map(|c| c.re).sum::<f64>() / (n * n) as f64;
-        grid.iter_mut().for_each(|c| c.re -= mean);
-        for row in grid.chunks_mut(n) {
-            fft.process(row);
-        }
-        let mut column = vec![Complex64::ZERO; n];
-        for x in 0..n {
-            for y in 0..n {
-                column[y] = grid[y * n + x];
+    let hann: Vec<f64> =
+        (0..n).map(|i| 0.5 - 0.5 * (std::f64::consts::TAU * (i as f64 + 0.5) / n as f64).cos()).collect();
+    let spectrum = |taper: bool| {
+        let mut power = vec![0.0; n * n];
+        for component in [0usize, 2] {
+            let slope: Vec<f64> =
+                frame.aovs.iter().map(|a| -f64::from(a.normal[component] / a.normal[1].max(0.05))).collect();
+            let weight = |i: usize| if taper { hann[i % n] * hann[i / n] } else { 1.0 };
+            let w_sum: f64 = (0..n * n).map(weight).sum();
+            let mean = (0..n * n).map(|i| weight(i) * slope[i]).sum::<f64>() / w_sum;
+            let mut grid: Vec<Complex64> =
+                (0..n * n).map(|i| Complex64::new(weight(i) * (slope[i] - mean), 0.0)).collect();
+            for row in grid.chunks_mut(n) {
+                fft.process(row);
             }
-            fft.process(&mut column);
-            for y in 0..n {
-                power[y * n + x] += column[y].norm_sqr();
+            let mut column = vec![Complex64::ZERO; n];
+            for x in 0..n {
+                for y in 0..n {
+                    column[y] = grid[y * n + x];
+                }
+                fft.process(&mut column);
+                for y in 0..n {
+                    power[y * n + x] += column[y].norm_sqr();
+                }
             }
         }
-    }
-    let total: f64 = power.iter().sum();
-    power.sort_by(|a, b| b.total_cmp(a));
+        power
+    };
     // A real field's spectrum is symmetric: each wave is two bins.
-    power.iter().take(2 * PEAKS).sum::<f64>() / total.max(f64::MIN_POSITIVE)
+    let share = |mut power: Vec<f64>| {
+        let total: f64 = power.iter().sum();
+        power.sort_by(|a, b| b.total_cmp(a));
+        power.iter().take(2 * PEAKS).sum::<f64>() / total.max(f64::MIN_POSITIVE)
+    };
+    let cycles = |i: usize| {
+        let f = |j: usize| if j <= n / 2 { j as f64 } else { j as f64 - n as f64 };
+        f(i % n).hypot(f(i / n))
+    };
+    let resolved: Vec<f64> =
+        spectrum(true).into_iter().enumerate().filter(|&(i, _)| cycles(i) >= RESOLVED_CYCLES).map(|(_, p)| p).collect();
+    (share(spectrum(false)), share(resolved))
 }
 
 /// Winds up to which the sparkle figure is measured (m s⁻¹), and its reference sample count.
@@ -457,7 +478,7 @@ pub fn run(root: &Path) -> Result<(), String> {
                 String::new()
             };
             let top = render(&scene_text(surface, wind, true, 1), &format!("{name}-top.toml"))?;
-            let peaks = peak_share(&top);
+            let (peaks, resolved_peaks) = peak_share(&top);
             let sparkle = if wind <= SPARKLE_MAX_WIND {
                 format!(" · sparkle {:.2}", sparkle_of(root, surface, wind)?)
             } else {
@@ -470,7 +491,7 @@ pub fn run(root: &Path) -> Result<(), String> {
                 String::new()
             };
             cells.push(format!(
-                "![{surface} at {wind} m/s](beaufort/{name}.png)<br>detail {detail:.2} (reach {reach:.2}) · peaks {peaks:.2}{lags}{sparkle}{sky}"
+                "![{surface} at {wind} m/s](beaufort/{name}.png)<br>detail {detail:.2} (reach {reach:.2}) · peaks {peaks:.2} (resolved {resolved_peaks:.2}){lags}{sparkle}{sky}"
             ));
             let sun_name = format!("{name}-sun");
             let facing = render(&scene_text_facing(surface, wind, false, 1, true), &format!("{sun_name}.toml"))?;
@@ -520,7 +541,12 @@ pub fn run(root: &Path) -> Result<(), String> {
            there, and one that showed more would sparkle.\n\
          - **peaks**: on a top-down view of the same sea (50 m up, 256 × 256 normals), the share of the\n\
            slope power in its {PEAKS} strongest wave vectors. A handful of crossing waves — a lattice of\n\
-           glints — puts most of the power there; a sea of many waves little.\n\
+           glints — puts most of the power there; a sea of many waves little. In brackets, the same\n\
+           share of the wave vectors the view resolves (at least {RESOLVED_CYCLES} cycles across it, the\n\
+           image tapered by a Hann window): waves longer than a quarter of the 58 m view show as a tilt\n\
+           of it and put their slope in its few lowest bins, whatever the sea, which the plain share\n\
+           counts as peaks (of the fitted trochoid set's slope variance, 22 % at 8 m/s, 39 % at 12 and\n\
+           51 % at 16 is in waves longer than a quarter of the view).\n\
          - **tile lags** (FFT): how much the sea repeats. Each cascade is periodic, so one of its\n\
            tiles away the slopes correlate with themselves by its share of their variance, on top of\n\
            what any sea of the same spectrum correlates there. The figure is the largest share: of the\n\
