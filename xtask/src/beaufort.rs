@@ -445,6 +445,18 @@ fn sparkle_of(root: &Path, surface: &str, wind: f64) -> Result<f64, String> {
     Ok(far_noise(&frame, &coarse)? / far_noise(&fine, &reference)?)
 }
 
+/// `cargo xtask beaufort --energy`: the sheet's energy bands alone, printed.
+pub fn energy() -> Result<(), String> {
+    for surface in SURFACES {
+        for wind in ENERGY_WINDS {
+            let bands = energy_bands(surface, wind)?;
+            let cells: Vec<String> = bands.iter().map(|b| format!("{:+.1} %", 100.0 * (b - 1.0))).collect();
+            println!("energy {surface} {wind} m/s: {}", cells.join(" "));
+        }
+    }
+    Ok(())
+}
+
 /// `cargo xtask beaufort --sparkle`: the sheet's sparkle figures alone, printed.
 pub fn sparkle(root: &Path) -> Result<(), String> {
     for wind in WINDS.into_iter().filter(|&w| w <= SPARKLE_MAX_WIND) {

@@ -56,6 +56,10 @@ enum Task {
         /// nothing in docs/.
         #[arg(long)]
         sparkle: bool,
+        /// Only measure the energy bands (filtered frame against the reference) and print them;
+        /// write nothing in docs/.
+        #[arg(long)]
+        energy: bool,
     },
     /// Measure white water from above (docs/whitewater.md, docs/whitewater/*.png).
     Whitewater {
@@ -98,9 +102,11 @@ fn run(cli: Cli) -> Result<(), String> {
             gallery(&names)?;
             if names.is_empty() { beaufort::run(&root()) } else { Ok(()) }
         }
-        Task::Beaufort { sparkle } => {
+        Task::Beaufort { sparkle, energy } => {
             if sparkle {
                 beaufort::sparkle(&root())
+            } else if energy {
+                beaufort::energy()
             } else {
                 beaufort::run(&root())
             }
