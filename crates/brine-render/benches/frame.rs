@@ -38,7 +38,7 @@ fn measure(label: &str, scene: &Scene) -> f64 {
     let (s, f) = (median(&mut setup), median(&mut total));
     let frame = last.expect("ran");
     println!("\n{label}");
-    println!("whole frame (median)                   {f:>8.3} s   (target ≤ 0.5 s)");
+    println!("whole frame (median)                   {f:>8.3} s");
     println!("  scene setup (fit or FFT, sky, calibration)  {s:>8.3} s");
     println!(
         "evaluations of F per primary ray: {:.2}; secondary rays: {} ({:.2} evaluations each)",
