@@ -12,6 +12,11 @@ const BENCHES: &[(&str, &str, &[&str])] = &[
         &["bench", "-p", "brine-render", "--bench", "frame"],
     ),
     (
+        "animation",
+        "a 24-frame animation of the reference frame against a still of it, per frame, both surfaces; frames checked equal to stills (brine-render)",
+        &["bench", "-p", "brine-render", "--bench", "animation"],
+    ),
+    (
         "export",
         "the default sea handed to other tools: a 1024² bake frame, a 1 M-vertex mesh, 10⁶ point queries (brine-render)",
         &["bench", "-p", "brine-render", "--bench", "export"],

@@ -62,4 +62,4 @@ mod world;
 pub use output::{OutputError, OutputFormat, write_frame, write_image};
 pub use render::{Aov, Frame, RenderError, RenderOptions, Stage, StageTimes, render, render_world};
 pub use scene::{Scene, SceneError};
-pub use world::{Cover, NIGHT_ADAPTATION_LX, WhiteWaterSea, World, WorldError, auto_exposure_ev};
+pub use world::{Cover, NIGHT_ADAPTATION_LX, Timeless, WhiteWaterSea, World, WorldError, auto_exposure_ev};

@@ -8,7 +8,8 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use super::CliError;
 use crate::output::OutputFormat;
-use crate::{RenderError, RenderOptions, Scene, render, write_frame};
+use crate::world::{Timeless, World, WorldError};
+use crate::{RenderError, RenderOptions, Scene, render_world, write_frame};
 
 /// Arguments of `brine render`.
 #[derive(Debug, Clone, Default, clap::Args)]
@@ -240,10 +241,21 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     }
     let (first, last) = args.frames.unwrap_or((0, 1));
     let mut evaluations = 0.0;
+    let input = |w: WorldError| CliError::Input(format!("{}: {w}", scene_name(args)));
+    // What does not change between frames (the fit, the ocean's amplitudes, the detail band,
+    // the white water's calibration) is built once for the run.
+    let mut timeless: Option<Timeless> = None;
     for (frame, path) in &todo {
         let s = scene_at_frame(&scene, *frame, (first, last), args.time_lapse)?;
-        let frame = render(&s, &options, &on_row).map_err(|e| match e {
-            RenderError::World(w) => CliError::Input(format!("{}: {w}", scene_name(args))),
+        let parts = match timeless.take() {
+            Some(t) if t.fits(&s) => t,
+            _ => Timeless::new(&s, None).map_err(input)?,
+        };
+        let mut world = World::at_instant(&s, &parts).map_err(input)?;
+        timeless = Some(parts);
+        world.set_reference(options.reference);
+        let frame = render_world(&s, &world, &options, &on_row).map_err(|e| match e {
+            RenderError::World(w) => input(w),
             other => CliError::Failure(other.to_string()),
         })?;
         write_frame(path, &frame, frame.exposure_ev, scene.output.aovs)

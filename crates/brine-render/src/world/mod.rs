@@ -2,8 +2,8 @@
 
 use brine_ephem::{Atmosphere, Observer, Options as EphemOptions, SunModel, moon_position, parse_utc, sun_position};
 use brine_foam::{
-    CoverageParams, DARLES_ONSET_WIND_M_S, FoamExtension, FoamExtensionParams, FoamMemory, FoamMemoryParams, FoamPoint,
-    KoepkeFoam, SprayMedium, SprayParams, SurfaceStatistics, WhiteWater, WhitecapLaw,
+    CoverageParams, DARLES_ONSET_WIND_M_S, FoamExtension, FoamExtensionParams, FoamPoint, KoepkeFoam, SprayMedium,
+    SprayParams, SurfaceStatistics, WhiteWater, WhitecapLaw,
 };
 use brine_optics::{
     DipoleMaterial, RgbBands, RoughReflectance, SlopeVariance, SunDisc, WATER_IOR, WaterBody, WaterRgb,
@@ -18,25 +18,24 @@ use brine_waves::{
     TileLattice, Tma, TrochoidSet, TrochoidSum, fit_sea_state, seabed_relief,
 };
 use brine_whitecap::{
-    Calibration, CalibrationOptions, ErfMethod, FftBreaking, FftCalibration, FftJacobianMeans, FftJacobianStatistics,
-    FootprintFilter, JacobianStatistics, TrochoidBreaking, WhiteWaterModel, WhiteWaterOptions, whitecap_coverage,
+    Calibration, CalibrationOptions, ErfMethod, FftBreaking, FftCalibration, FftJacobianStatistics, FootprintFilter,
+    JacobianStatistics, TrochoidBreaking, WhiteWaterModel, whitecap_coverage,
 };
 use glam::{DVec2, DVec3};
-use rayon::prelude::*;
 
 use crate::camera::{Camera, direction_from_bearing};
 
 mod sea;
+mod timeless;
 mod white_water;
 
 use crate::scene::{
-    FloorConfig, Scene, SeaConfig, SkyConfig, SkyModelKind, SpectrumKind, SpreadingKind, SunModelKind, SurfaceKind,
-    SwellConfig,
+    FloorConfig, Scene, SeaConfig, SkyConfig, SkyModelKind, SpectrumKind, SpreadingKind, SunModelKind, SwellConfig,
 };
-use sea::{SeaSpectra, detail_slopes, fft_sea, fit_sea, sea_spectra, sea_statistics};
+use sea::{SeaSpectra, sea_spectra, sea_statistics};
+pub use timeless::Timeless;
 pub(crate) use white_water::EDGE_SHARE;
 pub use white_water::{ACTIVE_WHITECAP_SHARE, Foam, WhiteWaterSea, Whitecaps};
-use white_water::{FFT_CALIBRATION_TIME_S, FFT_WHITE_WATER_SAMPLES, breaking_footprint_of};
 
 /// Why a scene could not be turned into models: the model that refused, with its message.
 #[derive(Debug, thiserror::Error)]
@@ -442,33 +441,29 @@ impl World {
     /// # Errors
     /// [`WorldError`] if a model rejects a parameter.
     pub fn on_lattice(scene: &Scene, lattice: Option<&TileLattice>) -> Result<Self, WorldError> {
+        Self::at_instant(scene, &Timeless::new(scene, lattice)?)
+    }
+
+    /// Builds the world of a scene from the parts of it that do not change with time, built
+    /// once ([`Timeless::new`]) for every frame of an animation: the same world, bit for bit,
+    /// as [`World::on_lattice`] builds for the frame alone.
+    ///
+    /// # Errors
+    /// [`WorldError::Scene`] if `timeless` was built from another scene (other than by its
+    /// instants) or lattice; [`WorldError`] if a model rejects a parameter.
+    pub fn at_instant(scene: &Scene, timeless: &Timeless) -> Result<Self, WorldError> {
+        if !timeless.fits(scene) {
+            return Err(WorldError::Scene(
+                "the precomputed parts of the world belong to another scene (they may differ by its instants only)"
+                    .into(),
+            ));
+        }
         let s = &scene.sea;
         let wind_angle = s.wind_direction_deg.to_radians();
         let wind = DVec3::new(wind_angle.cos(), 0.0, wind_angle.sin());
-        // The FFT ocean has no trochoid set: its statistics come from the frame.
-        let set = if s.surface == SurfaceKind::Fft {
-            TrochoidSet::default()
-        } else {
-            let fitted = fit_sea(s)?;
-            match lattice {
-                Some(l) => l.snap(&fitted)?,
-                None => fitted,
-            }
-        };
-        let ocean = match s.surface {
-            SurfaceKind::Trochoids => Ocean::trochoids(set.clone()),
-            SurfaceKind::Gerstner => Ocean::gerstner(set.clone())?,
-            SurfaceKind::Sine => Ocean::sine(&set),
-            SurfaceKind::Fft => match fft_sea(s, lattice)? {
-                Some(ocean) => Ocean::fft(ocean),
-                None => Ocean::trochoids(set.clone()),
-            },
-        };
+        let set = timeless.set.clone();
+        let ocean = timeless.ocean.clone();
         let sea = ocean.at_time(s.time_s);
-        let fft_ocean = match &ocean {
-            Ocean::Fft { ocean } => Some(ocean.as_ref()),
-            _ => None,
-        };
         let stats = sea_statistics(&set, &sea, wind_angle);
 
         let k = &scene.sky;
@@ -499,10 +494,7 @@ impl World {
         let filtered_sky = FilteredSky::new(FILTERED_SKY_WIDTH, FILTERED_SKY_HEIGHT, |d| sky.radiance_rgb(d));
 
         let variance_total = SlopeVariance::cox_munk_clean_from_u10(s.wind_speed_m_s.min(60.0))?;
-        let detail = match s.surface {
-            SurfaceKind::Fft => None,
-            _ => detail_slopes(s, &stats, &variance_total)?,
-        };
+        let detail = timeless.detail.as_ref().map(|d| d.at_time(s.time_s));
         let (detail_along, detail_across) = detail.as_ref().map_or((0.0, 0.0), |d| {
             let c = d.expected_slope_covariance();
             let (wx, wz) = (wind.x, wind.z);
@@ -545,75 +537,11 @@ impl World {
             (true, true) => (1.0 - ACTIVE_WHITECAP_SHARE, ACTIVE_WHITECAP_SHARE),
             (f, w) => (f64::from(u8::from(f)), f64::from(u8::from(w))),
         };
-        // Foam and whitecaps together: active whitecaps and the foam they leave, calibrated as one
-        // on Monahan's W (brine-whitecap `WhiteWaterModel`, brine-foam `FoamMemory`); either
-        // alone, or a raw threshold, keeps the separate models.
+        // Foam and whitecaps together (calibrated once, [`Timeless`]); either alone, or a raw
+        // threshold, keeps the separate models.
         let together = ph.foam && ph.whitecaps && ph.foam_memory && ph.whitecap_alpha.is_none();
-        let white_water = if together && monahan > 0.0 && !stats.flat {
-            let s_b = breaking_footprint_of(s)?;
-            let forward = brine_whitecap::forward_face_offset(s_b, wind_angle);
-            // The edge noise has the scale of the waves just shorter than the breaking ones.
-            // On a tile's lattice the foam's noises repeat over the tile too.
-            let params = FoamMemoryParams {
-                edge_wavelength_m: (std::f64::consts::PI * s_b).clamp(0.5, 20.0),
-                tile_m: lattice.map(TileLattice::tile_m),
-                ..FoamMemoryParams::for_wind(s.wind_speed_m_s, wind_angle, s.seed)
-            };
-            let memory = FoamMemory::new(&params, KoepkeFoam::default().efficiency())?;
-            Some(match (sea.surface(), fft_ocean) {
-                (FrameSurface::Fft(_), Some(ocean)) => {
-                    // The long waves' Jacobian on the rest grids, now and at the memory's instants.
-                    let chop = ocean.options().choppiness;
-                    let stats_at =
-                        |t: f64| FftJacobianStatistics::from_rest_jacobians(&ocean.rest_jacobian_fields(t, s_b), chop);
-                    // The past is read for its mean alone.
-                    let means_at =
-                        |t: f64| FftJacobianMeans::from_rest_jacobians(&ocean.rest_jacobian_fields(t, s_b), chop);
-                    let breaking_at = |t: f64| {
-                        let past: Vec<(f64, FftJacobianMeans)> = (0..memory.sample_count())
-                            .into_par_iter()
-                            .map(|j| {
-                                let tj = memory.instant(t, j).0;
-                                (tj, means_at(tj))
-                            })
-                            .collect();
-                        FftBreaking::new(stats_at(t), past, s_b, ocean.jacobian_variance_removed(s_b, chop))
-                    };
-                    // Calibrated on the sea at the reference instant 0 s, whatever the frame: the
-                    // threshold is the same for every frame of an animation.
-                    let reference = breaking_at(FFT_CALIBRATION_TIME_S);
-                    let options = WhiteWaterOptions {
-                        samples: FFT_WHITE_WATER_SAMPLES,
-                        region_m: reference.now().largest_tile(),
-                        times_s: (FFT_CALIBRATION_TIME_S, FFT_CALIBRATION_TIME_S),
-                        seed: s.seed,
-                        ..WhiteWaterOptions::default()
-                    };
-                    // A frame at the reference instant reads the sea it was calibrated on.
-                    let now = (s.time_s.to_bits() != FFT_CALIBRATION_TIME_S.to_bits()).then(|| breaking_at(s.time_s));
-                    let calibrated = WhiteWaterModel::new(reference, memory, s_b, EDGE_SHARE, monahan, &options)?;
-                    let model = match now {
-                        Some(now) => calibrated.with_source(now),
-                        None => calibrated,
-                    };
-                    WhiteWaterSea::Fft(model.with_forward_face(forward).for_time(s.time_s))
-                }
-                _ => {
-                    let stats = JacobianStatistics::new(&set)?;
-                    // The frame's present and history in one pass.
-                    let stats = TrochoidBreaking::new(stats, memory.step(), DVec2::from_array(memory.drift()))
-                        .for_age(memory.instant(s.time_s, 0).1);
-                    let options = WhiteWaterOptions { seed: s.seed, ..WhiteWaterOptions::default() };
-                    WhiteWaterSea::Trochoids(
-                        WhiteWaterModel::new(stats, memory, s_b, EDGE_SHARE, monahan, &options)?
-                            .with_forward_face(forward)
-                            .for_time(s.time_s),
-                    )
-                }
-            })
-        } else {
-            None
-        };
+        let white_water =
+            if together && monahan > 0.0 && !stats.flat { timeless.white_water_at(s.time_s) } else { None };
         let foam = if ph.foam && !together && monahan > 0.0 && !stats.flat {
             let extension = FoamExtension::new(
                 &FoamExtensionParams { seed: s.seed, ..FoamExtensionParams::default() },

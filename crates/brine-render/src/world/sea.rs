@@ -194,6 +194,11 @@ pub(super) fn sea_statistics(set: &TrochoidSet, sea: &SeaFrame, wind_angle: f64)
             },
         };
     }
+    set_statistics(set, wind_angle)
+}
+
+/// The statistics of a fitted wave set (trochoid, Gerstner or sine sea), whatever the instant.
+pub(super) fn set_statistics(set: &TrochoidSet, wind_angle: f64) -> SeaStatistics {
     let (rx, ry) = set.slope_variances(wind_angle);
     let (sx, sz) = set.slope_variances(0.0);
     SeaStatistics {
@@ -210,14 +215,14 @@ pub(super) fn sea_statistics(set: &TrochoidSet, sea: &SeaFrame, wind_angle: f64)
     }
 }
 
-/// The detail normals of a fitted sea: the wind sea's directional spectrum from the top of the
+/// The detail waves of a fitted sea: the wind sea's directional spectrum from the top of the
 /// fitted band up to where the traced and detail slopes together reach Cox & Munk's total (or the
 /// 1 cm wave), `None` when the traced waves already hold it all.
-pub(super) fn detail_slopes(
+pub(super) fn detail_waves(
     s: &SeaConfig,
     stats: &SeaStatistics,
     total: &SlopeVariance,
-) -> Result<Option<DetailSlopes>, WorldError> {
+) -> Result<Option<DetailWaves>, WorldError> {
     if stats.flat || s.wind_speed_m_s <= 0.0 || s.waves == 0 {
         return Ok(None);
     }
@@ -229,6 +234,5 @@ pub(super) fn detail_slopes(
         return Ok(None);
     };
     let band = DetailOptions { seed: s.seed, wind_direction: o.wind_direction, ..band };
-    let detail = DetailWaves::new(spectrum, spreading, &band)?;
-    Ok(Some(detail.at_time(s.time_s)))
+    Ok(Some(DetailWaves::new(spectrum, spreading, &band)?))
 }

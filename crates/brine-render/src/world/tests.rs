@@ -1,4 +1,5 @@
 use super::*;
+use crate::scene::SurfaceKind;
 
 /// The band ends where the spectrum's slope integral reaches the target (bisection to 10⁻¹⁸ in
 /// ln k); the grid's cells cut the band's ring corners and hold 1–5 % less than that integral
@@ -131,4 +132,39 @@ fn samples_share_the_pixel_footprint() {
         assert!(world.filtering_angle() <= 0.0);
         approx::assert_relative_eq!(world.sample_angle(), world.camera.pixel_angle() * scale, max_relative = 1e-15);
     }
+}
+
+/// An animation builds the instant-free parts of its world once: a frame rendered from them,
+/// after other frames in any order, is its still to the bit, on both surfaces with the white
+/// water's memory (whose FFT history is kept from frame to frame).
+#[test]
+fn frames_built_on_shared_parts_are_their_stills() {
+    for surface in [SurfaceKind::Trochoids, SurfaceKind::Fft] {
+        let mut scene = Scene::default_scene();
+        (scene.camera.width, scene.camera.height) = (40, 24);
+        scene.sea.wind_speed_m_s = 14.0;
+        scene.sea.surface = surface;
+        let at = |f: u32| crate::cli::render::scene_at_frame(&scene, f, (0, 48), None).expect("a frame");
+        let timeless = Timeless::new(&at(0), None).expect("a valid scene");
+        for f in [0, 13, 12, 47] {
+            let s = at(f);
+            let shared = World::at_instant(&s, &timeless).expect("the same scene");
+            let pixels =
+                |w: &World| crate::render_world(&s, w, &crate::RenderOptions::default(), &|| {}).unwrap().pixels;
+            assert!(pixels(&shared) == pixels(&World::new(&s).unwrap()), "{surface:?} frame {f}");
+        }
+    }
+}
+
+/// Parts built for another scene (other than by its instants) are refused with a message.
+#[test]
+fn shared_parts_of_another_scene_are_refused() {
+    let scene = Scene::default_scene();
+    let timeless = Timeless::new(&scene, None).expect("a valid scene");
+    let mut other = scene.clone();
+    other.sea.time_s += 3.0;
+    assert!(World::at_instant(&other, &timeless).is_ok());
+    other.sea.wind_speed_m_s += 1.0;
+    let e = World::at_instant(&other, &timeless).err().expect("refused");
+    assert!(e.to_string().contains("another scene"), "{e}");
 }
