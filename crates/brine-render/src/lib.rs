@@ -57,9 +57,13 @@ pub mod output;
 mod render;
 pub mod scene;
 pub mod tonemap;
+#[cfg(feature = "view")]
+pub mod view;
 mod world;
 
 pub use output::{OutputError, OutputFormat, write_frame, write_image};
-pub use render::{Aov, Frame, RenderError, RenderOptions, Stage, StageTimes, render, render_world};
+pub use render::{
+    Aov, Frame, RenderError, RenderOptions, Stage, StageTimes, render, render_world, render_world_cancellable,
+};
 pub use scene::{Scene, SceneError};
 pub use world::{Cover, NIGHT_ADAPTATION_LX, Timeless, WhiteWaterSea, World, WorldError, auto_exposure_ev};

@@ -167,6 +167,9 @@ pub enum Command {
     Mesh(export::MeshArgs),
     /// Tileable maps of the rendered sea (displacement, normal, foam, whitecap, Jacobian, spray).
     Bake(export::BakeArgs),
+    /// The scene in a window, rendered progressively while you set wind, hour and camera.
+    #[cfg(feature = "view")]
+    View(crate::view::ViewArgs),
 }
 
 /// Parses the process arguments and runs; prints `error: …` on failure.
@@ -178,7 +181,7 @@ pub fn main() -> ExitCode {
         Err(e) => {
             let message = match (&e, sub) {
                 // Scene keys are named as in the scene file; model parameters as the flags.
-                (CliError::Input(m), Some(s)) if s != "render" => name_flags(s, m),
+                (CliError::Input(m), Some(s)) if s != "render" && s != "view" => name_flags(s, m),
                 _ => e.to_string(),
             };
             eprintln!("error: {message}");
@@ -204,6 +207,8 @@ fn subcommand_name(c: &Command) -> &'static str {
         Command::Query(_) => "query",
         Command::Mesh(_) => "mesh",
         Command::Bake(_) => "bake",
+        #[cfg(feature = "view")]
+        Command::View(_) => "view",
     }
 }
 
@@ -228,6 +233,8 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Some(Command::Query(args)) => export::run_query(&args),
         Some(Command::Mesh(args)) => export::run_mesh(&args),
         Some(Command::Bake(args)) => export::run_bake(&args),
+        #[cfg(feature = "view")]
+        Some(Command::View(args)) => crate::view::run(&args),
     }
 }
 

@@ -165,6 +165,9 @@ pub enum RenderError {
         /// Cause.
         message: String,
     },
+    /// The render was cancelled before its end ([`render_world_cancellable`]).
+    #[error("the render was cancelled")]
+    Cancelled,
 }
 
 /// Mixes the scene seed and a pixel index into a generator seed (SplitMix64 finaliser), so that
@@ -197,6 +200,23 @@ pub fn render_world(
     options: &RenderOptions,
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Frame, RenderError> {
+    render_world_cancellable(scene, world, options, on_row, None)
+}
+
+/// [`render_world`], given up as soon as `cancel` is set: the bands of rows not yet started are
+/// skipped and the call returns [`RenderError::Cancelled`] (what an interactive preview does when
+/// the view changes under it). A render that is not cancelled is the same image.
+///
+/// # Errors
+/// [`RenderError::Threads`] if the thread pool cannot start; [`RenderError::Cancelled`].
+pub fn render_world_cancellable(
+    scene: &Scene,
+    world: &World,
+    options: &RenderOptions,
+    on_row: &(dyn Fn() + Sync),
+    cancel: Option<&std::sync::atomic::AtomicBool>,
+) -> Result<Frame, RenderError> {
+    let cancelled = || cancel.is_some_and(|c| c.load(std::sync::atomic::Ordering::Relaxed));
     let (w, h) = (scene.camera.width, scene.camera.height);
     let spp = scene.camera.spp;
     let seed = scene.sea.seed;
@@ -213,6 +233,9 @@ pub fn render_world(
             .enumerate()
             .map(|(band, (rows, aov_rows))| {
                 let mut cx = Counters::new(options.profile);
+                if cancelled() {
+                    return cx;
+                }
                 let (y0, band_h) = (band * TILE, rows.len() / width);
                 // Each pixel's jitters, drawn from its own generator in sample order.
                 let jitter: Vec<(f64, f64)> = (0..rows.len())
@@ -286,6 +309,9 @@ pub fn render_world(
             .map_err(|e| RenderError::Threads { threads: n, message: e.to_string() })?
             .install(|| work(&mut pixels, &mut aovs)),
     };
+    if cancelled() {
+        return Err(RenderError::Cancelled);
+    }
     let post = std::time::Instant::now();
     let exposure_ev = world.exposure_ev.unwrap_or_else(|| {
         let l = crate::world::log_average_luminance_cd_m2(&pixels);

@@ -40,6 +40,30 @@ impl Scene {
         Self::from_toml_str(&text, &name)
     }
 
+    /// The scene as a scene file (TOML) that [`Scene::from_toml_str`] reads back as the same
+    /// scene; what `brine view` saves.
+    ///
+    /// # Errors
+    /// [`SceneError`] (naming `file`) if the scene breaks a rule of the scene files: a value out
+    /// of its range, keys that exclude each other.
+    pub fn to_toml(&self, file: &str) -> Result<String, SceneError> {
+        let text = toml::to_string(self).map_err(|e| SceneError {
+            file: file.to_owned(),
+            line: None,
+            message: e.to_string(),
+        })?;
+        // What is written is what is read back: the checks of a loaded file, and the same scene.
+        let back = Self::from_toml_str(&text, file)?;
+        if back != (Self { elapsed_s: 0.0, ..self.clone() }) {
+            return Err(SceneError {
+                file: file.to_owned(),
+                line: None,
+                message: "the scene does not survive being written as TOML (a value TOML cannot hold?)".into(),
+            });
+        }
+        Ok(text)
+    }
+
     /// Parses and checks a scene from TOML text; `file` names it in messages.
     ///
     /// Every key is checked against the key table ([`keys::KEYS`]: type, range, array length)

@@ -143,3 +143,31 @@ fn aovs_are_checked_against_the_final_output_path() {
     s.output.path = "x.exr".into();
     s.check_output().unwrap();
 }
+
+/// A scene written as TOML reads back as the same scene, for every gallery scene and for a
+/// scene edited as `brine view` edits one; a scene out of range is refused with its key.
+#[test]
+fn a_scene_written_as_toml_reads_back_the_same() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/gallery");
+    let mut scenes = vec![Scene::default_scene()];
+    for entry in std::fs::read_dir(&dir).expect("the gallery") {
+        let path = entry.expect("an entry").path();
+        if path.extension().is_some_and(|e| e == "toml") {
+            scenes.push(Scene::load(&path).expect("a gallery scene"));
+        }
+    }
+    assert!(scenes.len() > 5);
+    for scene in &mut scenes {
+        let text = scene.to_toml("edited.toml").expect("writable");
+        assert_eq!(&Scene::from_toml_str(&text, "edited.toml").expect("readable"), scene);
+        scene.sea.wind_speed_m_s = 13.25;
+        scene.camera.fov_deg = 37.5;
+        scene.phenomena.spray = !scene.phenomena.spray;
+        let text = scene.to_toml("edited.toml").expect("writable");
+        assert_eq!(&Scene::from_toml_str(&text, "edited.toml").expect("readable"), scene);
+    }
+    let mut bad = Scene::default_scene();
+    bad.sea.wind_speed_m_s = 75.0;
+    let e = bad.to_toml("edited.toml").unwrap_err().to_string();
+    assert!(e.contains("wind_speed_m_s") && e.contains("edited.toml"), "{e}");
+}

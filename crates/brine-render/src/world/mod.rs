@@ -208,6 +208,17 @@ impl World {
     pub fn set_reference(&mut self, reference: bool) {
         self.reference = reference;
     }
+
+    /// The same world seen through another camera: what a camera move changes (the camera,
+    /// whether it is under the sea, the samples' footprint for its samples per pixel); the sea,
+    /// the sky and the white water stay. The world is then the one [`World::new`] builds for the
+    /// scene with that camera.
+    pub fn set_camera(&mut self, camera: &crate::scene::CameraConfig) {
+        self.camera = crate::camera::from_config(camera);
+        self.sample_scale = sample_footprint_scale(camera.spp);
+        let c = self.camera.position;
+        self.underwater = c.y < self.sea.height(c.x, c.z);
+    }
 }
 
 /// White water at one point of the surface, as the renderer draws it there.

@@ -135,10 +135,10 @@ impl Timeless {
             None => set.is_empty(),
         };
         let variance_total = SlopeVariance::cox_munk_clean_from_u10(s.wind_speed_m_s.min(60.0))?;
-        let detail = match s.surface {
-            SurfaceKind::Fft => None,
+        let detail = || match s.surface {
+            SurfaceKind::Fft => Ok(None),
             // The statistics of a fitted sea are its set's, whatever the instant.
-            _ => sea::detail_waves(s, &sea::set_statistics(&set, wind_angle), &variance_total)?,
+            _ => sea::detail_waves(s, &sea::set_statistics(&set, wind_angle), &variance_total),
         };
 
         let ph = &key.phenomena;
@@ -153,7 +153,10 @@ impl Timeless {
         // alone, or a raw threshold, keeps the separate models.
         let together = ph.foam && ph.whitecaps && ph.foam_memory && ph.whitecap_alpha.is_none();
         let past_means = PastMeans::default();
-        let white_water = if together && monahan > 0.0 && !flat {
+        let white_water = || -> Result<_, WorldError> {
+            if !(together && monahan > 0.0 && !flat) {
+                return Ok(None);
+            }
             let s_b = breaking_footprint_of(s)?;
             let forward = brine_whitecap::forward_face_offset(s_b, wind_angle);
             // The edge noise has the scale of the waves just shorter than the breaking ones.
@@ -164,7 +167,7 @@ impl Timeless {
                 ..FoamMemoryParams::for_wind(s.wind_speed_m_s, wind_angle, s.seed)
             };
             let memory = FoamMemory::new(&params, KoepkeFoam::default().efficiency())?;
-            Some(match fft_ocean {
+            Ok(Some(match fft_ocean {
                 Some(ocean) => {
                     // Calibrated on the sea at the reference instant 0 s, whatever the frame: the
                     // threshold is the same for every frame of an animation.
@@ -186,10 +189,12 @@ impl Timeless {
                     let model = WhiteWaterModel::new(breaking.clone(), memory, s_b, EDGE_SHARE, monahan, &options)?;
                     CalibratedWhiteWater::Trochoids { model: Box::new(model), breaking: Box::new(breaking), forward }
                 }
-            })
-        } else {
-            None
+            }))
         };
+        // The detail band's spectrum and the white water's calibration do not depend on each
+        // other: built side by side (each the same whatever the threads).
+        let (detail, white_water) = rayon::join(detail, white_water);
+        let (detail, white_water) = (detail?, white_water?);
         Ok(Self { key, lattice: lattice.copied(), set, ocean, detail, white_water, past_means })
     }
 
