@@ -94,12 +94,14 @@ fn the_window_shows_sky_and_sea_and_follows_the_mouse() {
     let dir = tempfile::tempdir().expect("a temporary folder");
     let mut scene = brine_render::Scene::default_scene();
     scene.sea.waves = 24;
+    (scene.camera.width, scene.camera.height) = (160, 90);
+    scene.output.path = "rendered.png".into();
     let scene_path = dir.path().join("scene.toml");
     std::fs::write(&scene_path, scene.to_toml("scene.toml").expect("a valid scene")).expect("scene written");
     let stderr = view(
         dir.path(),
         &scene_path,
-        "settle\nscreenshot a.png\ndrag 0 -50 1\nsettle\nscreenshot b.png\nsave saved.toml\nquit\n",
+        "settle\nscreenshot a.png\ndrag 0 -50 1\nsettle\nscreenshot b.png\nsave saved.toml\nrender\nquit\n",
     );
     assert!(stderr.contains("first image"), "{stderr}");
 
@@ -118,7 +120,8 @@ fn the_window_shows_sky_and_sea_and_follows_the_mouse() {
     let (sky_rough, sea_rough) = (roughness(1..h - 1), roughness(h + 2..n - 1));
     assert!(sea_rough > sky_rough, "row-to-row change: sky {sky_rough}, sea {sea_rough}");
 
-    // Dragging up by 50 points pulls the view along: the horizon rises and the image changes.
+    // Dragging up by 50 points orbits the camera up, looking down more steeply: the horizon
+    // rises and the image changes.
     let b = Shot::read(&dir.path().join("b.png"));
     assert!(b.horizon() + 5 < h, "horizon {} then {}", h, b.horizon());
 
@@ -127,6 +130,11 @@ fn the_window_shows_sky_and_sea_and_follows_the_mouse() {
     let pitch = saved.camera.pitch_deg.expect("angles");
     assert!(pitch < brine_render::Scene::DEFAULT_PITCH_DEG - 1.0, "pitch {pitch}");
     assert_eq!(saved.sea, scene.sea);
+    assert!(saved.camera.position[1] > scene.camera.position[1], "the camera rose");
+
+    // The Render button wrote the output image at the output's size.
+    let written = image::open(dir.path().join(&scene.output.path)).expect("the rendered image");
+    assert_eq!((written.width(), written.height()), (scene.camera.width, scene.camera.height));
 }
 
 #[test]

@@ -289,7 +289,7 @@ impl ViewApp {
 
         ui.separator();
         ui.heading("Camera");
-        ui.label("Drag: look around. Right drag: move. Wheel: zoom.");
+        ui.label("Drag: orbit. Shift+drag: look around. Right drag: move. Wheel: zoom.");
         ui.add(egui::Slider::new(&mut s.camera.position[1], -5.0..=200.0).text("height (m)"));
         ui.add(egui::Slider::new(&mut s.camera.fov_deg, 5.0..=120.0).text("field of view (°)"));
 
@@ -302,8 +302,13 @@ impl ViewApp {
         ui.checkbox(&mut p.subsurface, "light through crests");
         ui.checkbox(&mut p.aerial_perspective, "aerial perspective");
         ui.checkbox(&mut p.glare, "glare");
-        if ui.checkbox(&mut p.clouds, "clouds").changed() && p.clouds && s.sky.clouds.is_none() {
-            s.sky.clouds = Some(CloudConfig::default());
+        // Clouds are drawn when the scene has a cloud layer and they are on.
+        let mut clouds = p.clouds && s.sky.clouds.is_some();
+        if ui.checkbox(&mut clouds, "clouds").changed() {
+            p.clouds = clouds;
+            if clouds && s.sky.clouds.is_none() {
+                s.sky.clouds = Some(CloudConfig::default());
+            }
         }
 
         ui.separator();
@@ -396,9 +401,15 @@ impl ViewApp {
         let d = response.drag_delta();
         if response.dragged_by(egui::PointerButton::Primary) && d != egui::Vec2::ZERO {
             let k = ORBIT_DEG_PER_POINT * c.fov_deg / 50.0;
-            let (yaw, pitch) = (c.yaw_deg.unwrap_or(0.0), c.pitch_deg.unwrap_or(0.0));
-            c.yaw_deg = Some((yaw - f64::from(d.x) * k).rem_euclid(360.0));
-            c.pitch_deg = Some((pitch + f64::from(d.y) * k).clamp(-89.0, 89.0));
+            let (dx, dy) = (f64::from(d.x) * k, f64::from(d.y) * k);
+            if ui.input(|i| i.modifiers.shift) {
+                // Look around from where the camera stands.
+                let (yaw, pitch) = (c.yaw_deg.unwrap_or(0.0), c.pitch_deg.unwrap_or(0.0));
+                c.yaw_deg = Some((yaw - dx).rem_euclid(360.0));
+                c.pitch_deg = Some((pitch + dy).clamp(-89.0, 89.0));
+            } else {
+                orbit(c, -dx, -dy);
+            }
         }
         if (response.dragged_by(egui::PointerButton::Secondary) || response.dragged_by(egui::PointerButton::Middle))
             && d != egui::Vec2::ZERO
@@ -489,6 +500,21 @@ impl ViewApp {
                 }
                 next = true;
             }
+            Step::Render => {
+                if !p.pressed {
+                    p.pressed = true;
+                    self.job = Some(start_render(scene, ctx.clone()));
+                } else if let Some(job) = &self.job {
+                    match &*job.done.lock().unwrap_or_else(PoisonError::into_inner) {
+                        None => {}
+                        Some(Ok(_)) => next = true,
+                        Some(Err(e)) => {
+                            *p.failed.lock().unwrap_or_else(PoisonError::into_inner) = Some(format!("render: {e}"));
+                            next = true;
+                        }
+                    }
+                }
+            }
             Step::Quit => {
                 ctx.send_viewport_cmd(egui::ViewportCommand::Close);
             }
@@ -499,6 +525,33 @@ impl ViewApp {
             p.pressed = false;
         }
     }
+}
+
+/// Distance (m) to the point a camera orbits when its view does not meet the sea within it.
+const ORBIT_FAR_M: f64 = 100.0;
+/// The lowest elevation (°) of an orbiting camera above its pivot: it stays above the sea.
+const ORBIT_MIN_ELEVATION_DEG: f64 = 2.0;
+
+/// Orbits the camera by `d_azimuth` and `d_elevation` (°) around the point it looks at: where
+/// its view meets the sea, or [`ORBIT_FAR_M`] ahead when that is farther or above the horizon.
+/// The camera keeps its distance to that point and looks at it.
+fn orbit(c: &mut crate::scene::CameraConfig, d_azimuth: f64, d_elevation: f64) {
+    let p = DVec3::from_array(c.position);
+    let f = crate::camera::direction_from_bearing(c.yaw_deg.unwrap_or(0.0), c.pitch_deg.unwrap_or(0.0));
+    let distance = if f.y < 0.0 && p.y > 0.0 { (-p.y / f.y).clamp(1.0, ORBIT_FAR_M) } else { ORBIT_FAR_M };
+    let pivot = p + f * distance;
+    let offset = p - pivot;
+    let r = offset.length();
+    let azimuth = offset.z.atan2(offset.x) + d_azimuth.to_radians();
+    let elevation = ((offset.y / r).clamp(-1.0, 1.0).asin().to_degrees() + d_elevation)
+        .clamp(ORBIT_MIN_ELEVATION_DEG, 89.0)
+        .to_radians();
+    let offset = DVec3::new(elevation.cos() * azimuth.cos(), elevation.sin(), elevation.cos() * azimuth.sin()) * r;
+    let position = pivot + offset;
+    let forward = (pivot - position) / r;
+    c.position = position.to_array();
+    c.yaw_deg = Some(forward.x.atan2(-forward.z).to_degrees().rem_euclid(360.0));
+    c.pitch_deg = Some(forward.y.clamp(-1.0, 1.0).asin().to_degrees());
 }
 
 /// Writes the scene as TOML, atomically.
@@ -593,6 +646,30 @@ mod tests {
                 "{yaw} {pitch}: {y} {q}"
             );
         }
+    }
+
+    /// Orbiting keeps the camera's distance to the point it looks at on the sea and keeps looking
+    /// at it; a full turn comes back to the start; the camera stays above the sea.
+    #[test]
+    fn the_camera_orbits_the_point_it_looks_at() {
+        const ORBIT_ROUNDING_M: f64 = 1e-9;
+        let mut c = Scene::default_scene().camera;
+        let p0 = DVec3::from_array(c.position);
+        let f0 = crate::camera::direction_from_bearing(c.yaw_deg.unwrap(), c.pitch_deg.unwrap());
+        let pivot = p0 + f0 * (-p0.y / f0.y);
+        let start = c.clone();
+        for _ in 0..8 {
+            orbit(&mut c, 45.0, 0.0);
+            let p = DVec3::from_array(c.position);
+            let f = crate::camera::direction_from_bearing(c.yaw_deg.unwrap(), c.pitch_deg.unwrap());
+            assert!(((p - pivot).length() - (p0 - pivot).length()).abs() < ORBIT_ROUNDING_M);
+            assert!((p + f * (p - pivot).length() - pivot).length() < ORBIT_ROUNDING_M);
+        }
+        for (a, b) in c.position.iter().zip(start.position) {
+            assert!((a - b).abs() < ORBIT_ROUNDING_M);
+        }
+        orbit(&mut c, 0.0, -80.0);
+        assert!(c.position[1] > 0.0 && c.pitch_deg.unwrap() < 0.0);
     }
 
     #[test]

@@ -11,6 +11,7 @@
 //! | `scroll DY` | scroll over the image by DY points (zoom) |
 //! | `screenshot FILE` | write the window as a PNG |
 //! | `save FILE` | save the scene as TOML (the "save" button) |
+//! | `render` | render the output image (the "render" button) and wait for it |
 //! | `quit` | close the window |
 
 use std::path::PathBuf;
@@ -39,6 +40,8 @@ pub enum Step {
     Screenshot(PathBuf),
     /// Save the scene as TOML.
     Save(PathBuf),
+    /// Render the output image and wait for it.
+    Render,
     /// Close the window.
     Quit,
 }
@@ -83,10 +86,11 @@ pub fn parse(text: &str) -> Result<Vec<Step>, String> {
             "scroll" => Step::Scroll(number(1, "DY")? as f32),
             "screenshot" => Step::Screenshot(path("the file")?),
             "save" => Step::Save(path("the file")?),
+            "render" => Step::Render,
             "quit" => Step::Quit,
             other => {
                 return Err(err(&format!(
-                    "unknown command `{other}` (expected wait, settle, drag, scroll, screenshot, save or quit)"
+                    "unknown command `{other}` (expected wait, settle, drag, scroll, screenshot, save, render or quit)"
                 )));
             }
         });
@@ -101,7 +105,7 @@ mod tests {
     #[test]
     fn scripts_parse_and_bad_lines_name_themselves() {
         let steps = parse(
-            "wait 0.5 # first image\nsettle\n\ndrag 10 -4 2 right\ndrag 3 4\nscroll -120\nscreenshot a.png\nquit",
+            "wait 0.5 # first image\nsettle\n\ndrag 10 -4 2 right\ndrag 3 4\nscroll -120\nscreenshot a.png\nrender\nquit",
         )
         .unwrap();
         assert_eq!(
@@ -113,6 +117,7 @@ mod tests {
                 Step::Drag { dx: 3.0, dy: 4.0, seconds: 0.5, pan: false },
                 Step::Scroll(-120.0),
                 Step::Screenshot("a.png".into()),
+                Step::Render,
                 Step::Quit,
             ]
         );
