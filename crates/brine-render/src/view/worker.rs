@@ -168,15 +168,7 @@ pub fn run(shared: &Shared, repaint: &(dyn Fn() + Sync)) {
             Ok(frame) => {
                 let render_s = t.elapsed().as_secs_f64();
                 schedule.done(pass, render_s);
-                let scale = crate::tonemap::exposure_scale(frame.exposure_ev);
-                let rgba = frame
-                    .pixels
-                    .iter()
-                    .flat_map(|&p| {
-                        let [r, g, b] = crate::tonemap::to_srgb8(p, scale);
-                        [r, g, b, 255]
-                    })
-                    .collect();
+                let rgba = rgba8(&frame);
                 let shown =
                     Shown { generation: request.generation, pass, size: (width, height), rgba, render_s, build_s };
                 *shared.shown.lock().unwrap_or_else(PoisonError::into_inner) = Some(shown);
@@ -189,6 +181,19 @@ pub fn run(shared: &Shared, repaint: &(dyn Fn() + Sync)) {
             }
         }
     }
+}
+
+/// A frame exposed and tone-mapped as `brine render` writes it to PNG: 8-bit sRGB, RGBA.
+pub fn rgba8(frame: &crate::Frame) -> Vec<u8> {
+    let scale = crate::tonemap::exposure_scale(frame.exposure_ev);
+    frame
+        .pixels
+        .iter()
+        .flat_map(|&p| {
+            let [r, g, b] = crate::tonemap::to_srgb8(p, scale);
+            [r, g, b, 255]
+        })
+        .collect()
 }
 
 /// Starts the render thread.
@@ -243,16 +248,7 @@ mod tests {
             let mut still = scene.clone();
             (still.camera.width, still.camera.height, still.camera.spp) = (24, 16, 16);
             let frame = crate::render(&still, &RenderOptions::default(), &|| {}).expect("renders");
-            let scale = crate::tonemap::exposure_scale(frame.exposure_ev);
-            let rgba: Vec<u8> = frame
-                .pixels
-                .iter()
-                .flat_map(|&p| {
-                    let [r, g, b] = crate::tonemap::to_srgb8(p, scale);
-                    [r, g, b, 255]
-                })
-                .collect();
-            assert!(rgba == shown.rgba, "generation {generation}");
+            assert!(rgba8(&frame) == shown.rgba, "generation {generation}");
         };
         check(&scene, 1);
         scene.camera.yaw_deg = Some(140.0);

@@ -35,6 +35,7 @@ use crate::scene::{
 use sea::{SeaSpectra, sea_spectra, sea_statistics};
 pub use timeless::Timeless;
 pub(crate) use white_water::EDGE_SHARE;
+use white_water::monahan_coverage;
 pub use white_water::{ACTIVE_WHITECAP_SHARE, Foam, WhiteWaterSea, Whitecaps};
 
 /// Why a scene could not be turned into models: the model that refused, with its message.
@@ -535,15 +536,8 @@ impl World {
             .map_err(WorldError::Scene)?;
         let water = WaterRgb::new(&body, RgbBands::SrgbAverage);
         let floor = scene.water.floor.as_ref().map(Floor::new).transpose()?;
-        // Whitecap coverage of the wind (Monahan & Ó Muircheartaigh 1980, or 1986 with the
-        // water–air temperature difference), shared between foam and active whitecaps.
         let ph = &scene.phenomena;
-        let law = match (scene.water.temperature_c, scene.water.air_temperature_c) {
-            (Some(tw), Some(ta)) => WhitecapLaw::monahan_1986_from_temperatures(tw, ta)?,
-            _ => WhitecapLaw::Monahan1980,
-        };
-        let monahan =
-            brine_foam::whitecap_coverage(&CoverageParams::new(s.wind_speed_m_s, law, DARLES_ONSET_WIND_M_S)?);
+        let monahan = monahan_coverage(scene)?;
         let (foam_share, whitecap_share) = match (ph.foam, ph.whitecaps) {
             (true, true) => (1.0 - ACTIVE_WHITECAP_SHARE, ACTIVE_WHITECAP_SHARE),
             (f, w) => (f64::from(u8::from(f)), f64::from(u8::from(w))),

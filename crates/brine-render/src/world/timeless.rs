@@ -1,6 +1,6 @@
 //! What of a world does not depend on the frame's instant, built once for an animation.
 
-use brine_foam::{CoverageParams, DARLES_ONSET_WIND_M_S, FoamMemory, FoamMemoryParams, KoepkeFoam, WhitecapLaw};
+use brine_foam::{FoamMemory, FoamMemoryParams, KoepkeFoam};
 use brine_optics::SlopeVariance;
 use brine_waves::{DetailWaves, FftOcean, Ocean, TileLattice, TrochoidSet};
 use brine_whitecap::{
@@ -12,7 +12,9 @@ use std::sync::Mutex;
 use glam::DVec2;
 use rayon::prelude::*;
 
-use super::white_water::{EDGE_SHARE, FFT_CALIBRATION_TIME_S, FFT_WHITE_WATER_SAMPLES, breaking_footprint_of};
+use super::white_water::{
+    EDGE_SHARE, FFT_CALIBRATION_TIME_S, FFT_WHITE_WATER_SAMPLES, breaking_footprint_of, monahan_coverage,
+};
 use super::{WhiteWaterSea, WorldError, sea};
 use crate::scene::{Scene, SurfaceKind};
 
@@ -142,12 +144,7 @@ impl Timeless {
         };
 
         let ph = &key.phenomena;
-        let law = match (key.water.temperature_c, key.water.air_temperature_c) {
-            (Some(tw), Some(ta)) => WhitecapLaw::monahan_1986_from_temperatures(tw, ta)?,
-            _ => WhitecapLaw::Monahan1980,
-        };
-        let monahan =
-            brine_foam::whitecap_coverage(&CoverageParams::new(s.wind_speed_m_s, law, DARLES_ONSET_WIND_M_S)?);
+        let monahan = monahan_coverage(&key)?;
         // Foam and whitecaps together: active whitecaps and the foam they leave, calibrated as one
         // on Monahan's W (brine-whitecap `WhiteWaterModel`, brine-foam `FoamMemory`); either
         // alone, or a raw threshold, keeps the separate models.

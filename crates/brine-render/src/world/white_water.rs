@@ -29,6 +29,17 @@ impl WhiteWaterSea {
 
 /// The footprint of the breaking waves for the wind sea of `[sea]` (brine-whitecap
 /// `breaking_footprint` of its peak phase speed `g/ω_p`); 0 without a wind sea.
+/// Monahan's whitecap coverage `W` of the scene's wind (the 1980 law, or 1986's with the
+/// water–air temperature difference when both temperatures are given), shared between foam and
+/// active whitecaps.
+pub(super) fn monahan_coverage(scene: &Scene) -> Result<f64, WorldError> {
+    let law = match (scene.water.temperature_c, scene.water.air_temperature_c) {
+        (Some(tw), Some(ta)) => WhitecapLaw::monahan_1986_from_temperatures(tw, ta)?,
+        _ => WhitecapLaw::Monahan1980,
+    };
+    Ok(brine_foam::whitecap_coverage(&CoverageParams::new(scene.sea.wind_speed_m_s, law, DARLES_ONSET_WIND_M_S)?))
+}
+
 pub(super) fn breaking_footprint_of(s: &SeaConfig) -> Result<f64, WorldError> {
     let SeaSpectra { spectra, .. } = sea_spectra(s, true)?;
     Ok(spectra.first().map_or(0.0, |sp| brine_whitecap::breaking_footprint(brine_waves::G / sp.peak_omega())))
