@@ -74,6 +74,8 @@ pub struct ViewApp {
     script: Option<Playback>,
     /// Set when the script failed; read by [`super::run`] after the window closes.
     pub script_error: Arc<Mutex<Option<String>>>,
+    /// The full render in progress; read by [`super::run`] after the window closes.
+    pub render_thread: RenderThread,
 }
 
 /// The view direction of a camera as yaw and pitch (°), `look_at` turned into angles.
@@ -150,6 +152,7 @@ impl ViewApp {
                 failed: failed.clone(),
             }),
             script_error: failed,
+            render_thread: RenderThread::default(),
         };
         // The first view is asked at once: its world is built while the window opens.
         app.send();
@@ -344,7 +347,7 @@ impl ViewApp {
                 .on_hover_text("Render the image at the output's size")
                 .clicked()
             {
-                self.job = Some(start_render(self.scene.clone(), ui.ctx().clone()));
+                self.job = Some(start_render(self.scene.clone(), ui.ctx().clone(), &self.render_thread));
             }
         });
         if let Some(job) = &self.job {
@@ -503,7 +506,7 @@ impl ViewApp {
             Step::Render => {
                 if !p.pressed {
                     p.pressed = true;
-                    self.job = Some(start_render(scene, ctx.clone()));
+                    self.job = Some(start_render(scene, ctx.clone(), &self.render_thread));
                 } else if let Some(job) = &self.job {
                     match &*job.done.lock().unwrap_or_else(PoisonError::into_inner) {
                         None => {}
@@ -571,10 +574,11 @@ fn write_screenshot(path: &Path, image: &egui::ColorImage) -> Result<(), String>
 }
 
 /// Starts the full render of `scene` on another thread.
-fn start_render(scene: Scene, ctx: egui::Context) -> Arc<Job> {
+fn start_render(scene: Scene, ctx: egui::Context, running: &RenderThread) -> Arc<Job> {
     let job = Arc::new(Job { total_rows: scene.camera.height, ..Job::default() });
     let j = job.clone();
-    std::thread::spawn(move || {
+    let path = scene.output.path.clone();
+    let handle = std::thread::spawn(move || {
         let on_row = || {
             j.rows.fetch_add(1, Ordering::Relaxed);
             ctx.request_repaint();
@@ -590,8 +594,13 @@ fn start_render(scene: Scene, ctx: egui::Context) -> Arc<Job> {
         *j.done.lock().unwrap_or_else(PoisonError::into_inner) = Some(result);
         ctx.request_repaint();
     });
+    *running.lock().unwrap_or_else(PoisonError::into_inner) = Some((path, handle));
     job
 }
+
+/// The full render in progress, if any: its output path and thread, which [`super::run`] waits
+/// for when the window closes (the image is not lost half made).
+pub type RenderThread = Arc<Mutex<Option<(PathBuf, std::thread::JoinHandle<()>)>>>;
 
 impl eframe::App for ViewApp {
     fn raw_input_hook(&mut self, ctx: &egui::Context, raw_input: &mut egui::RawInput) {

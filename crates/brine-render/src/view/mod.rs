@@ -77,6 +77,9 @@ pub fn run(args: &ViewArgs) -> Result<(), CliError> {
     });
     let app = app::ViewApp::new(scene, (args.width, args.height), shared.clone(), args.stats, script, opened);
     let script_error = app.script_error.clone();
+    let render_thread = app.render_thread.clone();
+    // Ctrl-C or SIGTERM removes the temporary of an image being written.
+    let _ = crate::output::remove_temporaries_on_signal();
     let options = eframe::NativeOptions {
         viewport: eframe::egui::ViewportBuilder::default()
             .with_title("Brine")
@@ -93,6 +96,14 @@ pub fn run(args: &ViewArgs) -> Result<(), CliError> {
     );
     shared.stop();
     let _ = handle.join();
+    // A render started with the button is finished, not lost, when the window closes.
+    let running = render_thread.lock().unwrap_or_else(std::sync::PoisonError::into_inner).take();
+    if let Some((path, thread)) = running {
+        if !thread.is_finished() {
+            eprintln!("brine view: finishing the render of {} (Ctrl-C stops it)", path.display());
+        }
+        let _ = thread.join();
+    }
     result.map_err(|e| CliError::Failure(format!("cannot open the window: {e}")))?;
     match script_error.lock().unwrap_or_else(std::sync::PoisonError::into_inner).take() {
         Some(e) => Err(CliError::Failure(e)),
