@@ -83,7 +83,7 @@ pub fn run(args: &ViewArgs) -> Result<(), CliError> {
     let options = eframe::NativeOptions {
         viewport: eframe::egui::ViewportBuilder::default()
             .with_title("Brine")
-            .with_inner_size([args.width as f32 + 340.0, (args.height as f32 + 40.0).max(620.0)]),
+            .with_inner_size([2.0 * args.width as f32 + 340.0, (2.0 * args.height as f32 + 40.0).max(620.0)]),
         ..Default::default()
     };
     let result = eframe::run_native(
