@@ -232,8 +232,8 @@ mod tests {
     }
 
     /// The render thread refines a view to its final pass, which is `brine render`'s image of
-    /// the scene at the preview's size and that pass's samples; a camera move, then a new hour,
-    /// are drawn the same way on the world it keeps.
+    /// the scene at the preview's size and that pass's samples; a camera move, a new hour and a
+    /// new wind are drawn the same way on what it keeps of the world.
     #[test]
     fn the_preview_ends_on_the_still_of_the_scene() {
         let (shared, handle) = spawn(|| {});
@@ -257,6 +257,9 @@ mod tests {
             place.time_utc = "2024-09-20T15:10:00Z".into();
         }
         check(&scene, 3);
+        // A new sea builds the instant-free parts again.
+        scene.sea.wind_speed_m_s = 14.0;
+        check(&scene, 4);
         shared.stop();
         handle.join().expect("the thread ends");
     }
