@@ -74,7 +74,8 @@ pub fn run(args: &ViewArgs) -> Result<(), CliError> {
         if let Some(c) = slot.get() {
             c.request_repaint();
         }
-    });
+    })
+    .map_err(|e| CliError::Failure(format!("cannot start the render thread: {e}")))?;
     let app = app::ViewApp::new(scene, (args.width, args.height), shared.clone(), args.stats, script, opened);
     let script_error = app.script_error.clone();
     let render_thread = app.render_thread.clone();

@@ -197,14 +197,16 @@ pub fn rgba8(frame: &crate::Frame) -> Vec<u8> {
 }
 
 /// Starts the render thread.
-pub fn spawn(repaint: impl Fn() + Send + Sync + 'static) -> (Arc<Shared>, std::thread::JoinHandle<()>) {
+///
+/// # Errors
+/// The system's error if the thread cannot be started.
+pub fn spawn(
+    repaint: impl Fn() + Send + Sync + 'static,
+) -> std::io::Result<(Arc<Shared>, std::thread::JoinHandle<()>)> {
     let shared = Arc::new(Shared::default());
     let s = shared.clone();
-    let handle = std::thread::Builder::new()
-        .name("brine-view-render".into())
-        .spawn(move || run(&s, &repaint))
-        .expect("the render thread starts");
-    (shared, handle)
+    let handle = std::thread::Builder::new().name("brine-view-render".into()).spawn(move || run(&s, &repaint))?;
+    Ok((shared, handle))
 }
 
 #[cfg(test)]
@@ -236,7 +238,7 @@ mod tests {
     /// new wind are drawn the same way on what it keeps of the world.
     #[test]
     fn the_preview_ends_on_the_still_of_the_scene() {
-        let (shared, handle) = spawn(|| {});
+        let (shared, handle) = spawn(|| {}).expect("the render thread starts");
         let mut scene = Scene::default_scene();
         scene.sea.waves = 12;
         let preview = (24, 16);
@@ -267,7 +269,7 @@ mod tests {
     /// A scene a model refuses is reported, and the thread goes on with the next request.
     #[test]
     fn a_refused_scene_is_reported() {
-        let (shared, handle) = spawn(|| {});
+        let (shared, handle) = spawn(|| {}).expect("the render thread starts");
         let mut scene = Scene::default_scene();
         scene.sea.waves = 12;
         scene.water.water_type = Some("not-a-type".into());
