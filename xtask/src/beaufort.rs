@@ -457,6 +457,40 @@ pub fn energy() -> Result<(), String> {
     Ok(())
 }
 
+/// Seeds of `cargo xtask beaufort --detail`.
+const DETAIL_SEEDS: u32 = 8;
+
+/// `cargo xtask beaufort --detail`: the detail figure of the sheet's view for [`DETAIL_SEEDS`]
+/// seeds at 8–22 m/s, each and pooled (the slopes of every seed's near field about their common
+/// mean), and the share of Cox & Munk's total that Elfouhaily et al.'s spectrum holds in waves
+/// longer than 20 m, which one view's 20 m deep near field sees as a tilt.
+pub fn detail() -> Result<(), String> {
+    for surface in SURFACES {
+        for wind in [8.0, 12.0, 16.0, 22.0] {
+            let mut pooled = Vec::new();
+            let mut each = Vec::new();
+            for seed in 1..=DETAIL_SEEDS {
+                let text = scene_text(surface, wind, false, 1).replace("seed = 3", &format!("seed = {seed}"));
+                let frame = render(&text, "detail.toml")?;
+                let s = slopes(&frame, NEAR_FIELD_M);
+                if !s.is_empty() {
+                    each.push(format!("{:.2}", slope_variance(&s) / cox_munk_total(wind)));
+                }
+                pooled.extend(s);
+            }
+            let spectrum = brine_waves::Elfouhaily::fully_developed(wind).map_err(|e| e.to_string())?;
+            let (up, cross) = spectrum.slope_variances(std::f64::consts::TAU / 20.0);
+            println!(
+                "detail {surface} {wind} m/s: seeds {} · pooled {:.2} · in waves over 20 m {:.2}",
+                each.join(" "),
+                slope_variance(&pooled) / cox_munk_total(wind),
+                (up + cross) / cox_munk_total(wind)
+            );
+        }
+    }
+    Ok(())
+}
+
 /// `cargo xtask beaufort --sparkle`: the sheet's sparkle figures alone, printed.
 pub fn sparkle(root: &Path) -> Result<(), String> {
     for wind in WINDS.into_iter().filter(|&w| w <= SPARKLE_MAX_WIND) {

@@ -60,6 +60,10 @@ enum Task {
         /// write nothing in docs/.
         #[arg(long)]
         energy: bool,
+        /// Only measure the near-field detail for 8 seeds (each and pooled) and print it; write
+        /// nothing in docs/.
+        #[arg(long)]
+        detail: bool,
     },
     /// Measure white water from above (docs/whitewater.md, docs/whitewater/*.png).
     Whitewater {
@@ -102,8 +106,10 @@ fn run(cli: Cli) -> Result<(), String> {
             gallery(&names)?;
             if names.is_empty() { beaufort::run(&root()) } else { Ok(()) }
         }
-        Task::Beaufort { sparkle, energy } => {
-            if sparkle {
+        Task::Beaufort { sparkle, energy, detail } => {
+            if detail {
+                beaufort::detail()
+            } else if sparkle {
                 beaufort::sparkle(&root())
             } else if energy {
                 beaufort::energy()

@@ -18,7 +18,9 @@
 //!   diffuse reflectance, Li Ying's Table 3, and light through thin crests.
 //! - **Ocean BRDF** (Bruneton, Neyret & Holzschuch 2010) — Gaussian slopes with anisotropic
 //!   variances (Cox & Munk 1954), Smith shadowing, Fresnel at the half vector, the reflected sun (a point or a disc of finite size),
-//!   the reflected sky from a filtered environment, and the slope variance of unresolved waves.
+//!   the reflected sky from a filtered environment, and the slope variance of unresolved waves;
+//!   the rough sea's reflectance over the visible normals (Heitz 2014), split between the sky and
+//!   the neighbouring waves.
 //!
 //! ## Notation
 //!
@@ -38,6 +40,7 @@
 //! | `R_d(r)` | [`DipoleMaterial::diffuse_reflectance`] | length⁻² | dipole diffuse reflectance |
 //! | `σx²`, `σy²` | [`SlopeVariance`] | 1 | facet slope variances downwind, crosswind |
 //! | `p(ζ)` | [`slope_pdf`] | 1 | slope density |
+//! | `R`, `R_seen` | [`ReflectanceSplit`], [`RoughReflectance`] | 1 | rough reflectance: from the sky; of the visible facets in all |
 //! | `Λ` | [`smith_lambda`] | 1 | Smith shadowing function |
 //! | `ρ(v, l)` | [`ocean_brdf`] | sr⁻¹ | BRDF |
 //!
@@ -71,6 +74,7 @@ mod jerlov;
 mod ocean_brdf;
 mod quadrature;
 mod refraction;
+mod rough;
 mod sky_reflection;
 mod subsurface;
 mod tables;
@@ -98,7 +102,8 @@ pub use ocean_brdf::{
 };
 pub use quadrature::{GaussHermite, MAX_HERMITE_ORDER, gauss_legendre};
 pub use refraction::{SnellWindow, reflect, refract};
-pub use sky_reflection::{RoughReflectance, SkyReflection, reflected_sky_radiance_filtered};
+pub use rough::{ReflectanceSplit, RoughReflectance, reflectance_split, water_reflectance_split};
+pub use sky_reflection::{SkyReflection, reflected_sky_radiance_filtered};
 pub use subsurface::{
     diffuse_upwelling_radiance, irradiance_reflectance, irradiance_reflectance_morel, lambertian_floor_radiance,
     radiance_out_of_water, refracted_ray_radiance, refracted_ray_radiance_sum,

@@ -467,5 +467,5 @@ proptest! {
 /// One rough-reflectance table for the property cases (building it takes a few ms).
 fn rough_table() -> &'static RoughReflectance {
     static TABLE: std::sync::OnceLock<RoughReflectance> = std::sync::OnceLock::new();
-    TABLE.get_or_init(|| RoughReflectance::new(WATER_IOR).unwrap())
+    TABLE.get_or_init(RoughReflectance::water)
 }

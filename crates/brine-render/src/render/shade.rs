@@ -208,10 +208,13 @@ pub(super) fn shade_surface(
     // the rough surface they make: the exact Fresnel factor times R(θ_v, σ_v)/R(θ_v, 0) of
     // Bruneton et al.'s integral (brine-optics `RoughReflectance`), so that the distant, rough sea
     // is no mirror at grazing views. The filter is normalised: a uniform sky reflects as before.
+    // What the unresolved facets reflect below the horizon or into a neighbour, (R_seen − R) of
+    // the same integral, is light from the waves met, not transmitted light.
     let sigma_v = variance.along(to_local(v)).sqrt();
-    let f = (fresnel_dielectric(cos_v, 1.0, WATER_IOR)
-        * crate::world::rough_reflectance().roughness_factor(cos_v, sigma_v))
-    .clamp(0.0, 1.0);
+    let fresnel = fresnel_dielectric(cos_v, 1.0, WATER_IOR);
+    let table = crate::world::rough_reflectance();
+    let f = (fresnel * table.roughness_factor(cos_v, sigma_v)).clamp(0.0, 1.0);
+    let f_met = (fresnel * table.met_factor(cos_v, sigma_v)).clamp(0.0, 1.0 - f);
     let r = reflect(d, n);
     let escape = reflection_escape(world, variance, r);
     // Sun glint and moon glitter through the BRDF of the unresolved slopes (brine-optics
@@ -248,10 +251,10 @@ pub(super) fn shade_surface(
     let lobe = 2.0 * (0.5 * (variance.sigma_x2() + variance.sigma_y2())).sqrt();
     let sky =
         if escape > 0.0 { world.filtered_sky.radiance(r, lobe, |r| world.sky.radiance_rgb(r)) } else { DVec3::ZERO };
-    let sky =
-        if escape < 1.0 { escape * sky + (1.0 - escape) * met_wave_radiance(world, r, below, &light) } else { sky };
+    let met = if escape < 1.0 || f_met > 0.0 { met_wave_radiance(world, r, below, &light) } else { DVec3::ZERO };
+    let sky = if escape < 1.0 { escape * sky + (1.0 - escape) * met } else { sky };
     cx.lap(Stage::Surface, started);
-    let sea = f * sky + sun + (1.0 - f) * below / (WATER_IOR * WATER_IOR) + crest;
+    let sea = f * sky + f_met * met + sun + (1.0 - f - f_met) * below / (WATER_IOR * WATER_IOR) + crest;
     let started = cx.clock();
     let shade = white_water(world, p, d, t, normal, sea, light);
     cx.lap(Stage::WhiteWater, started);

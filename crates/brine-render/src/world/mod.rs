@@ -361,7 +361,7 @@ pub const FILTERED_SKY_HEIGHT: usize = 64;
 /// once per process (it depends only on the index of water).
 pub fn rough_reflectance() -> &'static RoughReflectance {
     static TABLE: std::sync::OnceLock<RoughReflectance> = std::sync::OnceLock::new();
-    TABLE.get_or_init(|| RoughReflectance::new(WATER_IOR).expect("the index of water is in range"))
+    TABLE.get_or_init(RoughReflectance::water)
 }
 
 /// Mean cosine `g` of the scattering phase function of sea water used by the crest dipole: the
