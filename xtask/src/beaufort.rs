@@ -460,6 +460,24 @@ pub fn energy() -> Result<(), String> {
 /// Seeds of `cargo xtask beaufort --detail`.
 const DETAIL_SEEDS: u32 = 8;
 
+/// The detail figure of the sheet's view for seeds 1 to [`DETAIL_SEEDS`]: each seed's (those with a
+/// near field in view) and the pooled one, of every seed's near-field slopes about their common
+/// mean.
+fn seeds_detail(surface: &str, wind: f64) -> Result<(Vec<f64>, f64), String> {
+    let mut pooled = Vec::new();
+    let mut each = Vec::new();
+    for seed in 1..=DETAIL_SEEDS {
+        let text = scene_text(surface, wind, false, 1).replace("seed = 3", &format!("seed = {seed}"));
+        let frame = render(&text, "detail.toml")?;
+        let s = slopes(&frame, NEAR_FIELD_M);
+        if !s.is_empty() {
+            each.push(slope_variance(&s) / cox_munk_total(wind));
+        }
+        pooled.extend(s);
+    }
+    Ok((each, slope_variance(&pooled) / cox_munk_total(wind)))
+}
+
 /// `cargo xtask beaufort --detail`: the detail figure of the sheet's view for [`DETAIL_SEEDS`]
 /// seeds at 8–22 m/s, each and pooled (the slopes of every seed's near field about their common
 /// mean), and the share of Cox & Munk's total that Elfouhaily et al.'s spectrum holds in waves
@@ -467,23 +485,13 @@ const DETAIL_SEEDS: u32 = 8;
 pub fn detail() -> Result<(), String> {
     for surface in SURFACES {
         for wind in [8.0, 12.0, 16.0, 22.0] {
-            let mut pooled = Vec::new();
-            let mut each = Vec::new();
-            for seed in 1..=DETAIL_SEEDS {
-                let text = scene_text(surface, wind, false, 1).replace("seed = 3", &format!("seed = {seed}"));
-                let frame = render(&text, "detail.toml")?;
-                let s = slopes(&frame, NEAR_FIELD_M);
-                if !s.is_empty() {
-                    each.push(format!("{:.2}", slope_variance(&s) / cox_munk_total(wind)));
-                }
-                pooled.extend(s);
-            }
+            let (each, pooled) = seeds_detail(surface, wind)?;
+            let each: Vec<String> = each.iter().map(|d| format!("{d:.2}")).collect();
             let spectrum = brine_waves::Elfouhaily::fully_developed(wind).map_err(|e| e.to_string())?;
             let (up, cross) = spectrum.slope_variances(std::f64::consts::TAU / 20.0);
             println!(
-                "detail {surface} {wind} m/s: seeds {} · pooled {:.2} · in waves over 20 m {:.2}",
+                "detail {surface} {wind} m/s: seeds {} · pooled {pooled:.2} · in waves over 20 m {:.2}",
                 each.join(" "),
-                slope_variance(&pooled) / cox_munk_total(wind),
                 (up + cross) / cox_munk_total(wind)
             );
         }
@@ -517,6 +525,7 @@ pub fn run(root: &Path) -> Result<(), String> {
             brine_render::write_frame(&png, &frame, frame.exposure_ev, false).map_err(|e| e.to_string())?;
             let detail = slope_variance(&slopes(&frame, NEAR_FIELD_M)) / cox_munk_total(wind);
             let (reach, _) = detail_reach(&text, &frame, wind)?;
+            let (_, pooled) = seeds_detail(surface, wind)?;
             let lags = if surface == "fft" {
                 let (seen, drawn) = tile_lag_correlation(&scene_text(surface, wind, true, 1))?;
                 format!(" · tile lags {seen:.2} (drawn {drawn:.2})")
@@ -537,7 +546,7 @@ pub fn run(root: &Path) -> Result<(), String> {
                 String::new()
             };
             cells.push(format!(
-                "![{surface} at {wind} m/s](beaufort/{name}.png)<br>detail {detail:.2} (reach {reach:.2}) · peaks {peaks:.2} (resolved {resolved_peaks:.2}){lags}{sparkle}{sky}"
+                "![{surface} at {wind} m/s](beaufort/{name}.png)<br>detail {detail:.2} ({DETAIL_SEEDS} seeds {pooled:.2}; reach {reach:.2}) · peaks {peaks:.2} (resolved {resolved_peaks:.2}){lags}{sparkle}{sky}"
             ));
             let sun_name = format!("{name}-sun");
             let facing = render(&scene_text_facing(surface, wind, false, 1, true), &format!("{sun_name}.toml"))?;
@@ -584,7 +593,9 @@ pub fn run(root: &Path) -> Result<(), String> {
            {VISIBLE_WAVE_FOOTPRINTS} median footprints of the near field (a pixel keeps 0.41 of the slope\n\
            variance of a wave two footprints long, less of shorter ones). From 12 m/s most of Cox &\n\
            Munk's total is in waves shorter than that: no sea filtered with its pixels shows half of it\n\
-           there, and one that showed more would sparkle.\n\
+           there, and one that showed more would sparkle. Also in brackets, the figure of the slopes of\n\
+           {DETAIL_SEEDS} seeds' near fields pooled: one view's near field is a small patch of sea, and the\n\
+           figure moves with the seed (on the trochoid sea at 12 m/s from 0.24 to 0.51).\n\
          - **peaks**: on a top-down view of the same sea (50 m up, 256 × 256 normals), the share of the\n\
            slope power in its {PEAKS} strongest wave vectors. A handful of crossing waves — a lattice of\n\
            glints — puts most of the power there; a sea of many waves little. In brackets, the same\n\
