@@ -81,8 +81,10 @@ impl SkyReflection {
     /// Sky radiance reflected toward `v` by the unresolved waves:
     /// `I_sky(v) = ∫ ρ(v, l) L_sky(l) l_z dω_l = ∫ F(v·n) L_sky(l(n)) p(ζ) (v·n)/(n_z v_z) /
     /// (1 + Λ(v) + Λ(l)) d²ζ`, `l = 2(v·n)n − v`, over facets facing `v` and reflecting above the
-    /// horizon, by self-normalised Gauss–Hermite quadrature in the slopes (see the crate docs:
-    /// within 1 % of a fine reference integral for order 8 up to 85° from the zenith).
+    /// horizon, by self-normalised Gauss–Hermite quadrature in the slopes. For a uniform sky and
+    /// slope deviations up to 0.2, order 8 is within 10⁻³ of the exact integral
+    /// ([`crate::reflectance_split`]) at 60° from the zenith, 0.008 at 75° and up to 0.07 at
+    /// 80–88°, where few of its nodes face the viewer.
     ///
     /// # Arguments
     /// - `v`: unit direction toward the viewer in the local wind frame (z up, x downwind).

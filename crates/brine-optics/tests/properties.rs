@@ -448,6 +448,28 @@ proptest! {
         prop_assert!(f.is_finite() && f >= 0.0, "factor {f}");
         // R(θ, 0)/R(θ, 0), or 1 where R(θ, 0) = 0: one division of a number by itself.
         prop_assert!((t.roughness_factor(cos_v, 0.0) - 1.0).abs() <= f64::EPSILON);
+        // The light reflected into the waves: finite, ≥ 0, none on smooth water, and with the
+        // sky's share at most the visible facets' whole reflectance (R_seen ≤ 1 ≤ R(θ, 0)·…).
+        let m = t.met_factor(cos_v, sigma);
+        prop_assert!(m.is_finite() && m >= 0.0, "met factor {m}");
+        prop_assert!(t.met_factor(cos_v, 0.0) == 0.0);
+        let seen = t.seen_reflectance(cos_v, sigma);
+        prop_assert!((0.0..=1.0).contains(&seen) && r <= seen + 1e-12, "R {r}, R_seen {seen}");
+    }
+
+    /// The split integral at any view and roughness: `0 ≤ R ≤ R_seen ≤ max F`, and the visible
+    /// normals' normalisation (`R_seen = 1` for `F = 1`), checked away from the table's nodes.
+    #[test]
+    fn the_reflectance_split_is_bounded(cos_v in 0.005f64..=1.0, sigma in 0.002f64..=0.6) {
+        /// The Gauss–Legendre rules on the exact domains (measured below 10⁻¹⁰).
+        const QUADRATURE: f64 = 1e-9;
+        let white = reflectance_split(cos_v, sigma, |_| 1.0);
+        prop_assert!((white.seen - 1.0).abs() < QUADRATURE, "R_seen(F = 1) = {}", white.seen);
+        prop_assert!(white.to_sky > 0.0 && white.to_sky <= white.seen + QUADRATURE, "{white:?}");
+        let water = water_reflectance_split(cos_v, sigma, WATER_IOR);
+        prop_assert!(water.to_sky >= 0.0 && water.to_sky <= water.seen + QUADRATURE, "{water:?}");
+        // F ≤ 1 for every facet; R_seen is F's mean over the visible facets.
+        prop_assert!(water.seen <= 1.0 && water.seen >= fresnel_dielectric(1.0, 1.0, WATER_IOR) - QUADRATURE, "{water:?}");
     }
 
     /// The diffuse Fresnel reflectance lies in `[0, 1]` on both sides, and the two sides obey

@@ -30,9 +30,10 @@ pub struct ReflectanceSplit {
     pub seen: f64,
 }
 
-/// The rough sea's reflectance toward a viewer, split between the sky and the other waves:
-/// `R_seen = ∫ F(v·n) D_v(n) dn` and `R_sky = ∫ F(v·n) D_v(n) G₁(l)… ` in the height-correlated
-/// form, over the slopes `ζ`:
+/// The rough sea's reflectance toward a viewer, split between the sky and the other waves: the
+/// Fresnel reflectance averaged over the visible normals `D_v` (`R_seen`), and the part of it
+/// whose mirror direction leaves above the horizon unshadowed (`R_sky`, Smith's height-correlated
+/// masking–shadowing), as integrals over the slopes `ζ`:
 ///
 /// `R_seen = ∫∫_{v·n>0} F(v·n) p(ζ) q(ζ) / (1 + Λ(v)) d²ζ`,
 /// `R_sky  = ∫∫_{v·n>0, l_z>0} F(v·n) p(ζ) q(ζ) / (1 + Λ(v) + Λ(l)) d²ζ`,
