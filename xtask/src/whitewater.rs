@@ -5,8 +5,9 @@
 //! several seeds, as the share of sea pixels more than half white, `1 − (1 − foam)(1 − whitecap)`
 //! from the output variables, beside the mean of that white fraction. The sheet adds the shape of
 //! the foam (its correlation lengths along and across the wind at 18 m/s) and the constancy of the
-//! sea's coverage over a 5 s animation (the same sea seen from 400 m). The tables go to
-//! `docs/whitewater.md`, the images to `docs/whitewater/`.
+//! sea's coverage over a 5 s animation (the same sea seen from 400 m), and how much the spray
+//! lowers the contrast of the horizon. The tables go to `docs/whitewater.md`, the images to
+//! `docs/whitewater/`.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -35,6 +36,49 @@ const TIME_POINTS: usize = 160_000;
 /// Half-white threshold of the visible coverage.
 const HALF_WHITE: f64 = 0.5;
 
+/// Winds of the spray-haze table (m s⁻¹): Beaufort 6, 7, 8 and 9.
+const HAZE_WINDS: [f64; 4] = [12.0, 16.0, 20.0, 22.0];
+/// Wind of the horizon images kept for the sheet (m s⁻¹), one of [`HAZE_WINDS`].
+const HAZE_IMAGE_WIND: f64 = 20.0;
+/// Vertical field of the horizon view (degrees): 0.125° a row at [`HAZE_HEIGHT`] rows.
+const HAZE_FOV_DEG: f64 = 20.0;
+/// Image of the horizon view (pixels).
+const HAZE_WIDTH: u32 = 320;
+const HAZE_HEIGHT: u32 = 160;
+/// Rows of the horizon bands, counted from the horizon line: 2 to 8 rows (0.25°–1°) above it for
+/// the sky, below it for the sea (from 10 m, 1.6 km to 570 m away).
+const HAZE_BAND: (usize, usize) = (2, 8);
+
+/// A view of the horizon from 10 m, the sun 30° high and 90° to the right, glare off.
+fn horizon_scene(surface: &str, wind: f64, spray: bool) -> String {
+    format!(
+        "[camera]\nposition = [0.0, 10.0, 0.0]\npitch_deg = 0.0\nyaw_deg = 0.0\nwidth = {HAZE_WIDTH}\nheight = {HAZE_HEIGHT}\n\
+         fov_deg = {HAZE_FOV_DEG}\n\n[sea]\nsurface = \"{surface}\"\nwind_speed_m_s = {wind}\nwind_direction_deg = {WIND_DIRECTION_DEG}\n\
+         seed = 1\n\n[sky]\nsun_elevation_deg = 30.0\nsun_azimuth_deg = 90.0\n\n[phenomena]\nglare = false\nspray = {spray}\n"
+    )
+}
+
+/// The horizon's contrast `(L_sky − L_sea)/L_sky`: the mean luminance of the sky rows
+/// [`HAZE_BAND`] above the horizon line (the last sky pixel of each column) against the sea rows
+/// as far below it.
+fn horizon_contrast(frame: &Frame) -> f64 {
+    let (w, h) = (frame.width as usize, frame.height as usize);
+    let y = |c: glam::DVec3| c.dot(glam::DVec3::new(0.2126, 0.7152, 0.0722));
+    let (mut sky, mut sea, mut n) = (0.0, 0.0, 0usize);
+    for x in 0..w {
+        let Some(line) = (0..h).find(|&r| frame.aovs[r * w + x].depth.is_finite()) else { continue };
+        if line < HAZE_BAND.1 || line + HAZE_BAND.1 >= h {
+            continue;
+        }
+        for k in HAZE_BAND.0..=HAZE_BAND.1 {
+            sky += y(frame.pixels[(line - k) * w + x]);
+            sea += y(frame.pixels[(line - 1 + k) * w + x]);
+            n += 1;
+        }
+    }
+    if n == 0 || sky <= 0.0 { f64::NAN } else { (sky - sea) / sky }
+}
+
 /// A top-down scene `height_m` up.
 fn scene_text(surface: &str, wind: f64, seed: u64, height_m: f64, time_s: f64) -> String {
     format!(
@@ -42,6 +86,14 @@ fn scene_text(surface: &str, wind: f64, seed: u64, height_m: f64, time_s: f64) -
          fov_deg = 60.0\n\n[sea]\nsurface = \"{surface}\"\nwind_speed_m_s = {wind}\nwind_direction_deg = {WIND_DIRECTION_DEG}\n\
          seed = {seed}\ntime_s = {time_s}\n\n[sky]\nsun_elevation_deg = 40.0\nsun_azimuth_deg = 90.0\n"
     )
+}
+
+/// The meteorological visibility at the sea, `ln 50 / k(0)` (m), of the spray the renderer
+/// builds at `wind` (bubble drops and spume).
+fn haze_visibility(wind: f64) -> Result<f64, String> {
+    let scene = Scene::from_toml_str(&horizon_scene("trochoids", wind, true), "horizon").map_err(|e| e.to_string())?;
+    let world = brine_render::World::new(&scene).map_err(|e| e.to_string())?;
+    world.spray_visibility_m(0.0).ok_or_else(|| "no spray".to_string())
 }
 
 fn render(text: &str, name: &str) -> Result<Frame, String> {
@@ -268,6 +320,51 @@ pub fn run(root: &Path) -> Result<(), String> {
         let (lo, hi) = series.iter().fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
         eprintln!("time {surface}: {:.3}..{:.3} of the mean {mean:.4}", lo / mean, hi / mean);
         let _ = writeln!(md, "| {surface} | {:.3} | {:.3} |", lo / mean, hi / mean);
+    }
+    let _ = writeln!(
+        md,
+        "\n## Spray over the horizon\n\nThe horizon seen from 10 m (sun 30° high, 90° to the right, glare off, \
+         {HAZE_WIDTH} × {HAZE_HEIGHT} pixels over {HAZE_FOV_DEG}°), with the spray on and off: the contrast of the \
+         horizon, `(L_sky − L_sea)/L_sky`, from the mean luminance of the sky 0.25°–1° above the horizon line and of \
+         the sea as far below it (1.6 km to 570 m away), and how much the spray lowers it. The spray is the bubble drops \
+         of Monahan et al. (1986) and the spume of Fairall et al. (1994); the visibility is `ln 50 / k` at the sea \
+         (`brine spray`).\n"
+    );
+    let _ =
+        writeln!(md, "| wind (m/s) | visibility at the sea | surface | contrast, no spray | with spray | lowered by |");
+    let _ = writeln!(md, "|---|---|---|---|---|---|");
+    for (w, &wind) in HAZE_WINDS.iter().enumerate() {
+        let vis = haze_visibility(wind)?;
+        let keep = w == HAZE_WINDS.iter().position(|&x| x >= HAZE_IMAGE_WIND).unwrap_or(0);
+        for surface in SURFACES {
+            let mut c = [0.0; 2];
+            for (i, spray) in [false, true].into_iter().enumerate() {
+                let frame = render(&horizon_scene(surface, wind, spray), "horizon")?;
+                if keep {
+                    let on = if spray { "spray" } else { "clear" };
+                    save_png(&frame, &dir.join(format!("horizon-{surface}-{wind:02}-{on}.png")))?;
+                }
+                c[i] = horizon_contrast(&frame);
+            }
+            eprintln!("horizon {wind:>4} m/s {surface:<9}: contrast {:.3} → {:.3}", c[0], c[1]);
+            let _ = writeln!(
+                md,
+                "| {wind} | {:.1} km | {surface} | {:.3} | {:.3} | {:.0} % |",
+                vis / 1000.0,
+                c[0],
+                c[1],
+                100.0 * (1.0 - c[1] / c[0])
+            );
+        }
+    }
+    let _ = writeln!(md, "\nAt {HAZE_IMAGE_WIND} m/s, without and with the spray:\n");
+    let _ = writeln!(md, "| surface | no spray | spray |");
+    let _ = writeln!(md, "|---|---|---|");
+    for surface in SURFACES {
+        let _ = writeln!(
+            md,
+            "| {surface} | ![{surface}, no spray](whitewater/horizon-{surface}-20-clear.png) | ![{surface}, spray](whitewater/horizon-{surface}-20-spray.png) |"
+        );
     }
     let path = root.join("docs/whitewater.md");
     std::fs::write(&path, md).map_err(|e| format!("cannot write {}: {e}", path.display()))

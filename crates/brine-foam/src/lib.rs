@@ -6,7 +6,8 @@
 //! foam radiance after Koepke (1984), foam that moves with the water and ages between frames,
 //! and the sea-spray source function of Monahan, Spiel & Davidson (1986) with its vertical
 //! profile, extinction, optical depth and in-scattering (Darles et al. 2007, §4.2, equation
-//! equations.md §6).
+//! equations.md §6), and the spume torn from the crests (Fairall, Kepert & Holland 1994) as a
+//! layer of haze over a windy sea.
 //!
 //! ## Notation
 //!
@@ -29,6 +30,11 @@
 //! | `dF/dr₈₀` | [`msd86_flux`] | m⁻² s⁻¹ µm⁻¹ | spray source function |
 //! | `v_s`, `v_d` | [`stokes_settling_velocity`], [`SprayMedium::deposition_velocity`] | m s⁻¹ | settling, deposition velocity |
 //! | `n(r, z)` | [`SprayMedium::concentration`] | m⁻³ µm⁻¹ | drop concentration |
+//! | `dF/dr₈₀` (spume) | [`f94_spume_flux`] | m⁻² s⁻¹ µm⁻¹ | spume source function |
+//! | `v` | [`terminal_velocity`] | m s⁻¹ | fall speed of a drop |
+//! | `u*`, `z_s` | [`SpumeParams`] | m s⁻¹, m | friction velocity, height where spume is torn off |
+//! | `Hᵢ`, `kᵢ(0)` | [`SpumeClass`] | m, m⁻¹ | scale height and sea-level extinction of a spume class |
+//! | `J(d)` | [`PhaseLobeTable`] | radiance | sky and sea seen through the drops' phase function |
 //! | `H`, `z_max` | `scale_height_m`, `max_height_m` | m | profile scale height, top of the spray |
 //! | `Q_e` | [`ExtinctionEfficiency`] | 1 | extinction efficiency |
 //! | `k_e` | [`SprayMedium::extinction`] | m⁻¹ | extinction coefficient |
@@ -40,8 +46,9 @@
 //! The coverage laws were fitted on `U₁₀` ≈ 4–20 m s⁻¹ (accepted on `[0, 60]`, zero below the
 //! onset wind, clamped to 1); the stability forms accept `ΔT = T_w − T_a` on `[−30, 30]` °C
 //! ([`MAX_ABS_DELTA_T_C`], an error beyond, never a clamp). The spray source was fitted on
-//! `r₈₀` ∈ 0.8–15 µm (bubble-mediated drops only; spume drops torn from crests at high winds are
-//! not modelled). Radiances are linear in the irradiances given, in any consistent unit.
+//! `r₈₀` ∈ 0.8–15 µm (bubble-mediated drops); the spume function covers 15–250 µm and its
+//! magnitude is uncertain by about an order of magnitude (published spume functions disagree that
+//! much). Radiances are linear in the irradiances given, in any consistent unit.
 //!
 //! ## Example
 //!
@@ -71,6 +78,10 @@
 //! - Callaghan A., Deane G., Stokes M. 2012, JGR 117, C09015 (foam decay times).
 //! - Monahan E. C. 1971, "Oceanic whitecaps", JPO 1:139–144 (decay time 3.85 s); Monahan E. C.,
 //!   Lu M. 1990, IEEE J. Oceanic Eng. 15(4):340–349 (stages A and B).
+//! - Fairall C. W., Kepert J. D., Holland G. J. 1994, Global Atmos. Ocean Syst. 2:121–142 (spume);
+//!   Andreas E. L. 1992, JGR 97:11429–11441; Andreas E. L. 2002, in *Atmosphere–Ocean
+//!   Interactions* 1, WIT Press, 1–46 (review); Gunn R., Kinzer G. 1949, J. Meteor. 6:243–248
+//!   (fall speeds); Schiller L., Naumann A. 1933 (drag).
 //! - Worley S. 1996, "A cellular texture basis function", SIGGRAPH, 291–294 (the foam lace).
 //! - Wu J. 1983, "Sea-surface drift currents induced by wind and waves", JPO 13:1441–1451.
 
@@ -78,6 +89,7 @@ mod coverage;
 mod error;
 mod extension;
 mod history;
+mod inscatter;
 mod lace;
 mod medium;
 mod memory;
@@ -85,6 +97,7 @@ mod noise;
 mod radiance;
 mod scattering;
 mod spray;
+mod spume;
 mod tiling;
 mod windrows;
 
@@ -94,6 +107,7 @@ pub use coverage::{
 pub use error::FoamError;
 pub use extension::{FoamExtension, FoamExtensionParams, FoamPoint, SurfaceStatistics};
 pub use history::{FoamHistory, FoamHistoryParams, FoamSample, FoamState, MAX_HISTORY_SAMPLES};
+pub use inscatter::{LOBE_TABLE_AZIMUTHS, LOBE_TABLE_ELEVATIONS, PhaseLobeTable};
 pub use lace::{FoamLace, LACE_CELL_M, LACE_THICKNESS_CONTRAST};
 pub use medium::{ExtinctionEfficiency, SprayMedium, SprayParams};
 pub use memory::{
@@ -106,5 +120,9 @@ pub use radiance::{FRESH_FOAM_REFLECTANCE, KOEPKE_EFFICIENCY, KoepkeFoam, foam_r
 pub use scattering::{SprayLighting, SprayRay, SprayScattering, henyey_greenstein};
 pub use spray::{
     AIR_VISCOSITY, G, MSD86_RADIUS_RANGE_UM, SEA_WATER_DENSITY, msd86_flux, spray_foam_factor, stokes_settling_velocity,
+};
+pub use spume::{
+    AIR_DENSITY, F94_REFERENCE_WIND_M_S, MONAHAN_1980_EXPONENT, SPUME_CLASSES, SPUME_RADIUS_RANGE_UM, SpumeClass,
+    SpumeLayer, SpumeParams, VON_KARMAN, f94_spume_flux, terminal_velocity,
 };
 pub use windrows::{WINDROW_DENSITY, WINDROW_SHARE, WINDROW_SPACING_M, WINDROW_STRETCH, Windrows};

@@ -5,6 +5,7 @@ use std::f64::consts::PI;
 
 use crate::error::{FoamError, check};
 use crate::medium::SprayMedium;
+use crate::spume::SpumeLayer;
 
 /// Henyey–Greenstein phase function
 /// `p(Θ) = (1 − g²) / (4π (1 + g² − 2g cos Θ)^{3/2})`, normalised to `∫ p dω = 1`.
@@ -92,12 +93,15 @@ impl SprayScattering {
 /// (extinction plus in-scattering, docs/equations.md §8).
 #[derive(Debug, Clone, Copy)]
 pub struct SprayRay<'a> {
-    medium: &'a SprayMedium,
+    medium: Option<&'a SprayMedium>,
+    spume: Option<&'a SpumeLayer>,
     sun_term: f64,
     sky_term: f64,
     sin_sun: f64,
     transmittance: f64,
     in_scattered: f64,
+    /// The sky's part of `in_scattered`.
+    in_scattered_sky: f64,
 }
 
 impl<'a> SprayRay<'a> {
@@ -119,12 +123,14 @@ impl<'a> SprayRay<'a> {
         debug_assert!(lighting.sun_irradiance >= 0.0 && lighting.sky_radiance >= 0.0);
         let phase = henyey_greenstein(lighting.cos_view_sun, scattering.asymmetry);
         Self {
-            medium,
+            medium: Some(medium),
+            spume: None,
             sun_term: scattering.albedo * lighting.sun_irradiance * phase,
             sky_term: scattering.albedo * 0.5 * lighting.sky_radiance,
             sin_sun: lighting.sin_sun_elevation.clamp(1e-3, 1.0),
             transmittance: 1.0,
             in_scattered: 0.0,
+            in_scattered_sky: 0.0,
         }
     }
 
@@ -138,15 +144,66 @@ impl<'a> SprayRay<'a> {
     /// # References
     /// See [`SprayRay`] (Darles et al. 2007 §4.2, corrected).
     pub fn step(&mut self, z0: f64, z1: f64, length_m: f64, foam_factor: f64) {
-        let dtau = self.medium.segment_optical_depth(z0, z1, length_m, foam_factor);
+        let bubbles = self.medium.map_or(0.0, |m| m.segment_optical_depth(z0, z1, length_m, foam_factor));
+        let spume = self.spume.map_or(0.0, |s| foam_factor * s.segment_optical_depth(z0, z1, length_m));
+        self.add(bubbles + spume, 0.5 * (z0 + z1), foam_factor);
+    }
+
+    /// Adds the rest of a ray that leaves the sea behind: from height `y0` up to space at
+    /// elevation sine `d_y ≥ 0` over the curved Earth. Only the spume layer counts there (the
+    /// sky's own aerosol is in the sky model); sunlight reaching the drops is dimmed by the
+    /// spume above `y0`, where most of the path's spume is.
+    ///
+    /// # Arguments
+    /// - `y0`: height of the start (m), `≥ 0`.
+    /// - `d_y`: sine of the ray's elevation, `[0, 1]`.
+    ///
+    /// # References
+    /// [`SpumeLayer::optical_depth_to_space`].
+    pub fn step_to_space(&mut self, y0: f64, d_y: f64) {
+        let dtau = self.spume.map_or(0.0, |s| s.optical_depth_to_space(y0.max(0.0), d_y.clamp(0.0, 1.0)));
+        self.add(dtau, y0, 1.0);
+    }
+
+    /// One segment of optical depth `dtau` whose middle is at height `zmid`.
+    fn add(&mut self, dtau: f64, zmid: f64, foam_factor: f64) {
         if dtau <= 0.0 {
             return;
         }
-        let zmid = 0.5 * (z0 + z1);
-        let sun = self.sun_term * libm::exp(-self.medium.optical_depth_above(zmid, foam_factor) / self.sin_sun);
+        let above = self.medium.map_or(0.0, |m| m.optical_depth_above(zmid, foam_factor))
+            + self.spume.map_or(0.0, |s| foam_factor * s.optical_depth_above(zmid));
+        let sun = self.sun_term * libm::exp(-above / self.sin_sun);
         let t_seg = libm::exp(-dtau);
-        self.in_scattered += self.transmittance * (1.0 - t_seg) * (sun + self.sky_term);
+        let weight = self.transmittance * (1.0 - t_seg);
+        self.in_scattered += weight * (sun + self.sky_term);
+        self.in_scattered_sky += weight * self.sky_term;
         self.transmittance *= t_seg;
+    }
+
+    /// The same ray through the spume layer as well ([`SpumeLayer`]), its optical depth added to
+    /// the bubble drops' in every segment.
+    pub fn with_spume(mut self, spume: &'a SpumeLayer) -> Self {
+        self.spume = Some(spume);
+        self
+    }
+
+    /// A ray through the spume layer alone (no bubble-drop medium): for rays that leave the sea
+    /// behind, whose own aerosol the sky model holds.
+    ///
+    /// # Arguments
+    /// As [`SprayRay::new`], with the spume layer in place of the medium.
+    pub fn spume_only(spume: &'a SpumeLayer, scattering: &SprayScattering, lighting: &SprayLighting) -> Self {
+        let phase = henyey_greenstein(lighting.cos_view_sun, scattering.asymmetry);
+        Self {
+            medium: None,
+            spume: Some(spume),
+            sun_term: scattering.albedo * lighting.sun_irradiance * phase,
+            sky_term: scattering.albedo * 0.5 * lighting.sky_radiance,
+            sin_sun: lighting.sin_sun_elevation.clamp(1e-3, 1.0),
+            transmittance: 1.0,
+            in_scattered: 0.0,
+            in_scattered_sky: 0.0,
+        }
     }
 
     /// Transmittance from the camera to the end of the last segment, in `(0, 1]`.
@@ -157,6 +214,13 @@ impl<'a> SprayRay<'a> {
     /// Radiance scattered toward the camera by the spray so far (irradiance unit per sr).
     pub fn in_scattered(&self) -> f64 {
         self.in_scattered
+    }
+
+    /// The in-scattered radiance split into its sun's and its sky's parts, `(L_in,sun, L_in,sky)`
+    /// (their sum is [`SprayRay::in_scattered`]): one ray lit by a unit sun and a unit sky serves
+    /// callers that colour the two lights differently.
+    pub fn in_scattered_parts(&self) -> (f64, f64) {
+        (self.in_scattered - self.in_scattered_sky, self.in_scattered_sky)
     }
 
     /// Radiance reaching the camera from a surface of radiance `surface_radiance` behind the

@@ -2,9 +2,8 @@
 //! velocity.
 
 /// Radius range `[0.8, 15]` µm (at 80 % relative humidity) over which the bubble-mediated
-/// source function of Monahan et al. (1986) is used. Below 0.8 µm it was not fitted; above
-/// ~10 µm the spume drops torn from crests (a separate term of the same paper, not modelled here)
-/// add to it at winds over ~9 m s⁻¹.
+/// source function of Monahan et al. (1986) is used. Below 0.8 µm it was not fitted; from 15 µm
+/// the spume drops torn from crests take over ([`crate::f94_spume_flux`]).
 pub const MSD86_RADIUS_RANGE_UM: (f64, f64) = (0.8, 15.0);
 
 /// Density of sea water `ρ_w` (kg m⁻³).

@@ -197,3 +197,73 @@ proptest! {
         prop_assert!(ray.in_scattered() <= sun * p_max + 0.5 * sky + RADIANCE_ROUNDING);
     }
 }
+
+/// Relative rounding of a sum of twelve exponentials and their differences.
+const SPUME_ROUNDING: f64 = 1e-12;
+
+fn spume(u: f64, u_star: f64, z_s: f64) -> brine_foam::SpumeLayer {
+    brine_foam::SpumeLayer::new(&brine_foam::SpumeParams {
+        u10: u,
+        friction_velocity_m_s: u_star,
+        source_height_m: z_s,
+    })
+    .unwrap()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// More wind, more spume; the haze thins upward; a ray that climbs more steeply, or starts
+    /// higher, crosses less of it.
+    #[test]
+    fn spume_grows_with_wind_and_thins_upward(
+        u in 1.0f64..55.0, du in 0.1f64..5.0, u_star in 0.05f64..3.0, z_s in 0.1f64..20.0,
+        z in 0.0f64..200.0, dz in 0.01f64..50.0, y0 in 0.0f64..50.0, dy in 0.0f64..0.9, ddy in 0.001f64..0.1,
+    ) {
+        let (a, b) = (spume(u, u_star, z_s), spume(u + du, u_star, z_s));
+        prop_assert!(b.extinction(z) > a.extinction(z) && a.extinction(z) > 0.0);
+        prop_assert!(a.extinction(z + dz) < a.extinction(z));
+        prop_assert!(a.optical_depth_above(z + dz) <= a.optical_depth_above(z) * (1.0 + SPUME_ROUNDING));
+        let t = a.optical_depth_to_space(y0, dy);
+        prop_assert!(t.is_finite() && t > 0.0);
+        prop_assert!(a.optical_depth_to_space(y0, dy + ddy) < t);
+        prop_assert!(a.optical_depth_to_space(y0 + dz, dy) < t);
+        // Every class's scale height follows from the fall speed: smaller drops rise higher.
+        let c = a.classes();
+        prop_assert!(c.windows(2).all(|w| w[1].scale_height_m < w[0].scale_height_m && w[0].radius_um < w[1].radius_um));
+    }
+
+    /// A straight segment's optical depth is additive: split anywhere, the parts sum to the whole.
+    #[test]
+    fn spume_segments_add_up(
+        u in 1.0f64..40.0, z0 in -5.0f64..60.0, z1 in -5.0f64..60.0, extra in 0.0f64..3000.0, s in 0.01f64..0.99,
+    ) {
+        let l = spume(u, 0.7, 3.0);
+        let len = (z1 - z0).abs() + extra;
+        let zm = z0 + s * (z1 - z0);
+        let whole = l.segment_optical_depth(z0, z1, len);
+        let parts = l.segment_optical_depth(z0, zm, s * len) + l.segment_optical_depth(zm, z1, (1.0 - s) * len);
+        prop_assert!(whole >= 0.0);
+        prop_assert!((whole - parts).abs() <= 1e-9 * whole.max(1e-12), "{whole} vs {parts}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(6))]
+
+    /// The lobe-weighted field is a weighted mean of the field: between its least and greatest
+    /// values, channel by channel.
+    #[test]
+    fn the_lobe_is_a_mean_of_the_field(
+        g in 0.0f64..0.95, a in 0.0f64..10.0, b in 0.0f64..10.0, dx in -1.0f64..1.0, dy in -1.0f64..1.0, dz in -1.0f64..1.0,
+    ) {
+        prop_assume!(dx * dx + dy * dy + dz * dz > 1e-3);
+        let field = |w: [f64; 3]| [a + b * w[1].max(0.0), b * (1.0 - w[0].abs()), a];
+        let t = brine_foam::PhaseLobeTable::new(g, field).unwrap();
+        let j = t.lookup([dx, dy, dz]);
+        let (lo, hi) = ([a, 0.0, a], [a + b, b, a]);
+        for c in 0..3 {
+            prop_assert!(j[c] >= lo[c] * (1.0 - SPUME_ROUNDING) - 1e-12 && j[c] <= hi[c] * (1.0 + SPUME_ROUNDING) + 1e-12, "{c}: {j:?}");
+        }
+    }
+}

@@ -1,14 +1,15 @@
-//! Plots of brine-foam: coverage laws, spray size distribution, optical depth, a map of the
-//! local foam amount, and the foam history at one water particle.
+//! Plots of brine-foam: coverage laws, spray size distribution, optical depth, the spume and the
+//! visibility in the spray, a map of the local foam amount, and the foam history at one water
+//! particle.
 
 use std::path::Path;
 
 use brine_foam::{
     CoverageParams, DARLES_ONSET_WIND_M_S, ExtinctionEfficiency, FoamExtension, FoamExtensionParams, FoamHistory,
-    FoamHistoryParams, FoamPoint, KoepkeFoam, SprayMedium, SprayParams, SurfaceStatistics, WhitecapLaw, msd86_flux,
-    whitecap_coverage,
+    FoamHistoryParams, FoamPoint, KoepkeFoam, SprayMedium, SprayParams, SpumeLayer, SpumeParams, SurfaceStatistics,
+    WhitecapLaw, f94_spume_flux, msd86_flux, whitecap_coverage,
 };
-use brine_waves::{TrochoidSum, WaveSurface};
+use brine_waves::{Elfouhaily, PiersonMoskowitz, TrochoidSum, WaveSurface};
 use glam::DVec2;
 use plotters::style::RGBColor;
 
@@ -23,6 +24,7 @@ fn e(err: impl std::fmt::Display) -> String {
 pub fn plot(dir: &Path) -> Result<(), String> {
     coverage(dir)?;
     spray(dir)?;
+    spume(dir)?;
     foam_map(dir)?;
     history(dir)
 }
@@ -58,6 +60,63 @@ fn coverage(dir: &Path) -> Result<(), String> {
         series,
     }
     .write(&dir.join("foam-coverage.svg"))
+}
+
+/// The spume layer of a fully developed sea at `u`: Elfouhaily's `u*`, half the
+/// Pierson–Moskowitz `H_s`.
+fn spume_layer(u: f64) -> Result<SpumeLayer, String> {
+    let u_star = Elfouhaily::new(u, 0.84).map_err(e)?.u_star();
+    let z_s = 0.5 * PiersonMoskowitz::from_u10(u).map_err(e)?.significant_wave_height();
+    SpumeLayer::new(&SpumeParams { u10: u, friction_velocity_m_s: u_star, source_height_m: z_s }).map_err(e)
+}
+
+fn spume(dir: &Path) -> Result<(), String> {
+    let mut series = Vec::new();
+    for u in [10.0, 16.0, 22.0] {
+        let pts = (0..=300).map(|i| 0.8 * 300f64.powf(i as f64 / 300.0));
+        series.push((
+            format!("bubble drops (MSD86), U10 = {u} m/s"),
+            pts.clone().filter(|&r| r < 15.0).map(|r| (r, msd86_flux(r, u))).collect(),
+        ));
+        series.push((
+            format!("spume (Fairall et al. 1994), U10 = {u} m/s"),
+            pts.filter(|&r| (15.0..250.0).contains(&r)).map(|r| (r, f94_spume_flux(r, u))).collect(),
+        ));
+    }
+    LineChart {
+        title: "Source functions of the spray: bubble drops below 15 µm, spume above",
+        x_label: "r80 (µm)",
+        y_label: "dF/dr80 (drops m⁻² s⁻¹ µm⁻¹)",
+        x_scale: Scale::Log,
+        y_scale: Scale::Log,
+        series,
+    }
+    .write(&dir.join("foam-spume-dfdr.svg"))?;
+    let mut at_sea = Vec::new();
+    let mut at_10 = Vec::new();
+    let mut spume_only = Vec::new();
+    for i in 8..=60 {
+        let u = 0.5 * i as f64;
+        let bubbles = SprayMedium::new(&SprayParams { u10: u, ..SprayParams::default() }).map_err(e)?;
+        let spume = spume_layer(u)?;
+        let v = |k: f64| 50f64.ln() / k / 1000.0;
+        at_sea.push((u, v(bubbles.extinction(0.0, 1.0) + spume.extinction(0.0))));
+        at_10.push((u, v(bubbles.extinction(10.0, 1.0) + spume.extinction(10.0))));
+        spume_only.push((u, v(spume.extinction(0.0))));
+    }
+    LineChart {
+        title: "Visibility ln 50 / k in the spray over a fully developed sea",
+        x_label: "U10 (m/s)",
+        y_label: "visibility (km)",
+        x_scale: Scale::Linear,
+        y_scale: Scale::Log,
+        series: vec![
+            ("at the sea, bubble drops and spume".to_owned(), at_sea),
+            ("10 m above the sea".to_owned(), at_10),
+            ("at the sea, spume alone".to_owned(), spume_only),
+        ],
+    }
+    .write(&dir.join("foam-spray-visibility.svg"))
 }
 
 fn spray(dir: &Path) -> Result<(), String> {

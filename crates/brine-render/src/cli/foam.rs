@@ -1,11 +1,12 @@
 //! `brine foam` (whitecap coverage of Monahan's laws) and `brine spray` (the MSD86 spray source
-//! function, its extinction and optical depth).
+//! function and the spume of Fairall et al. 1994, their extinction, optical depth and visibility).
 
 use brine_foam::{
     CoverageParams, DARLES_ONSET_WIND_M_S, ExtinctionEfficiency, FOAM_DENSITY, FoamMemory, FoamMemoryParams,
-    KOEPKE_EFFICIENCY, MSD86_RADIUS_RANGE_UM, SprayMedium, SprayParams, WIND_DRIFT_FRACTION, WhitecapLaw, msd86_flux,
-    whitecap_coverage,
+    KOEPKE_EFFICIENCY, MSD86_RADIUS_RANGE_UM, SPUME_RADIUS_RANGE_UM, SprayMedium, SprayParams, SpumeLayer, SpumeParams,
+    WIND_DRIFT_FRACTION, WhitecapLaw, f94_spume_flux, msd86_flux, whitecap_coverage,
 };
+use brine_waves::{Elfouhaily, PiersonMoskowitz};
 use serde_json::{Value, json};
 
 use super::CliError;
@@ -164,6 +165,14 @@ pub struct SprayArgs {
     /// Wavelength of light (nm, [300, 2500]): anomalous-diffraction extinction efficiency instead of 2.
     #[arg(long, value_parser = super::finite)]
     pub wavelength_nm: Option<f64>,
+    /// Friction velocity u* for the spume layer (m/s, (0, 5]); default: Elfouhaily et al.'s for
+    /// a fully developed sea at U10.
+    #[arg(long, value_parser = super::finite)]
+    pub u_star_m_s: Option<f64>,
+    /// Height at which spume is torn off, the significant wave amplitude, half the significant height (m, (0, 30]);
+    /// default: half the Pierson–Moskowitz significant height at U10.
+    #[arg(long, value_parser = super::finite)]
+    pub source_height_m: Option<f64>,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,
@@ -214,6 +223,7 @@ pub fn spray_json(args: &SprayArgs) -> Result<Value, CliError> {
         ..SprayParams::default()
     };
     let medium = SprayMedium::new(&params).map_err(|e| CliError::Input(e.to_string()))?;
+    let spume = spume_layer(args)?;
     let (lo, hi) = MSD86_RADIUS_RANGE_UM;
     let distribution: Vec<Value> = radii(&args.radius_um)?
         .into_iter()
@@ -223,9 +233,30 @@ pub fn spray_json(args: &SprayArgs) -> Result<Value, CliError> {
                 "dF_dr": msd86_flux(r, args.u10),
                 "concentration_m3_um": medium.concentration(r, 0.0),
                 "in_validity_range": (lo..=hi).contains(&r),
+                "spume_dF_dr": f94_spume_flux(r, args.u10),
             })
         })
         .collect();
+    let visibility = |z: f64| {
+        let k = medium.extinction(z, 1.0) + spume.as_ref().map_or(0.0, |s| s.extinction(z));
+        if k > 0.0 { json!(50f64.ln() / k) } else { Value::Null }
+    };
+    let spume_json = spume.as_ref().map_or(Value::Null, |s| {
+        json!({
+            "source": "Fairall, Kepert & Holland 1994",
+            "range_um": [SPUME_RADIUS_RANGE_UM.0, SPUME_RADIUS_RANGE_UM.1],
+            "u_star_m_s": s.params().friction_velocity_m_s,
+            "source_height_m": s.params().source_height_m,
+            "extinction_m": s.extinction(0.0),
+            "extinction_10m_m": s.extinction(10.0),
+            "optical_depth": s.optical_depth_above(0.0),
+            "classes": s.classes().iter().map(|c| json!({
+                "radius_um": c.radius_um,
+                "extinction_m": c.extinction_0,
+                "scale_height_m": c.scale_height_m,
+            })).collect::<Vec<_>>(),
+        })
+    });
     Ok(json!({
         "u10_m_s": args.u10,
         "units": { "dF_dr": "drops m^-2 s^-1 um^-1", "concentration": "drops m^-3 um^-1", "extinction": "m^-1" },
@@ -235,11 +266,34 @@ pub fn spray_json(args: &SprayArgs) -> Result<Value, CliError> {
         "optical_depth": medium.optical_depth(),
         "scale_height_m": args.scale_height_m,
         "max_height_m": args.max_height_m,
+        "spume": spume_json,
+        "visibility_m": { "sea_level": visibility(0.0), "at_10_m": visibility(10.0) },
         "q_e": match efficiency {
             ExtinctionEfficiency::Constant(q) => json!(q),
             ExtinctionEfficiency::AnomalousDiffraction { wavelength_nm, .. } => json!({ "anomalous_diffraction_nm": wavelength_nm }),
         },
     }))
+}
+
+/// The spume layer of the command line (`None` without wind): `u*` and the source height from
+/// the options, or Elfouhaily et al.'s `u*` and half the Pierson–Moskowitz `H_s` of a fully
+/// developed sea.
+fn spume_layer(args: &SprayArgs) -> Result<Option<SpumeLayer>, CliError> {
+    let input = |e: &dyn std::fmt::Display| CliError::Input(e.to_string());
+    if !(args.u10 > 0.0 && args.u10 <= 60.0) {
+        return Ok(None);
+    }
+    let u_star = match args.u_star_m_s {
+        Some(u) => u,
+        None => Elfouhaily::new(args.u10, 0.84).map_err(|e| input(&e))?.u_star(),
+    };
+    let source_height_m = match args.source_height_m {
+        Some(z) => z,
+        None => 0.5 * PiersonMoskowitz::from_u10(args.u10).map_err(|e| input(&e))?.significant_wave_height(),
+    };
+    SpumeLayer::new(&SpumeParams { u10: args.u10, friction_velocity_m_s: u_star, source_height_m })
+        .map(Some)
+        .map_err(|e| input(&e))
 }
 
 /// Runs `brine spray`.
@@ -258,6 +312,19 @@ pub fn run_spray(args: &SprayArgs) -> Result<(), CliError> {
         v["extinction_m"].as_f64().unwrap_or(f64::NAN),
         v["optical_depth"].as_f64().unwrap_or(f64::NAN)
     );
+    if let Some(s) = v["spume"].as_object() {
+        let f = |k: &str| s.get(k).and_then(Value::as_f64).unwrap_or(f64::NAN);
+        super::outln!(
+            "spume (15–250 µm, u* = {:.3} m/s, torn off at {:.2} m): k(0) = {:.4e} m^-1, k(10 m) = {:.4e} m^-1, τ = {:.4e}",
+            f("u_star_m_s"),
+            f("source_height_m"),
+            f("extinction_m"),
+            f("extinction_10m_m"),
+            f("optical_depth")
+        );
+    }
+    let vis = |k: &str| v["visibility_m"][k].as_f64().map_or("unlimited".to_string(), |m| format!("{:.0} m", m));
+    super::outln!("visibility (ln 50 / k): {} at the sea, {} at 10 m", vis("sea_level"), vis("at_10_m"));
     super::outln!("{:>12} {:>14} {:>16}", "r80 (µm)", "dF/dr", "n(r, 0)");
     for d in v["distribution"].as_array().into_iter().flatten() {
         super::outln!(

@@ -30,9 +30,10 @@ pub(super) fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, hit: Optio
             (t, DVec3::new(p.x, 0.0, p.z), n, &world.variance_total)
         }
         None => {
-            // The sky's own aerosol is Preetham's turbidity: spray is not added to sky rays.
+            // The sky's own aerosol is Preetham's turbidity: only the spume layer over the sea is
+            // added to sky rays.
             let started = cx.clock();
-            let l = sky_radiance(world, d);
+            let l = spray(world, d, None, sky_radiance(world, d));
             cx.lap(Stage::Sky, started);
             return Sample { radiance: l, aov: Aov { depth: f32::INFINITY, ..Aov::default() }, weight: 1.0 };
         }
@@ -47,40 +48,48 @@ pub(super) fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, hit: Optio
         ..Aov::default()
     };
     let started = cx.clock();
-    let l = spray(world, d, t, aerial(world, d, t, shade.radiance));
+    let l = spray(world, d, Some(t), aerial(world, d, t, shade.radiance));
     cx.lap(Stage::Atmosphere, started);
     Sample { radiance: l, aov, weight }
 }
 
-/// Sea spray between the eye and the sea `t` metres along `d`:
-/// Beer–Lambert transmittance and single scattering of sun and sky light by the drops
-/// (brine-foam `SprayRay`, Darles et al. 2007 §4.2 corrected). Drops are much larger than the
-/// wavelength, so the extinction is grey; the in-scattered light takes the sun's and sky's colour.
-pub(super) fn spray(world: &World, d: DVec3, t: f64, l0: DVec3) -> DVec3 {
-    let Some(medium) = &world.spray else { return l0 };
+/// Sea spray between the eye and the sea `t` metres along `d`, or, for `t = None`, along a ray
+/// that leaves the sea behind: Beer–Lambert transmittance and single scattering of sun and sky
+/// light by the drops (brine-foam `SprayRay`, Darles et al. 2007 §4.2 corrected). Toward the sea
+/// both the bubble drops and the spume count; toward the sky only the spume, a layer a few wave
+/// heights deep that the sky model does not hold (its own aerosol is Preetham's turbidity). Drops
+/// are much larger than the wavelength, so the extinction is grey; the in-scattered light is the
+/// sun's through the phase function and the sky and sea around the drop through the same lobe
+/// (brine-foam `PhaseLobeTable`).
+pub(super) fn spray(world: &World, d: DVec3, t: Option<f64>, l0: DVec3) -> DVec3 {
+    let Some(spray) = &world.spray else { return l0 };
     let y0 = world.camera.position.y.max(0.0);
-    let top = medium.params().max_height_m;
-    let (len, y1) = (t, (y0 + d.y * t).clamp(0.0, top));
     let sun = world.sky.sun();
     let scattering = SprayScattering::default();
-    let lit = |sun_irradiance: f64, sky_radiance: f64| {
-        let mut ray = SprayRay::new(
-            medium,
-            &scattering,
-            &SprayLighting {
-                sun_irradiance,
-                sin_sun_elevation: sun.direction.y.clamp(0.01, 1.0),
-                cos_view_sun: d.dot(sun.direction),
-                sky_radiance,
-            },
-        );
-        ray.step(y0, y1, len, 1.0);
-        (ray.radiance(1.0) - ray.radiance(0.0), ray.radiance(0.0))
+    // One ray lit by a unit sun and a unit sky; the two parts are coloured below.
+    let lighting = SprayLighting {
+        sun_irradiance: if sun.direction.y > 0.0 { 1.0 } else { 0.0 },
+        sin_sun_elevation: sun.direction.y.clamp(0.01, 1.0),
+        cos_view_sun: d.dot(sun.direction),
+        sky_radiance: 1.0,
     };
-    let (transmittance, in_sun) = lit(if sun.direction.y > 0.0 { 1.0 } else { 0.0 }, 0.0);
-    let (_, in_sky) = lit(0.0, 1.0);
-    let sky_mean = world.sky.horizontal_irradiance_rgb() / std::f64::consts::PI;
-    l0 * transmittance + sun.irradiance_rgb * in_sun + sky_mean * in_sky
+    let ray = match t {
+        Some(t) => {
+            let top = spray.medium.params().max_height_m;
+            let mut ray = SprayRay::new(&spray.medium, &scattering, &lighting).with_spume(&spray.spume);
+            ray.step(y0, (y0 + d.y * t).clamp(0.0, top), t, 1.0);
+            ray
+        }
+        None => {
+            let mut ray = SprayRay::spume_only(&spray.spume, &scattering, &lighting);
+            ray.step_to_space(y0, d.y.max(0.0));
+            ray
+        }
+    };
+    let (transmittance, (in_sun, in_sky)) = (ray.transmittance(), ray.in_scattered_parts());
+    // The ray's sky term counts ½ L̄ for `sky_radiance = 1`; the drops' source is J(d).
+    let around = 2.0 * DVec3::from_array(spray.light.lookup(d.to_array()));
+    l0 * transmittance + sun.irradiance_rgb * in_sun + around * in_sky
 }
 
 /// The share of the sun's and the moon's direct light that reaches a sea point through the

@@ -486,7 +486,14 @@ pub const KEYS: &[KeySpec] = &[
         "`true`",
         "with foam and whitecaps: foam left by the breaking crests, drifting and decaying (`false`: the two drawn separately)",
     ),
-    k("phenomena", "spray", BOOL, "—", "`true`", "Monahan spray along the camera ray"),
+    k(
+        "phenomena",
+        "spray",
+        BOOL,
+        "—",
+        "`true`",
+        "spray along the camera ray: Monahan bubble drops and Fairall spume (spume also toward the sky)",
+    ),
     k(
         "phenomena",
         "whitecap_alpha",

@@ -26,6 +26,7 @@ use glam::{DVec2, DVec3};
 use crate::camera::{Camera, direction_from_bearing};
 
 mod sea;
+mod spray;
 mod timeless;
 mod white_water;
 
@@ -118,8 +119,8 @@ pub struct World {
     pub(crate) whitecaps: Option<Whitecaps>,
     /// Active whitecaps with the foam they leave, when foam and whitecaps are both on.
     pub(crate) white_water: Option<WhiteWaterSea>,
-    /// The spray medium, when on.
-    pub(crate) spray: Option<SprayMedium>,
+    /// The spray (bubble drops, spume and the light they scatter), when on.
+    pub(crate) spray: Option<spray::Spray>,
     /// Dipole materials of the water per channel (R, G, B) for light through thin crests, when
     /// sub-surface scattering is on.
     pub(crate) crest: Option<[DipoleMaterial; 3]>,
@@ -192,6 +193,15 @@ impl World {
     /// The slope variance (wind frame) of the waves not drawn, which the BRDF carries.
     pub fn variance_unresolved(&self) -> &SlopeVariance {
         &self.variance_unresolved
+    }
+
+    /// The meteorological visibility through the spray at height `z` above the sea,
+    /// `ln 50 / k(z)` (m; Koschmieder), bubble drops and spume together, when the scene has spray.
+    pub fn spray_visibility_m(&self, z: f64) -> Option<f64> {
+        self.spray.as_ref().map(|s| {
+            let k = s.medium.extinction(z, 1.0) + s.spume.extinction(z);
+            if k > 0.0 { 50f64.ln() / k } else { f64::INFINITY }
+        })
     }
 
     /// The white water (foam memory and whitecaps), when the scene has it.
@@ -583,11 +593,8 @@ impl World {
         } else {
             None
         };
-        let spray = if ph.spray && s.wind_speed_m_s > 0.0 {
-            Some(SprayMedium::new(&SprayParams { u10: s.wind_speed_m_s, ..SprayParams::default() })?)
-        } else {
-            None
-        };
+        let spray =
+            if ph.spray && s.wind_speed_m_s > 0.0 { Some(spray::spray(s, &sky, &variance_total)?) } else { None };
         let crest = if scene.phenomena.subsurface {
             let m = |i: usize| DipoleMaterial::new(water.a[i], water.b[i], CREST_PHASE_G, WATER_IOR);
             Some([m(0)?, m(1)?, m(2)?])
