@@ -12,6 +12,11 @@ const BENCHES: &[(&str, &str, &[&str])] = &[
         &["bench", "-p", "brine-render", "--bench", "frame"],
     ),
     (
+        "wave-count",
+        "the reference frame at N = 50, 100, 200, 400 waves: whole-frame medians, t(N)/t(50), thread time per stage (brine-render)",
+        &["bench", "-p", "brine-render", "--bench", "wave_count"],
+    ),
+    (
         "animation",
         "a 24-frame animation of the reference frame against a still of it, per frame, both surfaces; frames checked equal to stills (brine-render)",
         &["bench", "-p", "brine-render", "--bench", "animation"],
