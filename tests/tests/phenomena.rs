@@ -165,5 +165,5 @@ fn spray_greys_the_horizon_in_a_gale() {
     clear.phenomena.spray = false;
     let (with, without) = (horizon_contrast(&frame(&base)), horizon_contrast(&frame(&clear)));
     assert!(without > 0.3, "the clear horizon stands out: {without}");
-    assert!(with < 0.5 * without, "spray {with} against clear {without}");
+    assert!(with < 0.9 * without, "spray {with} against clear {without}");
 }

@@ -123,6 +123,6 @@ pub use spray::{
 };
 pub use spume::{
     AIR_DENSITY, F94_REFERENCE_WIND_M_S, MONAHAN_1980_EXPONENT, SPUME_CLASSES, SPUME_RADIUS_RANGE_UM, SpumeClass,
-    SpumeLayer, SpumeParams, VON_KARMAN, f94_spume_flux, terminal_velocity,
+    SpumeLayer, SpumeParams, VON_KARMAN, f94_spume_flux, production_velocity, terminal_velocity,
 };
 pub use windrows::{WINDROW_DENSITY, WINDROW_SHARE, WINDROW_SPACING_M, WINDROW_STRETCH, Windrows};

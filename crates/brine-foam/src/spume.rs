@@ -134,8 +134,10 @@ pub struct SpumeClass {
 
 /// The haze of spume drops over the sea.
 ///
-/// - Concentration at the sea: production balanced by settling, `n(r, 0) = (dF/dr)/v(r)` (m⁻³
-///   µm⁻¹), with [`f94_spume_flux`] and the fall speed [`terminal_velocity`].
+/// - Concentration at the sea: production over the effective production velocity, `n(r, 0) =
+///   (dF/dr)/V_eff` (m⁻³ µm⁻¹), with [`f94_spume_flux`] and `V_eff` the wind at the significant
+///   wave amplitude ([`production_velocity`]): the relation by which the function's shape was
+///   obtained from measured concentrations.
 /// - Vertical profile: turbulence with the eddy diffusivity of the surface layer `K = κ u* z`,
 ///   held at its value at the source height `z_s`, against settling: `n(r, z) = n(r, 0)
 ///   e^{−z/H(r)}`, `H(r) = κ u* z_s / v(r)` — the steady solution of `K dn/dz + v n = 0`.
@@ -145,11 +147,13 @@ pub struct SpumeClass {
 ///
 /// The drops' cross-section is taken at `r₈₀`; near the sea they are about twice as large
 /// (they have not dried to 80 % humidity), so the haze is, if anything, underestimated by that.
-/// The settling balance is an upper bound on the concentration (any other sink lowers it);
-/// Fairall et al. (2009) found it to hold for spume drops in a wind tunnel.
+/// Balancing production by settling alone, `n = (dF/dr)/v(r)`, would give 10 to 700 times more
+/// drops: the upper bound any removal allows, which Fairall et al. (2009) found in a wind tunnel;
+/// over the open sea Andreas et al. (2010) found the wind-speed scale instead.
 ///
 /// # References
-/// Fairall, Kepert & Holland 1994 (source, [`f94_spume_flux`]); Fairall C. W., Larsen S. E. 1984,
+/// Fairall, Kepert & Holland 1994 (source, [`f94_spume_flux`]); Andreas et al. 2010 (production
+/// velocity, [`production_velocity`]); Fairall C. W., Larsen S. E. 1984,
 /// "Dry deposition, surface production and dynamics of aerosols in the marine boundary layer",
 /// Atmos. Environ. 18:69–77 (production against settling in the surface layer); Fairall C. W.,
 /// Banner M., Peirson W., Asher W., Morison R. 2009, JGR 114, C10001 (the balance observed);
@@ -201,6 +205,7 @@ impl SpumeLayer {
         let z_s = p.source_height_m;
         check("source_height_m", z_s, z_s > 0.0 && z_s <= 30.0, "(0, 30] m")?;
         let diffusivity = VON_KARMAN * u_star * z_s;
+        let v_eff = production_velocity(p.u10, u_star, z_s);
         let (a, b) = (libm::log(SPUME_RADIUS_RANGE_UM.0), libm::log(SPUME_RADIUS_RANGE_UM.1));
         let width = (b - a) / SPUME_CLASSES as f64;
         let classes = std::array::from_fn(|i| {
@@ -208,7 +213,7 @@ impl SpumeLayer {
             let radius_um = libm::exp(lo + 0.5 * width);
             SpumeClass {
                 radius_um,
-                extinction_0: class_extinction(p.u10, lo, lo + width),
+                extinction_0: class_extinction(p.u10, v_eff, lo, lo + width),
                 scale_height_m: diffusivity / terminal_velocity(radius_um),
             }
         });
@@ -226,6 +231,11 @@ impl SpumeLayer {
     /// The parameters.
     pub fn params(&self) -> &SpumeParams {
         &self.params
+    }
+
+    /// The production velocity `V_eff = U(A_⅓)` (m s⁻¹): see [`production_velocity`].
+    pub fn production_velocity(&self) -> f64 {
+        production_velocity(self.params.u10, self.params.friction_velocity_m_s, self.params.source_height_m)
     }
 
     /// The radius classes, smallest drops first.
@@ -335,6 +345,29 @@ impl SpumeLayer {
     }
 }
 
+/// The effective production velocity of spume, the wind at the significant wave amplitude,
+/// `V_eff = U(z_s) = U₁₀ + (u*/κ) ln(z_s/10)` (the logarithmic profile through `U₁₀`), at least
+/// `u*`.
+///
+/// The spume source function's shape is Andreas (1992)'s, which he obtained from drop
+/// concentrations measured near the sea as `dF/dr = C(r) U_A⅓`; Andreas et al. (2010) found that
+/// over the open sea the concentrations of 13 data sets and a reliable source function are related
+/// by a velocity of that order for drops of 20–300 µm, and worst by the deposition velocity.
+///
+/// # Arguments
+/// - `u10`: `U₁₀` (m s⁻¹), `≥ 0`; `u_star`: `u*` (m s⁻¹), `> 0`; `z_s`: `A_⅓` (m), `> 0`.
+///
+/// # Returns
+/// `V_eff` (m s⁻¹): 20.5 m s⁻¹ at 22 m s⁻¹ (`u*` = 1.0 m s⁻¹, `z_s` = 5.4 m).
+///
+/// # References
+/// Andreas E. L. 1992, JGR 97:11429–11441; Andreas E. L., Jones K. F., Fairall C. W. 2010,
+/// "Production velocity of sea spray droplets", JGR 115, C12065.
+pub fn production_velocity(u10: f64, u_star: f64, z_s: f64) -> f64 {
+    debug_assert!(u10 >= 0.0 && u_star > 0.0 && z_s > 0.0);
+    (u10 + u_star / VON_KARMAN * libm::log(z_s / 10.0)).max(u_star)
+}
+
 /// The scaled complementary error function `erfcx(a) = e^{a²} erfc(a)`, `a ≥ 0`: `libm::erfc`
 /// below 5, the asymptotic series `(1 − 1/(2a²) + 3/(4a⁴) − 15/(8a⁶) + 105/(16a⁸))/(a √π)`
 /// above (its next term, `945/(32a¹⁰)`, is 3×10⁻⁶ of the leading one at 5).
@@ -349,8 +382,8 @@ fn erfcx(a: f64) -> f64 {
 }
 
 /// `∫ Q_e π r² n(r, 0) dr` over one class `[e^lo, e^hi]` µm, `Q_e = 2`, by Simpson's rule in
-/// `ln r`, with `n(r, 0) = (dF/dr)/v(r)`.
-fn class_extinction(u10: f64, lo: f64, hi: f64) -> f64 {
+/// `ln r`, with `n(r, 0) = (dF/dr)/V_eff`.
+fn class_extinction(u10: f64, production_velocity: f64, lo: f64, hi: f64) -> f64 {
     let h = (hi - lo) / PANELS_PER_CLASS as f64;
     let f = |lr: f64| {
         let r = libm::exp(lr);
@@ -358,7 +391,7 @@ fn class_extinction(u10: f64, lo: f64, hi: f64) -> f64 {
         let r = r.clamp(SPUME_RADIUS_RANGE_UM.0, SPUME_RADIUS_RANGE_UM.1 * (1.0 - 1e-12));
         let r_m = r * 1e-6;
         // dr = r d(ln r).
-        2.0 * std::f64::consts::PI * r_m * r_m * f94_spume_flux(r, u10) / terminal_velocity(r) * r
+        2.0 * std::f64::consts::PI * r_m * r_m * f94_spume_flux(r, u10) / production_velocity * r
     };
     let mut s = f(lo) + f(hi);
     for i in 1..PANELS_PER_CLASS {
@@ -452,6 +485,18 @@ mod tests {
             let exact = l.optical_depth_to_space(y0, dy);
             assert!((exact - brute).abs() <= PATH_REL * brute, "{y0} {dy}: {exact} vs {brute}");
         }
+    }
+
+    #[test]
+    fn the_production_velocity_is_the_wind_at_the_wave_amplitude() {
+        // The log profile through U10: U(10 m) = U10; U(5.43 m) = 22 + (1/0.4) ln 0.543.
+        assert!((production_velocity(22.0, 1.0, 10.0) - 22.0).abs() < 1e-12);
+        assert!((production_velocity(22.0, 1.0, 5.43) - (22.0 + 2.5 * 0.543f64.ln())).abs() < 1e-12);
+        // Never below u*.
+        assert!((production_velocity(0.5, 0.3, 0.01) - 0.3).abs() < 1e-15);
+        // The layer's concentration is the flux over it.
+        let l = layer(22.0);
+        assert!((l.production_velocity() - production_velocity(22.0, 0.9, 5.0)).abs() < 1e-15);
     }
 
     #[test]

@@ -247,6 +247,7 @@ pub fn spray_json(args: &SprayArgs) -> Result<Value, CliError> {
             "range_um": [SPUME_RADIUS_RANGE_UM.0, SPUME_RADIUS_RANGE_UM.1],
             "u_star_m_s": s.params().friction_velocity_m_s,
             "source_height_m": s.params().source_height_m,
+            "production_velocity_m_s": s.production_velocity(),
             "extinction_m": s.extinction(0.0),
             "extinction_10m_m": s.extinction(10.0),
             "optical_depth": s.optical_depth_above(0.0),
