@@ -221,7 +221,7 @@ def foam_report(**params: Any) -> Any:
 
 
 def spray_report(**params: Any) -> Any:
-    """The JSON answer of ``brine spray`` (size distribution, extinction, optical depth)."""
+    """The JSON answer of ``brine spray`` (size distribution, extinction, optical depth, the spume layer, visibility)."""
     return _brine.report("spray", **params)
 
 
