@@ -120,11 +120,21 @@ impl<'a> SprayRay<'a> {
     /// # References
     /// See [`SprayRay`] (Darles et al. 2007 §4.2, corrected; Henyey & Greenstein 1941).
     pub fn new(medium: &'a SprayMedium, scattering: &SprayScattering, lighting: &SprayLighting) -> Self {
+        Self::start(Some(medium), None, scattering, lighting)
+    }
+
+    /// A ray at the camera through the given media, with its source terms.
+    fn start(
+        medium: Option<&'a SprayMedium>,
+        spume: Option<&'a SpumeLayer>,
+        scattering: &SprayScattering,
+        lighting: &SprayLighting,
+    ) -> Self {
         debug_assert!(lighting.sun_irradiance >= 0.0 && lighting.sky_radiance >= 0.0);
         let phase = henyey_greenstein(lighting.cos_view_sun, scattering.asymmetry);
         Self {
-            medium: Some(medium),
-            spume: None,
+            medium,
+            spume,
             sun_term: scattering.albedo * lighting.sun_irradiance * phase,
             sky_term: scattering.albedo * 0.5 * lighting.sky_radiance,
             sin_sun: lighting.sin_sun_elevation.clamp(1e-3, 1.0),
@@ -193,17 +203,7 @@ impl<'a> SprayRay<'a> {
     /// # Arguments
     /// As [`SprayRay::new`], with the spume layer in place of the medium.
     pub fn spume_only(spume: &'a SpumeLayer, scattering: &SprayScattering, lighting: &SprayLighting) -> Self {
-        let phase = henyey_greenstein(lighting.cos_view_sun, scattering.asymmetry);
-        Self {
-            medium: None,
-            spume: Some(spume),
-            sun_term: scattering.albedo * lighting.sun_irradiance * phase,
-            sky_term: scattering.albedo * 0.5 * lighting.sky_radiance,
-            sin_sun: lighting.sin_sun_elevation.clamp(1e-3, 1.0),
-            transmittance: 1.0,
-            in_scattered: 0.0,
-            in_scattered_sky: 0.0,
-        }
+        Self::start(None, Some(spume), scattering, lighting)
     }
 
     /// Transmittance from the camera to the end of the last segment, in `(0, 1]`.
