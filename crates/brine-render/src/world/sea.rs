@@ -3,8 +3,29 @@
 
 use super::*;
 
-/// The spectrum of `[sea]` (`U₁₀ > 0`).
-pub(super) fn sea_spectrum(s: &SeaConfig) -> Result<Box<dyn Spectrum>, brine_waves::WaveError> {
+/// The spectrum of `[sea]` (`U₁₀ > 0`); a spectrum the model refuses is reported with the scene
+/// keys it came from (the model's own message names its internal parameter, such as the peak
+/// frequency a light wind over a long fetch gives).
+pub(super) fn sea_spectrum(s: &SeaConfig) -> Result<Box<dyn Spectrum>, WorldError> {
+    model_spectrum(s).map_err(|e| {
+        let fetch = s.fetch_km.map_or(String::new(), |f| format!(", sea.fetch_km = {f}"));
+        let depth = s.depth_m.map_or(String::new(), |d| format!(", sea.depth_m = {d}"));
+        let name = match s.spectrum {
+            SpectrumKind::PiersonMoskowitz => "pierson-moskowitz",
+            SpectrumKind::Jonswap => "jonswap",
+            SpectrumKind::Phillips => "phillips",
+            SpectrumKind::Tma => "tma",
+            SpectrumKind::Elfouhaily => "elfouhaily",
+        };
+        WorldError::Scene(format!(
+            "sea.spectrum = \"{name}\" with sea.wind_speed_m_s = {}{fetch}{depth} gives no valid sea: {e}",
+            s.wind_speed_m_s
+        ))
+    })
+}
+
+/// The model of `[sea]`'s spectrum.
+fn model_spectrum(s: &SeaConfig) -> Result<Box<dyn Spectrum>, brine_waves::WaveError> {
     let u = s.wind_speed_m_s;
     let fetch_m = s.fetch_km.map(|f| f * 1000.0);
     let jonswap = || -> Result<Jonswap, brine_waves::WaveError> {

@@ -168,3 +168,39 @@ fn shared_parts_of_another_scene_are_refused() {
     let e = World::at_instant(&other, &timeless).err().expect("refused");
     assert!(e.to_string().contains("another scene"), "{e}");
 }
+
+/// A sea the spectrum's model refuses is reported with the scene keys that made it: a JONSWAP
+/// sea at 0.05 m/s over the default 100 km fetch would peak at 168 rad/s, past the model's range.
+#[test]
+fn a_refused_spectrum_names_the_scene_keys() {
+    let mut scene = Scene::default_scene();
+    scene.sea.spectrum = SpectrumKind::Jonswap;
+    scene.sea.wind_speed_m_s = 0.05;
+    let message = World::new(&scene).map(|_| ()).expect_err("refused").to_string();
+    assert!(
+        message.contains("sea.spectrum = \"jonswap\"")
+            && message.contains("sea.wind_speed_m_s = 0.05")
+            && message.contains("omega_p_rad_s"),
+        "{message}"
+    );
+}
+
+/// The spray of a gale: bubble drops and spume, both extinguishing at the sea, the spume thinning
+/// upward, and its light table built from the scene's sky.
+#[test]
+fn a_gale_has_spume_over_it() {
+    let mut scene = Scene::default_scene();
+    scene.sea.wind_speed_m_s = 20.0;
+    let world = World::new(&scene).expect("a valid scene");
+    let spray = world.spray.as_ref().expect("spray at 20 m/s");
+    assert!(spray.spume.extinction(0.0) > spray.spume.extinction(10.0) && spray.spume.extinction(10.0) > 0.0);
+    assert!(spray.medium.extinction(0.0, 1.0) > 0.0);
+    let v = world.spray_visibility_m(0.0).expect("spray");
+    // docs/models/brine-foam.md: 3.7 km at the sea at 20 m/s for a fully developed sea; the
+    // default scene's Pierson–Moskowitz sea is one, so within the table's two digits.
+    assert!((v / 3700.0 - 1.0).abs() < 0.02, "{v} m");
+    // The horizon's light: brighter looking along the horizon than straight down at the sea.
+    let along = spray.light.lookup([1.0, 0.0, 0.0]);
+    let down = spray.light.lookup([0.0, -1.0, 0.0]);
+    assert!(along[1] > down[1], "{along:?} {down:?}");
+}
