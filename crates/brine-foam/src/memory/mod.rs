@@ -41,9 +41,17 @@ pub const MAX_MEMORY_INSTANTS: usize = 64;
 /// Number of octaves of the patch noise and of the edge noise.
 const NOISE_OCTAVES: u32 = 5;
 
-/// Half-width of the survival step in the uniform patch variable: a patch edge is smoothed over
-/// ±2 % of the area quantile instead of aliasing.
-const EDGE_SOFTNESS: f64 = 0.02;
+/// Half-width of the survival step in the uniform patch variable, as a share of
+/// `min(θ, 1 − θ)`: a patch's cover falls from full to none across the quantiles `θ ± ε`, so
+/// residual foam thins toward its edges (drawn by the lace as filaments that break up) instead of
+/// ending at a line. Brine's choice, from photographs of decaying whitecap foam, whose rafts fray
+/// over a fringe a fraction of their size wide; the area mean stays `θ` because the step is
+/// symmetric about it and stays inside `[0, 1]`.
+pub const PATCH_FRINGE: f64 = 0.6;
+
+/// Smallest half-width of the survival step (in the uniform patch variable): even the smallest
+/// patches are smoothed over a little of the quantile instead of aliasing.
+const MIN_EDGE_SOFTNESS: f64 = 0.002;
 
 /// Clear share `1 − a′` below which a laced residual is scaled rather than solved from the union.
 const WELL_CONDITIONED: f64 = 1e-6;
@@ -184,8 +192,11 @@ pub struct WhiteWater {
 /// `S(m, a) = (1 − r) · smoothstep(θ + ε, θ − ε, m) + r θ`, `θ(a) = A₀ e^{−a/τ} min(1, (T − a)/Δt)`,
 ///
 /// with `r` the share of the patch noise that the pixel footprint does not resolve (a far pixel
-/// sees the mean survival, a near one the patches) and `ε` the edge softness. Both terms have
-/// area mean `θ`, so the filtering keeps the mean foam at every distance. `m = F(g)` is the
+/// sees the mean survival, a near one the patches) and `ε = 0.6 min(θ, 1 − θ)` the half-width of
+/// the patches' fringe ([`PATCH_FRINGE`]): a patch is full in its core and thins across a fringe
+/// whose width grows and shrinks with the patch, so that residual foam frays at its edges (the
+/// lace draws the thin cover there as broken filaments) instead of ending at a line. Both terms
+/// have area mean `θ`, so the filtering keeps the mean foam at every distance. `m = F(g)` is the
 /// empirical distribution function of a gradient-noise fBm `g` (tabulated in the constructor,
 /// so `m` is uniform to sampling), evaluated in coordinates stretched along the wind by
 /// `streak_stretch`: foam streaks along the wind. The brightness of foam of age `a` relative
@@ -512,11 +523,11 @@ impl FoamMemory {
         let m = self.patches.at(u[0], u[1], footprint_m);
         let mut used = 0;
         for (j, theta) in thetas.take(out.len()).enumerate() {
-            let survival = (1.0 - r) * smoothstep(theta + EDGE_SOFTNESS, theta - EDGE_SOFTNESS, m) + r * theta;
+            let survival = (1.0 - r) * survival_step(theta, m) + r * theta;
             out[j] = if survival < NEGLIGIBLE_SURVIVAL { 0.0 } else { survival };
             if out[j] > 0.0 {
                 used = j + 1;
-            } else if r <= 0.0 && j > 0 && theta < m - EDGE_SOFTNESS {
+            } else if r <= 0.0 && j > 0 && theta + patch_fringe(theta) < m {
                 break; // Older foam has a lower threshold still.
             }
         }
@@ -632,6 +643,24 @@ impl FoamMemory {
         }
         self.combine(t, active, &surv[..n], &src[..n])
     }
+}
+
+/// The resolved survival `smoothstep(θ + ε, θ − ε, m)` of foam of threshold `θ` where the patch
+/// variable is `m` (both in `[0, 1]`), `ε = ε(θ)` ([`patch_fringe`]): 1 in a patch's core, 0 outside,
+/// falling across its fringe.
+#[inline]
+fn survival_step(theta: f64, m: f64) -> f64 {
+    let e = patch_fringe(theta);
+    smoothstep(theta + e, theta - e, m)
+}
+
+/// Half-width `ε(θ)` of the survival step at threshold `θ ∈ [0, 1]`: [`PATCH_FRINGE`]
+/// `min(θ, 1 − θ)`, at least [`MIN_EDGE_SOFTNESS`] (which the area mean then tolerates only
+/// where `θ` is within it of 0 or 1). `θ + ε(θ)` grows with `θ`, so older foam (a lower `θ`)
+/// ends at a lower quantile.
+#[inline]
+fn patch_fringe(theta: f64) -> f64 {
+    (PATCH_FRINGE * theta.min(1.0 - theta)).max(MIN_EDGE_SOFTNESS)
 }
 
 /// A [`FoamMemory`] seen from one time: each lattice instant's survival threshold and foam

@@ -54,6 +54,57 @@ fn an_unresolved_pixel_sees_the_mean_survival() {
     assert!((w.white - theta(&mem, age)).abs() < 1e-12);
 }
 
+/// Points of the midpoint rule over the patch variable `m ∈ [0, 1]`: the step is smooth, so the
+/// rule's error is `O(n⁻²)` of its curvature, `≪ 10⁻⁶` here.
+const STEP_QUADRATURE_POINTS: usize = 20_000;
+
+/// `∫₀¹ S(θ, m) dm` by the midpoint rule.
+fn survival_area(theta: f64) -> f64 {
+    let n = STEP_QUADRATURE_POINTS as f64;
+    (0..STEP_QUADRATURE_POINTS).map(|i| survival_step(theta, (i as f64 + 0.5) / n)).sum::<f64>() / n
+}
+
+proptest::proptest! {
+    /// The fringe keeps the area law: over a uniform patch variable the survival's mean is `θ`
+    /// (the step is symmetric about `θ` and stays inside `[0, 1]`), except within
+    /// `MIN_EDGE_SOFTNESS` of 0 or 1, where the smallest step spills over the end by at most half
+    /// its width.
+    #[test]
+    fn the_fringe_keeps_the_area_law(theta in 0.0..=1.0f64) {
+        let area = survival_area(theta);
+        let tol = if theta.min(1.0 - theta) * PATCH_FRINGE < MIN_EDGE_SOFTNESS { MIN_EDGE_SOFTNESS } else { 1e-6 };
+        proptest::prop_assert!((area - theta).abs() <= tol, "θ = {}: area {}", theta, area);
+    }
+}
+
+/// Residual foam thins toward its edges: one breaking event that covered everything leaves, at
+/// age `a`, foam whose cover is partial (between 5 % and 95 %) on the share of the foam that the
+/// definition gives — the patch variable within the fringe's middle, where
+/// `smoothstep(x) ∈ (0.05, 0.95)`, i.e. `x ∈ (0.1296, 0.8704)` of the fringe `θ ± ε`,
+/// `ε = 0.6 min(θ, 1 − θ)` — measured on the water (so through the noise's own uniformity).
+#[test]
+fn residual_foam_frays_at_its_edges() {
+    // Roots of 3x² − 2x³ = 0.05 and 0.95.
+    let (lo, hi) = (0.129_62, 0.870_38);
+    let mem = memory();
+    let t0 = 10.0;
+    for age in [0.5, 2.0, 4.0] {
+        let (th, t) = (theta(&mem, age), t0 + age);
+        let eps = 0.6 * th.min(1.0 - th);
+        let partial = 2.0 * eps * (hi - lo);
+        let foamed = th - eps + 2.0 * eps * hi;
+        let covers: Vec<f64> = points()
+            .map(|p| mem.compose(p, t, 0.0, 0.0, |s| if (s.time_s - t0).abs() < 1e-9 { 1.0 } else { 0.0 }).white)
+            .collect();
+        let n = covers.len() as f64;
+        let got_partial = covers.iter().filter(|&&c| c > 0.05 && c < 0.95).count() as f64 / n;
+        let got_foamed = covers.iter().filter(|&&c| c > 0.05).count() as f64 / n;
+        assert!((got_partial - partial).abs() < AREA_TOL, "age {age}: partial {got_partial} against {partial}");
+        assert!((got_foamed - foamed).abs() < AREA_TOL, "age {age}: foamed {got_foamed} against {foamed}");
+        assert!(got_partial / got_foamed > 0.25, "age {age}: the fringe holds {} of the foam", got_partial / got_foamed);
+    }
+}
+
 #[test]
 fn streaks_are_longer_along_the_wind() {
     let p = FoamMemoryParams { streak_stretch: 6.0, wind_direction_rad: 0.0, ..FoamMemoryParams::default() };
