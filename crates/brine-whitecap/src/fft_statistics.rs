@@ -1,7 +1,11 @@
 //! Mip-mapped statistics of the displacement Jacobian of an FFT ocean (Dupuy & Bruneton 2012):
 //! the mean and variance of `J` over a pixel footprint from per-cascade pyramids.
 
-use brine_waves::{FftFrame, FftPyramid, FftRestJacobian};
+use std::borrow::Borrow;
+
+use brine_waves::{FftFrame, FftOcean, FftPyramid, FftRestJacobian, FftStackPyramid};
+use glam::DVec2;
+use rayon::prelude::*;
 
 use crate::statistics::Moments;
 
@@ -163,42 +167,160 @@ impl FftJacobianStatistics {
         Moments { mu, sigma2 }
     }
 }
-/// The footprint means of `J` alone, on rest grids: [`FftJacobianStatistics::from_rest_jacobians`]
-/// without the pyramid of `kᵢ²` — what a history of past instants reads (the foam memory asks
-/// only `μ` of the past), in half the memory. `μ` is the same to the bit.
+/// Two lattice instants closer than this (s) are the same.
+const SAME_INSTANT_S: f64 = 1e-6;
+
+/// One past instant of an FFT sea's breaking variable, for the foam memory: per cascade,
+/// `kᵢ = Jᵢ − 1 + 1/n` on its rest grid (f32), the sea moved with the foam's drift so that every
+/// instant's grid lines up ([`FftJacobianHistory`]).
 #[derive(Debug, Clone, PartialEq)]
-pub struct FftJacobianMeans {
-    /// Per cascade, the pyramid of `kᵢ`.
-    cascades: Vec<FftPyramid<1>>,
+pub struct FftInstantJacobian {
+    time_s: f64,
+    drift_m_s: DVec2,
+    /// Per cascade kept: resolution, spacing (m) and the `kᵢ` grid.
+    cascades: Vec<(usize, f64, Vec<f32>)>,
 }
 
-impl FftJacobianMeans {
-    /// The pyramids of `kᵢ = Jᵢ − 1 + 1/n` of rest-grid derivative fields, as
-    /// [`FftJacobianStatistics::from_rest_jacobians`].
+impl FftInstantJacobian {
+    /// The Jacobian of `ocean`'s waves longer than the breaking footprint at instant `t`, on rest
+    /// grids moved by `−v t`: grid point `p` holds `kᵢ` at rest position `p + v t`.
     ///
     /// # Arguments
-    /// - `fields`: per cascade, the derivatives per unit choppiness.
-    /// - `choppiness`: `λ ≥ 0`.
+    /// - `ocean`: the FFT sea (its choppiness `λ` makes `J`).
+    /// - `time_s`: the instant `t` (s), finite.
+    /// - `breaking_footprint_m`: `s_b` (m), `≥ 0` (brine-waves `FftOcean::rest_jacobian_fields`).
+    /// - `drift_m_s`: the foam's drift `v` relative to the water (m s⁻¹), finite.
     ///
     /// # References
-    /// Dupuy & Bruneton 2012 (mip-mapped `J`); Tessendorf 2001 (the choppy map).
-    pub fn from_rest_jacobians(fields: &[FftRestJacobian], choppiness: f64) -> Self {
+    /// Dupuy & Bruneton 2012 (`kᵢ`); Tessendorf 2001 (the choppy map); the Fourier shift theorem.
+    pub fn new(ocean: &FftOcean, time_s: f64, breaking_footprint_m: f64, drift_m_s: DVec2) -> Self {
+        let shift = drift_m_s * time_s;
+        let fields = ocean.rest_jacobian_fields_shifted(time_s, breaking_footprint_m, shift.to_array());
+        let chop = ocean.options().choppiness;
         let share = 1.0 / fields.len().max(1) as f64;
         let cascades = fields
             .iter()
             .map(|f| {
-                let base = (0..f.dxx.len()).map(|i| [f.jacobian(i, choppiness) - 1.0 + share]).collect();
-                FftPyramid::new(f.resolution, f.tile_size / f.resolution as f64, base)
+                let k = (0..f.dxx.len()).map(|i| (f.jacobian(i, chop) - 1.0 + share) as f32).collect();
+                (f.resolution, f.tile_size / f.resolution as f64, k)
             })
             .collect();
-        Self { cascades }
+        Self { time_s, drift_m_s, cascades }
     }
 
-    /// `μ`, the mean of `J` over a Gaussian footprint of standard deviation `footprint_m` (m,
-    /// `≥ 0`) centred at `(x, z)`: [`FftJacobianStatistics::moments_at`]'s `μ`.
-    #[inline]
-    pub fn mean_at(&self, x: f64, z: f64, footprint_m: f64) -> f64 {
-        debug_assert!(footprint_m >= 0.0);
-        self.cascades.iter().map(|p| p.footprint_mean(x, z, footprint_m)[0]).fold(0.0, |mu, m| mu + m)
+    /// The instant `t` (s).
+    pub fn time_s(&self) -> f64 {
+        self.time_s
+    }
+}
+
+/// The footprint means of an FFT sea's breaking variable at the foam memory's past instants,
+/// read together.
+///
+/// The memory asks, for a point `u₀` at the newest instant `t₀`, the means
+/// `μⱼ = Σᵢ ⟨kᵢ⟩(uⱼ, tⱼ)` along the foam's drift path `uⱼ = u₀ − v jΔt`, `tⱼ = t₀ − jΔt`. Each
+/// instant's grid is the sea moved by `−v tⱼ` ([`FftInstantJacobian`]), so every `uⱼ` falls on
+/// the same grid position `y = uⱼ − v tⱼ = u₀ − v t₀`: one pyramid per cascade holds all the
+/// instants in each texel (brine-waves `FftStackPyramid`), and one texel address and one set of
+/// trilinear weights serve them all. The means are those of [`FftJacobianStatistics`] of the
+/// same instant (the Dupuy & Bruneton pyramid), up to the f32 storage and to where the moved
+/// grid's points fall (the interpolation of the same smooth field from other samples).
+///
+/// # References
+/// Dupuy & Bruneton 2012 (mip-mapped `J`); brine-foam `FoamMemory` (the drift path).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FftJacobianHistory {
+    /// The instants, newest first.
+    instants: Vec<f64>,
+    drift_m_s: DVec2,
+    /// Per cascade, the pyramid of `kᵢ` at every instant.
+    cascades: Vec<FftStackPyramid>,
+}
+
+impl FftJacobianHistory {
+    /// Stacks instants made with one drift and one sea (owned or shared, e.g. `Arc`s kept from
+    /// frame to frame).
+    ///
+    /// # Arguments
+    /// - `instants`: newest first, all from [`FftInstantJacobian::new`] with the same ocean,
+    ///   breaking footprint and drift; may be empty (no history: every mean is 1).
+    ///
+    /// # Panics
+    /// If the instants differ in drift or cascades (a programming error).
+    pub fn new<I: Borrow<FftInstantJacobian> + Sync>(instants: &[I]) -> Self {
+        let Some(first) = instants.first().map(Borrow::borrow) else {
+            return Self { instants: Vec::new(), drift_m_s: DVec2::ZERO, cascades: Vec::new() };
+        };
+        let count = instants.len();
+        for i in instants.iter().map(Borrow::borrow) {
+            assert!(
+                i.drift_m_s == first.drift_m_s
+                    && i.cascades.len() == first.cascades.len()
+                    && i.cascades.iter().zip(&first.cascades).all(|(a, b)| a.0 == b.0 && a.1.to_bits() == b.1.to_bits()),
+                "FftJacobianHistory: instants of different seas or drifts"
+            );
+        }
+        let cascades = (0..first.cascades.len())
+            .into_par_iter()
+            .map(|c| {
+                let (n, spacing, _) = first.cascades[c];
+                // Written in order, read from `count` streams.
+                let grids: Vec<&[f32]> = instants.iter().map(|i| i.borrow().cascades[c].2.as_slice()).collect();
+                let base = (0..n * n).flat_map(|texel| grids.iter().map(move |g| g[texel])).collect();
+                FftStackPyramid::new(n, spacing, count, base)
+            })
+            .collect();
+        Self { instants: instants.iter().map(|i| i.borrow().time_s).collect(), drift_m_s: first.drift_m_s, cascades }
+    }
+
+    /// Number of instants held.
+    pub fn instant_count(&self) -> usize {
+        self.instants.len()
+    }
+
+    /// The footprint means `μⱼ` at `tⱼ = t₀ − jΔt`, `uⱼ = u₀ − v jΔt`, `j < out.len()`; an
+    /// instant not held gives `μ = 1` (no breaking).
+    ///
+    /// # Arguments
+    /// - `u0`: rest position at `t₀` (m); `t0`: the newest instant (s).
+    /// - `step_s`: `Δt` (s), `> 0`; `drift_m_s`: `v` (m s⁻¹).
+    /// - `footprint_m`: standard deviation of the Gaussian footprint (m), `≥ 0`.
+    /// - `out`: receives `μⱼ` (dimensionless).
+    pub fn mean_history(&self, u0: DVec2, t0: f64, step_s: f64, drift_m_s: DVec2, footprint_m: f64, out: &mut [f64]) {
+        debug_assert!(footprint_m >= 0.0 && step_s > 0.0);
+        out.fill(0.0);
+        let first = self.instants.iter().position(|t| (t - t0).abs() < SAME_INSTANT_S);
+        let consecutive = first.is_some_and(|i| {
+            self.instants[i..]
+                .iter()
+                .enumerate()
+                .take(out.len())
+                .all(|(j, t)| (t - (t0 - j as f64 * step_s)).abs() < SAME_INSTANT_S)
+        });
+        if let (Some(i0), true, true) = (first, consecutive, drift_m_s == self.drift_m_s) {
+            // Every instant at the same grid position.
+            let y = u0 - drift_m_s * t0;
+            let held = (self.instants.len() - i0).min(out.len());
+            for c in &self.cascades {
+                c.add_footprint_mean(y.x, y.y, footprint_m, i0, &mut out[..held]);
+            }
+            out[held..].fill(1.0);
+            return;
+        }
+        // Another lattice or drift: instant by instant.
+        for (j, o) in out.iter_mut().enumerate() {
+            let (tj, uj) = (t0 - j as f64 * step_s, u0 - drift_m_s * (j as f64 * step_s));
+            *o = match self.instants.iter().position(|t| (t - tj).abs() < SAME_INSTANT_S) {
+                Some(i) => {
+                    let y = uj - self.drift_m_s * self.instants[i];
+                    let mut m = [0.0];
+                    for c in &self.cascades {
+                        c.add_footprint_mean(y.x, y.y, footprint_m, i, &mut m);
+                    }
+                    m[0]
+                }
+                None => 1.0,
+            };
+        }
     }
 }

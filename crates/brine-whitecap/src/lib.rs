@@ -103,7 +103,7 @@ pub use erf::{
 };
 pub use error::WhitecapError;
 pub use fft_calibration::{FFT_CALIBRATION_SAMPLES, FftCalibration};
-pub use fft_statistics::{FftJacobianMeans, FftJacobianStatistics};
+pub use fft_statistics::{FftInstantJacobian, FftJacobianHistory, FftJacobianStatistics};
 pub use statistics::{F32_MOMENTS_ERROR, FootprintFilter, HistoryRotation, HistoryStart, JacobianStatistics, Moments};
 pub use white_water::{
     BREAKING_SPEED_SHARE, BreakingSource, FftBreaking, Lattice, TrochoidBreaking, WHITE_WATER_FOOTPRINTS_M,

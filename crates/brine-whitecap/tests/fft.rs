@@ -5,7 +5,11 @@
 use std::sync::OnceLock;
 
 use brine_waves::{Directions, Elfouhaily, FftFrame, FftOcean, FftOptions};
-use brine_whitecap::{CalibrationOptions, ErfMethod, FftCalibration, FftJacobianMeans, FftJacobianStatistics, Moments};
+use brine_whitecap::{
+    CalibrationOptions, ErfMethod, FftCalibration, FftInstantJacobian, FftJacobianHistory, FftJacobianStatistics,
+    Moments,
+};
+use glam::DVec2;
 use proptest::prelude::*;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -167,22 +171,79 @@ fn calibrated_coverage_holds_on_fresh_points_at_every_footprint() {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
-    /// The history's means of `J` (one pyramid per cascade, half the memory) are the statistics'
-    /// `μ` to the bit, at any point, footprint and breaking filter.
+    /// Without drift the history's means are the statistics' `μ` of each instant's own grids, at
+    /// any point, footprint and breaking filter, but for the history's f32 storage.
     #[test]
-    fn jacobian_means_are_the_statistics_mean_to_the_bit(
+    fn the_history_is_each_instants_mean(
         x in -500.0f64..500.0,
         z in -500.0f64..500.0,
         footprint in 0.0f64..50.0,
         breaking in 0.0f64..2.0,
     ) {
+        let ocean = history_ocean();
+        let (t0, step) = (1.5, 0.25);
+        let instants: Vec<FftInstantJacobian> =
+            (0..4).map(|j| FftInstantJacobian::new(ocean, t0 - f64::from(j) * step, breaking, DVec2::ZERO)).collect();
+        let history = FftJacobianHistory::new(&instants);
+        let mut out = [0.0; 5];
+        history.mean_history(DVec2::new(x, z), t0, step, DVec2::ZERO, footprint, &mut out);
+        for (j, &got) in out.iter().enumerate().take(4) {
+            let fields = ocean.rest_jacobian_fields(t0 - j as f64 * step, breaking);
+            let mu = FftJacobianStatistics::from_rest_jacobians(&fields, 2.0).moments_at(x, z, footprint).mu;
+            prop_assert!((got - mu).abs() < HISTORY_F32, "instant {}: {} vs {}", j, got, mu);
+        }
+        // An instant not held: no breaking.
+        prop_assert_eq!(out[4].to_bits(), 1f64.to_bits());
+    }
+}
+
+/// The history stores `kᵢ` in f32 (`|kᵢ| ≲ 3` here: `3 · 2⁻²⁴ ≈ 2×10⁻⁷` each) and sums its 7
+/// levels in f32 (about one rounding of the value per level), over 3 cascades: ≈ 4×10⁻⁶; 10⁻⁵.
+const HISTORY_F32: f64 = 1e-5;
+
+/// The sea of the history tests: the 14 m/s sea of [`frame`], three 64² cascades, choppiness 2.
+fn history_ocean() -> &'static FftOcean {
+    static OCEAN: OnceLock<FftOcean> = OnceLock::new();
+    OCEAN.get_or_init(|| {
         let elf = Elfouhaily::from_fetch(14.0, 1e5).unwrap();
         let d = elf.spreading(Directions::Downwind);
         let o = FftOptions { resolution: 64, choppiness: 2.0, ..FftOptions::for_spectrum(&elf, 3) };
-        let fields = FftOcean::new(&elf, &d, &o).unwrap().rest_jacobian_fields(1.5, breaking);
-        let stats = FftJacobianStatistics::from_rest_jacobians(&fields, 2.0);
-        let means = FftJacobianMeans::from_rest_jacobians(&fields, 2.0);
-        let (mu, m) = (stats.moments_at(x, z, footprint).mu, means.mean_at(x, z, footprint));
-        prop_assert_eq!(mu.to_bits(), m.to_bits(), "{} vs {}", mu, m);
+        FftOcean::new(&elf, &d, &o).unwrap()
+    })
+}
+
+/// With the foam's drift, instant `j` is read where the foam now at `u₀` was, `uⱼ = u₀ − v jΔt`:
+/// on the instant's grid moved by `−v tⱼ` (whose values brine-waves checks against the direct
+/// trig sums at the moved points), that is the point `uⱼ − v tⱼ = u₀ − v t₀` for every `j`. The
+/// history matches each instant's statistics built on its own moved grid and read there (the
+/// f64 pyramid of `(k, k²)`), at several footprints, but for its f32 storage.
+#[test]
+fn the_history_follows_the_drift() {
+    let ocean = history_ocean();
+    let (t0, step, breaking) = (7.25, 0.25, 0.8);
+    let drift = DVec2::new(0.41, -0.17);
+    let instants: Vec<FftInstantJacobian> =
+        (0..6).map(|j| FftInstantJacobian::new(ocean, t0 - f64::from(j) * step, breaking, drift)).collect();
+    let history = FftJacobianHistory::new(&instants);
+    for (x, z, footprint) in [(0.3, 1.7, 0.0), (-41.2, 77.7, 0.7), (250.0, -13.3, 6.0)] {
+        let u0 = DVec2::new(x, z);
+        let mut out = [0.0; 6];
+        history.mean_history(u0, t0, step, drift, footprint, &mut out);
+        for (j, &got) in out.iter().enumerate() {
+            let tj = t0 - j as f64 * step;
+            let uj = u0 - drift * (j as f64 * step);
+            let moved = ocean.rest_jacobian_fields_shifted(tj, breaking, (drift * tj).to_array());
+            let y = uj - drift * tj;
+            let mu = FftJacobianStatistics::from_rest_jacobians(&moved, 2.0).moments_at(y.x, y.y, footprint).mu;
+            assert!((got - mu).abs() < HISTORY_F32, "({x}, {z}) instant {j}: {got} vs {mu}");
+        }
+        // Asked on another lattice (half the step) it reads instant by instant: the held
+        // instants agree with the fast path, the others have no breaking.
+        let mut half = [0.0; 6];
+        history.mean_history(u0, t0, 0.5 * step, drift, footprint, &mut half);
+        for (j, &h) in half.iter().enumerate() {
+            let want = if j % 2 == 0 { out[j / 2] } else { 1.0 };
+            assert!((h - want).abs() < 1e-12, "half step, instant {j}: {h} vs {want}");
+        }
     }
 }

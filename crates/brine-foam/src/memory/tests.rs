@@ -101,7 +101,11 @@ fn residual_foam_frays_at_its_edges() {
         let got_foamed = covers.iter().filter(|&&c| c > 0.05).count() as f64 / n;
         assert!((got_partial - partial).abs() < AREA_TOL, "age {age}: partial {got_partial} against {partial}");
         assert!((got_foamed - foamed).abs() < AREA_TOL, "age {age}: foamed {got_foamed} against {foamed}");
-        assert!(got_partial / got_foamed > 0.25, "age {age}: the fringe holds {} of the foam", got_partial / got_foamed);
+        assert!(
+            got_partial / got_foamed > 0.25,
+            "age {age}: the fringe holds {} of the foam",
+            got_partial / got_foamed
+        );
     }
 }
 

@@ -4,10 +4,10 @@ use brine_foam::{FoamMemory, FoamMemoryParams, KoepkeFoam};
 use brine_optics::SlopeVariance;
 use brine_waves::{DetailWaves, FftOcean, Ocean, TileLattice, TrochoidSet};
 use brine_whitecap::{
-    FftBreaking, FftJacobianMeans, FftJacobianStatistics, JacobianStatistics, TrochoidBreaking, WhiteWaterModel,
-    WhiteWaterOptions,
+    FftBreaking, FftInstantJacobian, FftJacobianHistory, FftJacobianStatistics, JacobianStatistics, TrochoidBreaking,
+    WhiteWaterModel, WhiteWaterOptions,
 };
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
 
 use glam::DVec2;
 use rayon::prelude::*;
@@ -64,15 +64,14 @@ pub(super) fn without_instants(scene: &Scene) -> Scene {
     key
 }
 
-/// The FFT sea's Jacobian means at the memory's lattice instants, kept from one frame to the
-/// next: the instants are multiples of the memory's step, so consecutive frames share most of
-/// them, and a mean is a function of its instant alone (the same bits whichever frame made it).
+/// The FFT sea's Jacobian at the memory's lattice instants, kept from one frame to the next: the
+/// instants are multiples of the memory's step, so consecutive frames share most of them, and an
+/// instant's grids are a function of the instant alone (the same bits whichever frame made them).
 #[derive(Default)]
-pub(super) struct PastMeans(Mutex<Vec<(u64, FftJacobianMeans)>>);
+pub(super) struct PastMeans(Mutex<Vec<(u64, Arc<FftInstantJacobian>)>>);
 
 /// The past and present Jacobian statistics of the FFT sea at `t` for the breaking footprint
-/// `s_b`, with the memory's instants read for their means (those of instants already made for
-/// an earlier frame taken from `kept`).
+/// `s_b`, with the memory's instants (those already made for an earlier frame taken from `kept`).
 pub(super) fn fft_breaking_at(
     ocean: &FftOcean,
     memory: &FoamMemory,
@@ -81,22 +80,22 @@ pub(super) fn fft_breaking_at(
     kept: &PastMeans,
 ) -> FftBreaking {
     let chop = ocean.options().choppiness;
+    let drift = DVec2::from_array(memory.drift());
     let instants: Vec<f64> = (0..memory.sample_count()).map(|j| memory.instant(t, j).0).collect();
     let old = std::mem::take(&mut *kept.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner));
-    let past: Vec<(f64, FftJacobianMeans)> = instants
+    let past: Vec<Arc<FftInstantJacobian>> = instants
         .par_iter()
-        .map(|&tj| {
-            let means = match old.iter().find(|(bits, _)| *bits == tj.to_bits()) {
-                Some((_, m)) => m.clone(),
-                None => FftJacobianMeans::from_rest_jacobians(&ocean.rest_jacobian_fields(tj, s_b), chop),
-            };
-            (tj, means)
+        .map(|&tj| match old.iter().find(|(bits, _)| *bits == tj.to_bits()) {
+            Some((_, m)) => Arc::clone(m),
+            None => Arc::new(FftInstantJacobian::new(ocean, tj, s_b, drift)),
         })
         .collect();
+    drop(old);
+    let history = FftJacobianHistory::new(&past);
     *kept.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner) =
-        past.iter().map(|(tj, m)| (tj.to_bits(), m.clone())).collect();
+        past.into_iter().map(|m| (m.time_s().to_bits(), m)).collect();
     let now = FftJacobianStatistics::from_rest_jacobians(&ocean.rest_jacobian_fields(t, s_b), chop);
-    FftBreaking::new(now, past, s_b, ocean.jacobian_variance_removed(s_b, chop))
+    FftBreaking::new(now, history, s_b, ocean.jacobian_variance_removed(s_b, chop))
 }
 
 impl Timeless {

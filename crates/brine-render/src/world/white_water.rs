@@ -9,6 +9,8 @@ pub const ACTIVE_WHITECAP_SHARE: f64 = 0.2;
 
 /// White water of the sea: the active whitecaps of its displacement Jacobian and the foam they
 /// leave, one model per surface (brine-whitecap `WhiteWaterModel`).
+// One per frame, never in a collection: the size difference costs nothing.
+#[allow(clippy::large_enum_variant)]
 pub enum WhiteWaterSea {
     /// Trochoid (or Gerstner, or sine) sets: analytic moments, phases rotated into the past.
     Trochoids(WhiteWaterModel<TrochoidBreaking>),

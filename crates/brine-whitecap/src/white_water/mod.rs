@@ -2,6 +2,8 @@
 //! (brine-foam `FoamMemory`), calibrated together on Monahan's coverage.
 
 use brine_foam::{FoamMemory, MAX_MEMORY_INSTANTS, MemoryClock, WhiteWater};
+use std::sync::Arc;
+
 use glam::DVec2;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -9,7 +11,7 @@ use rayon::prelude::*;
 
 pub use crate::breaking::{BREAKING_SPEED_SHARE, breaking_footprint, breaking_wavenumber_cut, forward_face_offset};
 use crate::error::{WhitecapError, check};
-use crate::fft_statistics::{FftJacobianMeans, FftJacobianStatistics};
+use crate::fft_statistics::{FftJacobianHistory, FftJacobianStatistics};
 use crate::statistics::{FootprintFilter, HistoryRotation, HistoryStart, JacobianStatistics, Moments};
 
 /// The breaking variable of a sea: the footprint moments of its displacement Jacobian now and
@@ -130,22 +132,28 @@ impl BreakingSource for TrochoidBreaking {
 /// foam memory; a footprint `s_eff = √(s² + s_b²)` asked of it is read as the pixel's `s`.
 #[derive(Debug, Clone)]
 pub struct FftBreaking {
-    now: FftJacobianStatistics,
-    past: Vec<(f64, FftJacobianMeans)>,
+    now: Arc<FftJacobianStatistics>,
+    /// Shared: a model cloned for a frame keeps one copy of the large stacks.
+    history: Arc<FftJacobianHistory>,
     breaking_footprint: f64,
     short_variance: f64,
 }
 
 impl FftBreaking {
-    /// The present statistics and the means of `J` at past instants `(tⱼ, means)` (s), all
-    /// filtered by `breaking_footprint_m` (m), and the variance of `J` that filter removed.
+    /// The present statistics and the means of `J` at the memory's past instants, all filtered
+    /// by `breaking_footprint_m` (m), and the variance of `J` that filter removed.
     pub fn new(
         now: FftJacobianStatistics,
-        past: Vec<(f64, FftJacobianMeans)>,
+        history: FftJacobianHistory,
         breaking_footprint_m: f64,
         short_variance: f64,
     ) -> Self {
-        Self { now, past, breaking_footprint: breaking_footprint_m, short_variance }
+        Self {
+            now: Arc::new(now),
+            history: Arc::new(history),
+            breaking_footprint: breaking_footprint_m,
+            short_variance,
+        }
     }
 
     /// The pixel footprint inside an effective one.
@@ -162,9 +170,6 @@ impl FftBreaking {
 /// Points over which the short waves' mean Jacobian variance is averaged.
 const SHORT_VARIANCE_SAMPLES: usize = 1024;
 
-/// Two lattice instants closer than this (s) are the same.
-const SAME_INSTANT_S: f64 = 1e-6;
-
 impl BreakingSource for FftBreaking {
     fn moments(&self, u: DVec2, _t: f64, footprint_m: f64) -> Moments {
         let m = self.now.moments_at(u.x, u.y, self.pixel(footprint_m));
@@ -177,17 +182,7 @@ impl BreakingSource for FftBreaking {
     }
 
     fn mean_history(&self, u0: DVec2, t0: f64, step_s: f64, drift_m_s: DVec2, footprint_m: f64, out: &mut [f64]) {
-        let footprint_m = self.pixel(footprint_m);
-        // The stored instants are consecutive lattice instants, newest first: find instant 0 once.
-        let first = self.past.iter().position(|(t, _)| (t - t0).abs() < SAME_INSTANT_S);
-        for (j, o) in out.iter_mut().enumerate() {
-            let (tj, uj) = (t0 - j as f64 * step_s, u0 - drift_m_s * (j as f64 * step_s));
-            let stored = first
-                .map(|f| f + j)
-                .filter(|&i| self.past.get(i).is_some_and(|(t, _)| (t - tj).abs() < SAME_INSTANT_S))
-                .or_else(|| self.past.iter().position(|(t, _)| (t - tj).abs() < SAME_INSTANT_S));
-            *o = stored.map_or(1.0, |i| self.past[i].1.mean_at(uj.x, uj.y, footprint_m));
-        }
+        self.history.mean_history(u0, t0, step_s, drift_m_s, self.pixel(footprint_m), out);
     }
 }
 

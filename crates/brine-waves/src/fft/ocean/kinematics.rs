@@ -161,11 +161,37 @@ pub(super) const GAUSSIAN_KEEP: f64 = 5.256_521_769_756_932;
 
 /// The three displacement derivatives of one cascade's modes below `k_max` at phase time `tau`,
 /// each mode filtered by the Gaussian footprint `s`.
-pub(super) fn synthesise_jacobian(c: &CascadeSpectrum, tau: f64, s: f64, k_max: f64) -> FftRestJacobian {
+pub(super) fn synthesise_jacobian(
+    c: &CascadeSpectrum,
+    tau: f64,
+    s: f64,
+    k_max: f64,
+    shift_m: [f64; 2],
+) -> FftRestJacobian {
     let n = c.n;
     let mut packs: Vec<Vec<Complex64>> = (0..2).map(|_| vec![Complex64::ZERO; n * n]).collect();
+    // The modes lie on the tile's lattice, `k = (2π/L)(i, j)`, so a shift by whole tiles changes
+    // nothing, and `e^{ik·a} = e^{i i θₓ} e^{i j θ_z}` with `θ = 2πa/L`: one table per axis.
+    let (sx, sz) = (shift_m[0].rem_euclid(c.tile), shift_m[1].rem_euclid(c.tile));
+    let shifted = sx != 0.0 || sz != 0.0;
+    // Tables over the wave numbers `−N/2 ..= N/2`, read at each mode's own `(i, j) = kL/2π`.
+    let half = (n / 2) as i64;
+    let table = |a: f64| -> Vec<Complex64> {
+        let theta = std::f64::consts::TAU * a / c.tile;
+        (-half..=half)
+            .map(|i| {
+                let (sin, cos) = libm::sincos(i as f64 * theta);
+                Complex64::new(cos, sin)
+            })
+            .collect()
+    };
+    let (phase_x, phase_z) = if shifted { (table(sx), table(sz)) } else { (Vec::new(), Vec::new()) };
+    let wave = |k: f64| ((k * c.tile / std::f64::consts::TAU).round() as i64 + half) as usize;
     for m in c.modes.iter().filter(|m| m.k <= k_max) {
-        let h = evolve(m, tau) * (-0.5 * m.k * m.k * s * s).exp();
+        let mut h = evolve(m, tau) * (-0.5 * m.k * m.k * s * s).exp();
+        if shifted {
+            h *= phase_x[wave(m.kx)] * phase_z[wave(m.kz)];
+        }
         let inv_k = 1.0 / m.k;
         let (ux, uz) = (m.kx * inv_k, m.kz * inv_k);
         packs[0][m.index] = pack(-h * (m.kx * ux), -h * (m.kz * uz));

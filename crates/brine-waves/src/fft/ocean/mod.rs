@@ -455,14 +455,32 @@ impl FftOcean {
     /// # References
     /// Tessendorf 2001, Eq. 44 (choppy displacement); Dupuy & Bruneton 2012 (its derivatives).
     pub fn rest_jacobian_fields(&self, t: f64, footprint_m: f64) -> Vec<FftRestJacobian> {
-        debug_assert!(t.is_finite() && footprint_m >= 0.0);
+        self.rest_jacobian_fields_shifted(t, footprint_m, [0.0, 0.0])
+    }
+
+    /// [`Self::rest_jacobian_fields`] of the sea moved by `−shift`: grid point `p` holds the
+    /// fields at rest position `p + shift`. The shift is exact (each mode times
+    /// `e^{i k·shift}`, the shift reduced modulo each tile first), not an interpolation; a zero
+    /// shift gives the same bits as [`Self::rest_jacobian_fields`].
+    ///
+    /// # Arguments
+    /// - `t`: time (s), finite; `footprint_m`: `s` (m), `≥ 0`.
+    /// - `shift_m`: `(sₓ, s_z)` (m), finite.
+    ///
+    /// # Returns
+    /// One [`FftRestJacobian`] per cascade kept (in cascade order).
+    ///
+    /// # References
+    /// The Fourier shift theorem; Tessendorf 2001, Eq. 44.
+    pub fn rest_jacobian_fields_shifted(&self, t: f64, footprint_m: f64, shift_m: [f64; 2]) -> Vec<FftRestJacobian> {
+        debug_assert!(t.is_finite() && footprint_m >= 0.0 && shift_m.iter().all(|v| v.is_finite()));
         let tau = self.phase_time(t);
         let k_max = GAUSSIAN_KEEP / footprint_m.max(f64::MIN_POSITIVE);
         self.cascades
             .par_iter()
             .enumerate()
             .filter(|(i, _)| self.band(*i).0 < k_max)
-            .map(|(_, c)| synthesise_jacobian(c, tau, footprint_m, k_max))
+            .map(|(_, c)| synthesise_jacobian(c, tau, footprint_m, k_max, shift_m))
             .collect()
     }
 
