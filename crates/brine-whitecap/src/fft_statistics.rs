@@ -256,7 +256,10 @@ impl FftJacobianHistory {
             assert!(
                 i.drift_m_s == first.drift_m_s
                     && i.cascades.len() == first.cascades.len()
-                    && i.cascades.iter().zip(&first.cascades).all(|(a, b)| a.0 == b.0 && a.1.to_bits() == b.1.to_bits()),
+                    && i.cascades
+                        .iter()
+                        .zip(&first.cascades)
+                        .all(|(a, b)| a.0 == b.0 && a.1.to_bits() == b.1.to_bits()),
                 "FftJacobianHistory: instants of different seas or drifts"
             );
         }
