@@ -1,6 +1,9 @@
-//! Footprint fading: a component smaller than a pixel's footprint leaves the traced surface
-//! smoothly, over a distance along the ray (shared by the tracer and the surfaces that fade
-//! their own waves).
+//! Pixel footprints on the sea: the fading of a component smaller than a pixel's footprint,
+//! which leaves the traced surface smoothly over a distance along the ray (shared by the tracer
+//! and the surfaces that fade their own waves), and the elliptical footprint of a pixel seen at a
+//! slant, read as a row of round reads (shared by the mip pyramids and the foam lace).
+
+use glam::DVec2;
 
 /// Bound of `|dw/dt|·t` for `w(t) = smoothstep(1, 1.5, T/t)`: `|S'| ≤ 3` per unit of `T/t`, and
 /// `|d(T/t)/dt| = (T/t)/t ≤ 1.5/t` where `w` varies.
@@ -45,4 +48,150 @@ pub fn footprint_weight_slope(fade_distance: f64, t: f64) -> f64 {
     let u = (x - 1.0) * 2.0;
     // dS/du · du/dx · dx/dt = 6u(1 − u) · 2 · (−x/t).
     -12.0 * u * (1.0 - u) * x / t
+}
+
+/// `√12`: a box of width `w` has the standard deviation `w/√12`, so a Gaussian footprint of
+/// standard deviation `s` reads the pyramid level of texel width `√12 s` (same spread).
+pub const BOX_WIDTH_PER_SIGMA: f64 = 3.464_101_615_137_754_6;
+
+/// Largest ratio of an [`EllipticalFootprint`]'s major axis to its minor axis that is read as
+/// such: beyond it the minor axis is widened to `major/8`, as GPUs cap anisotropic filtering, so
+/// that at most 15 probes cover the ellipse.
+pub const MAX_ANISOTROPY: f64 = 8.0;
+
+/// Ratio of the probe spacing to the minor axis's standard deviation that the probes of an
+/// [`EllipticalFootprint`] stay within: a row of round Gaussians of standard deviation `s`
+/// spaced `2s` apart sums to a flat band within `2e^{−2π²/4} ≈ 1.4 %`.
+const PROBE_SPACING_PER_SIGMA: f64 = 2.0;
+
+/// An elliptical Gaussian footprint on the sea (a pixel seen at a slant: stretched along the
+/// view), read as GPUs filter anisotropically: a row of round reads of the minor axis's width
+/// along the major axis (brine-waves' mip pyramids, brine-foam's lace). A round read of the
+/// ellipse's area instead keeps detail along the view that the pixel cannot hold: waves alias
+/// into speckle, thin lines across the view into rows of dots.
+///
+/// The ellipse of standard deviations `(s_major, s_minor)` is the round Gaussian of `s_minor`
+/// convolved with a 1-D Gaussian of `s_e = √(s_major² − s_minor²)` along the major axis; that
+/// 1-D blur is replaced by `n` equal probes spaced `h` apart with the same variance,
+/// `h² (n² − 1)/12 = s_e²`, `n ≥ 2` the fewest with `h ≤ 2 s_minor` (15 at most). A ratio above
+/// [`MAX_ANISOTROPY`] widens the minor axis to `s_major/8`.
+///
+/// # References
+/// Heckbert P. 1989, "Fundamentals of texture mapping and image warping" (elliptical
+/// footprints); the `EXT_texture_filter_anisotropic` extension (probes along the major axis).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EllipticalFootprint {
+    /// The round reads' standard deviation (m), after any widening.
+    minor_m: f64,
+    /// The step from one probe to the next (m, along the major axis).
+    step: DVec2,
+    /// Number of probes `n ≥ 1`.
+    count: usize,
+    /// The major axis's standard deviation (m).
+    major_m: f64,
+    /// The standard deviation of the round footprint of the ellipse's area (m).
+    area_m: f64,
+}
+
+impl EllipticalFootprint {
+    /// A round footprint of standard deviation `sigma_m` (m, `≥ 0`): one read.
+    pub fn round(sigma_m: f64) -> Self {
+        debug_assert!(sigma_m >= 0.0);
+        Self { minor_m: sigma_m, step: DVec2::ZERO, count: 1, major_m: sigma_m, area_m: sigma_m }
+    }
+
+    /// The footprint of standard deviations `sigma_major_m ≥ sigma_minor_m ≥ 0` (m; swapped if
+    /// given the other way), the major one along `major_axis` (a horizontal direction, any
+    /// non-zero length; a zero or non-finite axis gives the round footprint of the major
+    /// deviation's geometric mean with the minor one).
+    pub fn new(sigma_minor_m: f64, sigma_major_m: f64, major_axis: DVec2) -> Self {
+        let (minor, major) = if sigma_minor_m <= sigma_major_m {
+            (sigma_minor_m, sigma_major_m)
+        } else {
+            (sigma_major_m, sigma_minor_m)
+        };
+        debug_assert!(minor >= 0.0 && major.is_finite());
+        let area_m = (minor * major).sqrt();
+        let axis = major_axis.try_normalize();
+        let Some(axis) = axis else { return Self::round(area_m) };
+        let minor = minor.max(major / MAX_ANISOTROPY);
+        let extra2 = major * major - minor * minor;
+        // Under a tenth of the minor deviation added along the axis: one read (the round one).
+        if minor <= 0.0 || extra2 <= 0.01 * minor * minor {
+            return Self { area_m, ..Self::round(minor) };
+        }
+        let extra = extra2.sqrt();
+        // The fewest with `h = s_e √(12/(n² − 1)) ≤ 2 s_minor`: `n² ≥ 1 + 12 s_e²/(2 s_minor)²`.
+        let ratio = extra / (PROBE_SPACING_PER_SIGMA * minor);
+        let count = ((1.0 + 12.0 * ratio * ratio).sqrt().ceil() as usize).max(2);
+        let spacing = extra * (12.0 / (count * count - 1) as f64).sqrt();
+        Self { minor_m: minor, step: axis * spacing, count, major_m: major, area_m }
+    }
+
+    /// The round reads' standard deviation (m).
+    pub fn minor_m(&self) -> f64 {
+        self.minor_m
+    }
+
+    /// The number of probes.
+    pub fn probes(&self) -> usize {
+        self.count
+    }
+
+    /// The major axis's standard deviation (m).
+    pub fn major_m(&self) -> f64 {
+        self.major_m
+    }
+
+    /// The standard deviation of the round footprint of the same area, `√(s_minor s_major)` of
+    /// the axes given (m): what an isotropic filter reads.
+    pub fn area_sigma_m(&self) -> f64 {
+        self.area_m
+    }
+
+    /// The probes' offsets from the centre (m, `(x, z)`), evenly spaced along the major axis and
+    /// centred.
+    pub fn offsets(&self) -> impl Iterator<Item = DVec2> + '_ {
+        let half = 0.5 * (self.count - 1) as f64;
+        (0..self.count).map(move |i| self.step * (i as f64 - half))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Relative rounding of the probes' variance: a sum of at most 14 squares.
+    const PROBE_VARIANCE_ROUNDING: f64 = 1e-12;
+
+    proptest::proptest! {
+        /// The probes have the ellipse's extra variance along the axis, `s_major² − s_minor²`
+        /// (the minor axis widened to `s_major/8` beyond [`MAX_ANISOTROPY`]), at most 15 of them,
+        /// spaced at most `2 s_minor` apart, centred.
+        #[test]
+        fn the_probes_carry_the_ellipses_variance(
+            minor in 1e-3f64..10.0, ratio in 1.0f64..40.0, angle in 0.0f64..std::f64::consts::TAU,
+        ) {
+            let major = minor * ratio;
+            let e = EllipticalFootprint::new(minor, major, DVec2::from_angle(angle) * 3.0);
+            let widened = minor.max(major / MAX_ANISOTROPY);
+            proptest::prop_assert!((e.minor_m() - widened).abs() <= 1e-15 * widened);
+            let n = e.probes() as f64;
+            proptest::prop_assert!(e.probes() <= 15);
+            let offsets: Vec<DVec2> = e.offsets().collect();
+            let mean = offsets.iter().sum::<DVec2>() / n;
+            proptest::prop_assert!(mean.length() <= 1e-12 * major);
+            let variance = offsets.iter().map(|o| o.length_squared()).sum::<f64>() / n;
+            let extra = major * major - widened * widened;
+            if e.probes() > 1 {
+                proptest::prop_assert!((variance - extra).abs() <= PROBE_VARIANCE_ROUNDING * extra);
+                proptest::prop_assert!(e.step.length() <= PROBE_SPACING_PER_SIGMA * widened * (1.0 + 1e-12));
+                // Along the axis given.
+                proptest::prop_assert!(e.step.perp_dot(DVec2::from_angle(angle)).abs() <= 1e-12 * e.step.length());
+            } else {
+                proptest::prop_assert!(extra <= 0.01 * widened * widened * (1.0 + 1e-12));
+            }
+        }
+
+    }
 }

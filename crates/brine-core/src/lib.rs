@@ -1,4 +1,6 @@
-//! The constants and small numeric helpers every Brine model crate shares, defined once.
+//! The constants and small numeric helpers every Brine model crate shares, defined once, and the
+//! pixel footprint on the sea ([`footprint`]: the fading of components smaller than it, and the
+//! elliptical footprint of a pixel seen at a slant, read as a row of round reads).
 //!
 //! | symbol | Rust name | value | unit |
 //! |---|---|---|---|

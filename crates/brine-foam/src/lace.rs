@@ -5,6 +5,7 @@
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
+use brine_core::footprint::EllipticalFootprint;
 use brine_core::lattice_floor;
 
 use crate::error::{FoamError, check};
@@ -64,16 +65,20 @@ const LACE_FADE_CELLS_PER_SIGMA: (f64, f64) = (7.0, 14.0);
 /// values along the borders of Voronoi cells, so that the foam of cover `q` is drawn where
 /// `m < q` — a net of filaments that thickens with `q` and leaves round holes of open water,
 /// closing to solid white as `q → 1` (an active whitecap's core) and thinning to threads as the
-/// foam decays.
+/// foam decays. The coarsest octave enters through its logarithm, which falls without bound on a
+/// cell border: the finer octaves vary a thread's width and break a dense cover into lace, but
+/// never cut a thin thread into beads where their own borders cross it.
 ///
 /// `c(u) = (1 − r) · smoothstep(q + ε, q − ε, m(u)) + r q`, `ε = 0.3 min(q, 1 − q)`,
 ///
-/// `m = F(Σₒ fₒ 2⁻ᵒ d̂ₒ)`, `d̂ₒ = ((F₂ − F₁)/λₒ − d̄)/σ_d`, `o = 0, 1, 2`,
+/// `m = F(Σₒ fₒ 2⁻ᵒ d̂ₒ)`, `o = 0, 1, 2`,
+/// `d̂₀ = (ln(d₀ + d_min) − ℓ̄)/σ_ℓ`, `d̂ₒ = (dₒ − d̄)/σ_d` for `o ≥ 1`, `dₒ = (F₂ − F₁)/λₒ`,
 ///
 /// where `F₁`, `F₂` are the distances to the nearest and second-nearest feature points of a
 /// jittered grid of cells `λₒ = λ₀/3ᵒ` (Worley 1996), read at the rest position warped by a
-/// gradient noise (up to 0.4 λ₀, so the cell borders curve), `d̄` and `σ_d` the mean and spread of
-/// `(F₂ − F₁)/λ`, `fₒ` the footprint fade of each octave (finest first), `F` the tabulated
+/// gradient noise (up to 0.4 λ₀, so the cell borders curve), `ℓ̄`, `σ_ℓ` and `d̄`, `σ_d` the means
+/// and spreads of the two terms, `d_min = 10⁻⁴`, `fₒ` the footprint fade of each octave (finest
+/// first), `F` the tabulated
 /// distribution function of the sum at those fades (so `m` is uniform at every footprint), and
 /// `r = 1 − f₀²` the share of the lace the pixel does not resolve. The fades read the footprint
 /// widened by `1/min(1, 4 min(q, 1 − q))`: a thin filament or a small hole is faded to the mean
@@ -95,8 +100,10 @@ pub struct FoamLace {
     period: Option<i64>,
     /// The two components of the warp (gradient noise, values in `[0, 2]`).
     warp: [FoamNoise; 2],
-    mean: f64,
-    std: f64,
+    /// Mean and spread of the coarsest octave's `ln(d₀ + d_min)`.
+    coarse: (f64, f64),
+    /// Mean and spread of a finer octave's `dₒ`.
+    fine: (f64, f64),
     /// Distribution functions of the partial sums: `cdfs[n − 1][j]` of the `n` coarsest octaves
     /// with octave `n` faded to `f = j/(FADE_TABLES − 1)`.
     cdfs: Vec<Vec<EmpiricalCdf>>,
@@ -104,6 +111,24 @@ pub struct FoamLace {
 
 /// Values of the fine octave's fade at which the distribution of the sum is tabulated.
 const FADE_TABLES: usize = 9;
+
+/// Floor of the coarsest octave's border distance under its logarithm (cells): a filament's spine
+/// is cut only where a cover is below about this.
+const LACE_BORDER_FLOOR: f64 = 1e-4;
+
+/// The coarsest octave's term, `ln(d₀ + d_min)`: unbounded below on a cell border, so that the
+/// finer octaves modulate a thin filament's width without cutting it into beads.
+fn coarse_term(d: f64) -> f64 {
+    (d + LACE_BORDER_FLOOR).ln()
+}
+
+/// Mean and standard deviation of `values`.
+fn moments(values: impl Iterator<Item = f64> + Clone) -> (f64, f64) {
+    let n = values.clone().count() as f64;
+    let mean = values.clone().sum::<f64>() / n;
+    let std = (values.map(|v| (v - mean).powi(2)).sum::<f64>() / n).sqrt().max(f64::MIN_POSITIVE);
+    (mean, std)
+}
 
 /// Mixes a cell index, octave and seed into 64 well-spread bits (SplitMix64's finaliser).
 #[inline]
@@ -162,16 +187,16 @@ impl FoamLace {
         }
         let [w0, w1] = warp;
         let warp = [w0?, w1?];
-        let mut lace = Self { cell_m: cell, seed, period, warp, mean: 0.0, std: 1.0, cdfs: Vec::new() };
+        let mut lace =
+            Self { cell_m: cell, seed, period, warp, coarse: (0.0, 1.0), fine: (0.0, 1.0), cdfs: Vec::new() };
         // The moments of one octave and the distribution of the sum, from points over many cells.
         let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x1ace_5eed);
         let span = 100.0 * cell;
         let points: Vec<(f64, f64)> =
             (0..QUANTILE_SAMPLES).map(|_| (rng.random_range(-span..span), rng.random_range(-span..span))).collect();
         let d: Vec<f64> = points.iter().map(|&(x, z)| lace.border_distance(x, z, 0)).collect();
-        let n = d.len() as f64;
-        lace.mean = d.iter().sum::<f64>() / n;
-        lace.std = (d.iter().map(|v| (v - lace.mean).powi(2)).sum::<f64>() / n).sqrt().max(f64::MIN_POSITIVE);
+        lace.fine = moments(d.iter().copied());
+        lace.coarse = moments(d.iter().map(|&d| coarse_term(d)));
         let d: Vec<[f64; LACE_OCTAVES]> = points.iter().map(|&(x, z)| lace.normalised(x, z)).collect();
         lace.cdfs = (1..LACE_OCTAVES)
             .map(|n| {
@@ -192,6 +217,14 @@ impl FoamLace {
     /// break up scale their softening by it.
     pub fn resolved_share(&self, sigma_m: f64) -> f64 {
         Self::fade(self.cell_m / LACE_OCTAVE_RATIO, sigma_m).powi(2)
+    }
+
+    /// Whether a round footprint `σ` (m, `≥ 0`) draws every feature of a lace of cover `q` whole:
+    /// the finest octave is not faded even for the feature width of `q` (so every filament and
+    /// hole is wider than many `σ`, and reading one point stands for the footprint).
+    pub fn draws_whole(&self, sigma_m: f64, mean_cover: f64) -> bool {
+        let width = (LACE_FEATURE_WIDTH_GAIN * mean_cover.min(1.0 - mean_cover)).min(1.0);
+        width > 0.0 && Self::fade(self.cell_m / OCTAVE_SCALE[LACE_OCTAVES - 1], sigma_m / width) >= 1.0
     }
 
     /// The first octave's cell size `λ₀` (m), after any snapping to a tile.
@@ -242,7 +275,9 @@ impl FoamLace {
         let (x, z) = (x + a * (self.warp[0].value(x, z, 0.0) - 1.0), z + a * (self.warp[1].value(x, z, 0.0) - 1.0));
         let mut d = [0.0; LACE_OCTAVES];
         for (o, v) in d.iter_mut().enumerate().take(count) {
-            *v = (self.border_distance(x, z, o as u32) - self.mean) / self.std;
+            let b = self.border_distance(x, z, o as u32);
+            *v =
+                if o == 0 { (coarse_term(b) - self.coarse.0) / self.coarse.1 } else { (b - self.fine.0) / self.fine.1 };
         }
         d
     }
@@ -300,6 +335,42 @@ impl FoamLace {
     /// `c ∈ [0, 1]`, of area mean `q` over the sea.
     pub fn cover(&self, x: f64, z: f64, sigma_m: f64, mean_cover: f64) -> f64 {
         self.cover_and_shade(x, z, sigma_m, mean_cover).0
+    }
+
+    /// [`Self::cover_and_shade`] over an elliptical footprint (brine-core
+    /// [`EllipticalFootprint`]): the lace read at the footprint's probes along its long axis, each
+    /// filtered over the round footprint of its minor axis, and averaged (the brightness factor
+    /// weighted by the cover). Each point is the lace moved by a
+    /// fixed offset, so the area mean of the cover stays `q`; a filament lying across the view
+    /// is caught by one of the points wherever the pixel sees it, rather than by the centre in
+    /// every few pixels only (a row of dots).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: rest position (m), finite.
+    /// - `footprint`: the pixel's footprint on the sea.
+    /// - `mean_cover`: `q`, `[0, 1]`.
+    ///
+    /// # Returns
+    /// `(c, b)`: the cover `c ∈ [0, 1]` and the brightness factor `b ∈ [1 − β, 1 + β]`.
+    pub fn cover_and_shade_over(&self, x: f64, z: f64, footprint: &EllipticalFootprint, mean_cover: f64) -> (f64, f64) {
+        let q = mean_cover.clamp(0.0, 1.0);
+        if q.min(1.0 - q) <= LACE_MIN_COVER {
+            return (q, 1.0);
+        }
+        let sigma = footprint.minor_m();
+        let n = footprint.probes();
+        // Every feature wider than the footprint is long: the centre stands for it.
+        if n == 1 || self.draws_whole(footprint.major_m(), q) {
+            return self.cover_and_shade(x, z, sigma, q);
+        }
+        let (mut cover, mut lit) = (0.0, 0.0);
+        for o in footprint.offsets() {
+            let (c, b) = self.cover_and_shade(x + o.x, z + o.y, sigma, q);
+            cover += c;
+            lit += c * b;
+        }
+        let shade = if cover > 0.0 { lit / cover } else { 1.0 };
+        (cover / n as f64, shade)
     }
 
     /// [`Self::cover`] and the factor on the foam's brightness there, `1 + k β (2δ − 1)` with
@@ -415,6 +486,76 @@ mod tests {
                 1.0,
                 epsilon = LACE_THICKNESS_CONTRAST * LACE_EDGE_SOFTNESS * 0.5 + AREA_MEAN_TOLERANCE
             );
+        }
+    }
+
+    #[test]
+    fn a_thin_filament_is_not_cut_into_beads() {
+        // Thin foam (q = 0.03) along the coarsest cells' borders: the finer octaves vary its width
+        // but leave its spine white, rather than drawing it only where their own borders cross it
+        // (beads spaced by the finest cell).
+        let l = lace();
+        let spine = (coarse_term(0.002) - l.coarse.0) / l.coarse.1;
+        let (mut on, mut white) = (0, 0);
+        for (x, z) in grid(60.0, 400) {
+            if l.normalised_first(x, z, 1)[0] < spine {
+                on += 1;
+                white += usize::from(l.cover(x, z, 0.0, 0.03) > 0.5);
+            }
+        }
+        assert!(on > 500, "points on a spine: {on}");
+        let share = white as f64 / on as f64;
+        assert!(share > 0.95, "share of the spine drawn white: {share}");
+    }
+
+    /// Brute-force mean of the lace over a Gaussian footprint `σ_⊥` across, `σ_∥` along `axis`:
+    /// 401 points over `±4σ_∥` along the axis, Gaussian-weighted, each filtered over `σ_⊥`.
+    fn lace_over_reference(l: &FoamLace, x: f64, z: f64, fp: (f64, f64, [f64; 2]), q: f64) -> f64 {
+        let (across, along, axis) = fp;
+        let n = 401;
+        let (mut sum, mut weights) = (0.0, 0.0);
+        for i in 0..n {
+            let u = 8.0 * (i as f64 / (n - 1) as f64 - 0.5);
+            let w = (-0.5 * u * u).exp();
+            sum += w * l.cover(x + along * u * axis[0], z + along * u * axis[1], across, q);
+            weights += w;
+        }
+        sum / weights
+    }
+
+    #[test]
+    fn a_long_footprint_sees_the_lace_along_its_length() {
+        // A pixel seen at a grazing angle, six times longer along the view than across: read at
+        // its centre only, a filament lying across the view is all or nothing, pixel to pixel
+        // (rows of dots); read along the footprint, each pixel sees about the share of its
+        // footprint the filaments cover.
+        let l = lace();
+        let (across, along) = (0.005, 0.03);
+        let axis = [0.6, 0.8];
+        let fp = EllipticalFootprint::new(across, along, glam::DVec2::from_array(axis));
+        let (mut err_taps, mut err_centre) = (0.0, 0.0);
+        let points: Vec<(f64, f64)> = grid(30.0, 40).collect();
+        for &(x, z) in &points {
+            let truth = lace_over_reference(&l, x, z, (across, along, axis), 0.2);
+            err_taps += (l.cover_and_shade_over(x, z, &fp, 0.2).0 - truth).abs();
+            err_centre += (l.cover(x, z, across, 0.2) - truth).abs();
+        }
+        let n = points.len() as f64;
+        let (err_taps, err_centre) = (err_taps / n, err_centre / n);
+        assert!(err_taps < 0.4 * err_centre, "mean error along the footprint {err_taps}, at its centre {err_centre}");
+    }
+
+    #[test]
+    fn a_long_footprint_keeps_the_area_mean() {
+        let l = lace();
+        for &q in &[0.05, 0.3, 0.8] {
+            for &(across, along) in &[(0.002, 0.02), (0.01, 0.2)] {
+                let fp = EllipticalFootprint::new(across, along, glam::DVec2::new(1.0, 0.3));
+                let n = 200;
+                let mean =
+                    grid(400.0, n).map(|(x, z)| l.cover_and_shade_over(x, z, &fp, q).0).sum::<f64>() / (n * n) as f64;
+                assert_abs_diff_eq!(mean, q, epsilon = AREA_MEAN_TOLERANCE);
+            }
         }
     }
 

@@ -109,6 +109,7 @@ mod spectra;
 mod surfaces;
 mod tracing;
 
+pub use brine_core::footprint::{BOX_WIDTH_PER_SIGMA, EllipticalFootprint, MAX_ANISOTROPY};
 #[cfg(feature = "tracing")]
 pub use brine_trace::RayTile;
 pub use error::WaveError;
@@ -118,7 +119,7 @@ pub use fft::options::{
     FFT_CASCADE_CUT_INDEX, FFT_DEFAULT_TILE_RATIO, FFT_MAX_CASCADES, FFT_MAX_CHOPPINESS, FFT_MAX_LOOP_PERIOD_S,
     FFT_MAX_RESOLUTION, FFT_MIN_RESOLUTION, FFT_PEAK_WAVELENGTHS_PER_TILE, FftOptions,
 };
-pub use fft::pyramid::{BOX_WIDTH_PER_SIGMA, EllipticalFootprint, FftPyramid, FftStackPyramid, MAX_ANISOTROPY};
+pub use fft::pyramid::{FftPyramid, FftStackPyramid};
 pub use fft::resample::FFT_MAX_SHADING_SLOPE;
 pub use fft::slopes::{FftSlopeFilter, FilteredSlopes};
 pub use fft::spectrum::directional_spectrum;

@@ -11,6 +11,7 @@ pub use crate::tiling::{PeriodicPatches, periodic_patches};
 use crate::windrows::{
     QUANTILE_SAMPLES, StretchedUniform, WINDROW_SHARE, WINDROW_SPACING_M, WINDROW_STRETCH, Windrows,
 };
+use brine_core::footprint::EllipticalFootprint;
 
 /// E-folding time of a whitecap's foam area in sea water, `τ = 3.85 s` (Monahan 1971; 2.54 s in
 /// fresh water). Callaghan et al. (2012) measured 0.5–8 s for single whitecaps.
@@ -386,8 +387,8 @@ impl FoamMemory {
         self.lace.as_ref()
     }
 
-    /// White water drawn as lace ([`FoamLace::cover`]) at rest position `(x, z)` for a Gaussian
-    /// footprint `σ` (m): the white cover `w` becomes `c`, of the same area mean; the active
+    /// White water drawn as lace ([`FoamLace::cover_and_shade_over`]) at rest position `(x, z)`
+    /// seen through a pixel footprint: the white cover `w` becomes `c`, of the same area mean; the active
     /// cover scales with it, `a′ = a c/w`, and the residual is what makes
     /// `1 − (1 − a′)(1 − residual′) = c` (where `a′` is within 10⁻⁶ of 1 the residual scales
     /// with `c/w` instead).
@@ -400,20 +401,39 @@ impl FoamMemory {
     /// ([`FoamLace::cover_and_shade`], mean 1 over the foam) multiply the brightness. The area
     /// means of the cover and of `cover × brightness` are unchanged. Unchanged without a lace.
     /// Where the lace leaves open water (`c = 0`) the brightness is the mean's, `b`, and the
-    /// second lace is not read.
-    pub fn laced(&self, ww: WhiteWater, x: f64, z: f64, sigma_m: f64) -> WhiteWater {
+    /// second lace is not read. Through an elliptical footprint both laces are read at its probes
+    /// ([`FoamLace::cover_and_shade_over`]), the second only at those that hold foam, and the
+    /// brightness is the foam-weighted mean of the probes'.
+    pub fn laced(&self, ww: WhiteWater, x: f64, z: f64, footprint: &EllipticalFootprint) -> WhiteWater {
         let Some(lace) = &self.lace else { return ww };
         if ww.white <= 0.0 {
             return ww;
         }
-        let (c, shade) = lace.cover_and_shade(x, z, sigma_m, ww.white);
-        if c <= 0.0 {
+        // Read at the footprint's probes along its long axis ([`FoamLace::cover_and_shade_over`]),
+        // the ageing lace only at the probes that hold foam.
+        let [dx, dz] = AGEING_LACE_OFFSET_M;
+        let (sigma, b) = (footprint.minor_m(), ww.brightness.clamp(0.0, 1.0));
+        // Where both laces' features are wider than the footprint is long, its centre stands for
+        // it (one probe).
+        let whole = lace.draws_whole(footprint.major_m(), ww.white) && lace.draws_whole(footprint.major_m(), b);
+        let centre = EllipticalFootprint::round(sigma);
+        let footprint = if whole { &centre } else { footprint };
+        let (mut cover, mut lit) = (0.0, 0.0);
+        for o in footprint.offsets() {
+            let (c, shade) = lace.cover_and_shade(x + o.x, z + o.y, sigma, ww.white);
+            if c > 0.0 {
+                let (thick, thick_shade) = lace.cover_and_shade(x + o.x + dx, z + o.y + dz, sigma, b);
+                cover += c;
+                lit += c * shade * thick * thick_shade;
+            }
+        }
+        if cover <= 0.0 {
             // Open water between the filaments: no white, so no brightness to draw (the second
             // lace is not read; the brightness stays the mean's, as where there is no white).
             return WhiteWater { active: 0.0, residual: 0.0, white: 0.0, brightness: ww.brightness };
         }
-        let [dx, dz] = AGEING_LACE_OFFSET_M;
-        let (thick, thick_shade) = lace.cover_and_shade(x + dx, z + dz, sigma_m, ww.brightness.clamp(0.0, 1.0));
+        let c = cover / footprint.probes() as f64;
+        let brightness = lit / cover;
         let active = (ww.active * c / ww.white).min(c);
         // `(c − a′)/(1 − a′)`; where the active cover is within 10⁻⁶ of 1 the union is white
         // whatever the residual, and the quotient is ill-conditioned: the residual scales.
@@ -422,7 +442,7 @@ impl FoamMemory {
         } else {
             (ww.residual * c / ww.white).min(1.0)
         };
-        WhiteWater { active, residual, white: c, brightness: thick * thick_shade * shade }
+        WhiteWater { active, residual, white: c, brightness }
     }
 
     /// `τ`, the decay time of the foam area (s).

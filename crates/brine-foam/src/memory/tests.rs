@@ -228,7 +228,7 @@ fn ageing_foam_opens_holes_of_the_same_mean() {
         let ww = WhiteWater { active: 0.0, residual: white, white, brightness };
         for sigma in [0.0, 0.04, 0.12, 1.0] {
             let mean = points().map(|p| {
-                let l = mem.laced(ww, p[0], p[1], sigma);
+                let l = mem.laced(ww, p[0], p[1], &EllipticalFootprint::round(sigma));
                 l.white * l.brightness
             });
             let mean = mean.sum::<f64>() / n;
@@ -241,13 +241,16 @@ fn ageing_foam_opens_holes_of_the_same_mean() {
         if solid {
             // Thickness shading of both laces: 1 ± 0.2 each.
             let (lo, hi) = (0.8 * 0.8, 1.2 * 1.2);
-            let in_between =
-                points().map(|p| mem.laced(ww, p[0], p[1], 0.0).brightness).filter(|&b| b > 0.05 && b < lo).count()
-                    as f64
-                    / n;
+            let in_between = points()
+                .map(|p| mem.laced(ww, p[0], p[1], &EllipticalFootprint::round(0.0)).brightness)
+                .filter(|&b| b > 0.05 && b < lo)
+                .count() as f64
+                / n;
             let edges = 0.6 * brightness.min(1.0 - brightness);
             assert!(in_between < edges + AREA_TOL, "b {brightness}: {in_between} of the points dim but not open");
-            assert!(points().all(|p| mem.laced(ww, p[0], p[1], 0.0).brightness <= hi + 1e-12));
+            assert!(
+                points().all(|p| mem.laced(ww, p[0], p[1], &EllipticalFootprint::round(0.0)).brightness <= hi + 1e-12)
+            );
         }
     }
 }
@@ -261,7 +264,7 @@ fn open_water_in_the_lace_holds_no_white_water() {
     let ww = WhiteWater { active: 0.03, residual: 0.12, white: 1.0 - 0.97 * 0.88, brightness: 0.7 };
     let (mut open, mut foam) = (0, 0);
     for p in points() {
-        let l = mem.laced(ww, p[0], p[1], 0.0);
+        let l = mem.laced(ww, p[0], p[1], &EllipticalFootprint::round(0.0));
         if l.white <= 0.0 {
             open += 1;
             assert!(l.active <= 0.0 && l.residual <= 0.0, "{l:?}");

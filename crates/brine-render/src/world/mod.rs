@@ -12,10 +12,10 @@ use brine_optics::{
 use brine_sky::{CloudParams, DaylightModel, FilteredSky, MoonParams, Sky, SkyParams};
 use brine_trace::{Method, TraceOptions};
 use brine_waves::{
-    BandLimited, CosineSquared, CosineTwoS, DetailOptions, DetailSlopes, DetailWaves, Directions, DonelanBanner,
-    Elfouhaily, FftOcean, FftOptions, FftSlopeFilter, FitOptions, FrameSurface, Jonswap, Ocean, Phillips,
-    PiersonMoskowitz, SeaComponent, SeaFrame, SeabedRelief, Spectrum, Spreading, SteepnessLimit, SummedSpectrum,
-    TileLattice, Tma, TrochoidSet, TrochoidSum, fit_sea_state, seabed_relief,
+    BOX_WIDTH_PER_SIGMA, BandLimited, CosineSquared, CosineTwoS, DetailOptions, DetailSlopes, DetailWaves, Directions,
+    DonelanBanner, Elfouhaily, EllipticalFootprint, FftOcean, FftOptions, FftSlopeFilter, FitOptions, FrameSurface,
+    Jonswap, Ocean, Phillips, PiersonMoskowitz, SeaComponent, SeaFrame, SeabedRelief, Spectrum, Spreading,
+    SteepnessLimit, SummedSpectrum, TileLattice, Tma, TrochoidSet, TrochoidSum, fit_sea_state, seabed_relief,
 };
 use brine_whitecap::{
     Calibration, CalibrationOptions, ErfMethod, FftBreaking, FftCalibration, FftJacobianStatistics, FootprintFilter,
@@ -247,20 +247,34 @@ pub struct Cover {
 
 impl World {
     /// The white water at surface point `p` of upward normal `n` (unit), seen through a pixel
-    /// footprint of side `footprint_m` (m, `≥ 0`; 0 for a point).
-    pub fn cover_at(&self, p: DVec3, n: DVec3, footprint_m: f64) -> Cover {
-        self.cover_at_time(p, n, self.time, footprint_m)
+    /// footprint of sides `across_m` across the view and `along_m ≥ across_m` along the view's
+    /// horizontal direction `d` (m, `≥ 0`; 0 for a point).
+    pub fn cover_seen(&self, p: DVec3, n: DVec3, across_m: f64, along_m: f64, d: DVec3) -> Cover {
+        // A Gaussian footprint of a box's spread has σ = ℓ/√12 on each axis.
+        let footprint = EllipticalFootprint::new(
+            across_m / BOX_WIDTH_PER_SIGMA,
+            along_m / BOX_WIDTH_PER_SIGMA,
+            DVec2::new(d.x, d.z),
+        );
+        self.cover_over(p, n, self.time, &footprint)
     }
 
-    /// [`World::cover_at`] at time `t` (s): trochoid, Gerstner and sine seas' white water is a
-    /// function of time; the FFT sea's whitecap statistics are those of the world's frame
-    /// whatever `t` (build a world at `t` for it).
+    /// The white water at surface point `p` of upward normal `n` (unit) at time `t` (s), seen
+    /// through a square pixel footprint of side `footprint_m` (m, `≥ 0`; 0 for a point):
+    /// trochoid, Gerstner and sine seas' white water is a function of time; the FFT sea's
+    /// whitecap statistics are those of the world's frame whatever `t` (build a world at `t` for
+    /// it).
     pub fn cover_at_time(&self, p: DVec3, n: DVec3, t: f64, footprint_m: f64) -> Cover {
+        self.cover_over(p, n, t, &EllipticalFootprint::round(footprint_m / BOX_WIDTH_PER_SIGMA))
+    }
+
+    /// [`World::cover_at_time`] through a Gaussian footprint.
+    fn cover_over(&self, p: DVec3, n: DVec3, t: f64, footprint: &EllipticalFootprint) -> Cover {
         let mut cover = Cover::default();
-        // A Gaussian footprint of the pixel's area has σ = ℓ/√12.
-        let sigma = footprint_m / 12f64.sqrt();
+        let sigma = footprint.area_sigma_m();
+        let footprint_m = sigma * BOX_WIDTH_PER_SIGMA;
         if let Some(ww) = &self.white_water {
-            let w = ww.at(DVec2::new(p.x, p.z), t, sigma);
+            let w = ww.at_over(DVec2::new(p.x, p.z), t, footprint);
             cover.foam = w.residual;
             cover.whitecap = w.active;
             cover.memory = Some((w.white, w.brightness));

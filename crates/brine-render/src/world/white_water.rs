@@ -20,11 +20,16 @@ pub enum WhiteWaterSea {
 
 impl WhiteWaterSea {
     /// White water at `u` (the hit's horizontal position, taken as the rest position), time `t`
-    /// and Gaussian footprint `sigma_m`.
+    /// and round Gaussian footprint `sigma_m`.
     pub fn at(&self, u: DVec2, t: f64, sigma_m: f64) -> WhiteWater {
+        self.at_over(u, t, &EllipticalFootprint::round(sigma_m))
+    }
+
+    /// [`WhiteWaterSea::at`] through an elliptical Gaussian pixel footprint.
+    pub fn at_over(&self, u: DVec2, t: f64, footprint: &EllipticalFootprint) -> WhiteWater {
         match self {
-            WhiteWaterSea::Trochoids(m) => m.at(u, t, sigma_m),
-            WhiteWaterSea::Fft(m) => m.at(u, t, sigma_m),
+            WhiteWaterSea::Trochoids(m) => m.at_over(u, t, footprint),
+            WhiteWaterSea::Fft(m) => m.at_over(u, t, footprint),
         }
     }
 }

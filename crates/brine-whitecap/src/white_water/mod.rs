@@ -1,6 +1,7 @@
 //! White water: Dupuy & Bruneton's active whitecaps and the foam they leave behind
 //! (brine-foam `FoamMemory`), calibrated together on Monahan's coverage.
 
+use brine_core::footprint::EllipticalFootprint;
 use brine_foam::{FoamMemory, MAX_MEMORY_INSTANTS, MemoryClock, WhiteWater};
 use std::sync::Arc;
 
@@ -520,6 +521,15 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
     /// brine-foam [`WhiteWater`]: the active cover, the foam left, the white cover and its
     /// brightness relative to fresh foam.
     pub fn at(&self, u: DVec2, t: f64, footprint_m: f64) -> WhiteWater {
+        self.at_over(u, t, &EllipticalFootprint::round(footprint_m))
+    }
+
+    /// [`Self::at`] seen through an elliptical pixel footprint (brine-core
+    /// [`EllipticalFootprint`]): the breaking statistics, the memory and the streaks are filtered
+    /// over the round footprint of the same area, the lace along the footprint's long axis
+    /// ([`FoamMemory::laced`]).
+    pub fn at_over(&self, u: DVec2, t: f64, footprint: &EllipticalFootprint) -> WhiteWater {
+        let footprint_m = footprint.area_sigma_m();
         debug_assert!(footprint_m >= 0.0);
         if self.target <= 0.0 {
             return WhiteWater { active: 0.0, residual: 0.0, white: 0.0, brightness: 1.0 };
@@ -548,7 +558,7 @@ impl<S: BreakingSource> WhiteWaterModel<S> {
             ww = self.memory.with_windrows(ww, self.windrow(u, footprint_m));
         }
         // Drawn as lace, of the same area mean: the calibration holds.
-        self.memory.laced(ww, u.x, u.y, footprint_m)
+        self.memory.laced(ww, u.x, u.y, footprint)
     }
 
     /// Mean cover of the foam streaks along the wind, `q_w` (0 when the memory has none).
