@@ -78,8 +78,8 @@ const LACE_FADE_CELLS_PER_SIGMA: (f64, f64) = (7.0, 14.0);
 /// jittered grid of cells `λₒ = λ₀/3ᵒ` (Worley 1996), read at the rest position warped by a
 /// gradient noise (up to 0.4 λ₀, so the cell borders curve), `ℓ̄`, `σ_ℓ` and `d̄`, `σ_d` the means
 /// and spreads of the two terms, `d_min = 10⁻⁴`, `fₒ` the footprint fade of each octave (finest
-/// first), `F` the tabulated
-/// distribution function of the sum at those fades (so `m` is uniform at every footprint), and
+/// first), `F` the tabulated distribution function of the sum at those fades (so `m` is uniform
+/// at every footprint), and
 /// `r = 1 − f₀²` the share of the lace the pixel does not resolve. The fades read the footprint
 /// widened by `1/min(1, 4 min(q, 1 − q))`: a thin filament or a small hole is faded to the mean
 /// at the distance where it would fall below the pixel. Because `m`
@@ -340,10 +340,10 @@ impl FoamLace {
     /// [`Self::cover_and_shade`] over an elliptical footprint (brine-core
     /// [`EllipticalFootprint`]): the lace read at the footprint's probes along its long axis, each
     /// filtered over the round footprint of its minor axis, and averaged (the brightness factor
-    /// weighted by the cover). Each point is the lace moved by a
-    /// fixed offset, so the area mean of the cover stays `q`; a filament lying across the view
-    /// is caught by one of the points wherever the pixel sees it, rather than by the centre in
-    /// every few pixels only (a row of dots).
+    /// weighted by the cover). Each probe is the lace moved by a fixed offset, so the area mean
+    /// of the cover stays `q`; a filament lying across the view is caught by one of the probes
+    /// wherever the pixel sees it, rather than by the centre in every few pixels only (a row of
+    /// dots). Where every feature is wider than the footprint is long, the centre is read alone.
     ///
     /// # Arguments
     /// - `x`, `z`: rest position (m), finite.
