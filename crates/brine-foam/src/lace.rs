@@ -545,6 +545,35 @@ mod tests {
         assert!(err_taps < 0.4 * err_centre, "mean error along the footprint {err_taps}, at its centre {err_centre}");
     }
 
+    /// Error of the centre read where [`FoamLace::draws_whole`] says it stands for the footprint:
+    /// the cover moves only inside the softened edges (`±0.3 min(q, 1 − q)` of `m`), which a
+    /// footprint that small crosses at a few per cent of the points.
+    const WHOLE_READ_TOLERANCE: f64 = 0.01;
+
+    #[test]
+    fn where_the_lace_is_drawn_whole_its_centre_stands_for_the_footprint() {
+        let l = lace();
+        let axis = [0.6, 0.8];
+        let (mut whole, mut long) = ((0.0, 0), (0.0, 0));
+        for &(across, along) in &[(0.0002, 0.0012), (0.004, 0.024)] {
+            let fp = EllipticalFootprint::new(across, along, glam::DVec2::from_array(axis));
+            for (x, z) in grid(30.0, 40) {
+                let err =
+                    (lace_over_reference(&l, x, z, (across, along, axis), 0.5) - l.cover(x, z, across, 0.5)).abs();
+                if l.draws_whole(fp.major_m(), 0.5) {
+                    whole = (whole.0 + err, whole.1 + 1);
+                } else {
+                    long = (long.0 + err, long.1 + 1);
+                }
+            }
+        }
+        // The small footprint is drawn whole, the large one is not, and only the first may be read
+        // at its centre.
+        assert!(whole.1 == 1600 && long.1 == 1600, "drawn whole: {} of 3200 points", whole.1);
+        let (whole, long) = (whole.0 / 1600.0, long.0 / 1600.0);
+        assert!(whole < WHOLE_READ_TOLERANCE, "centre error where drawn whole {whole} (elsewhere {long})");
+    }
+
     #[test]
     fn a_long_footprint_keeps_the_area_mean() {
         let l = lace();

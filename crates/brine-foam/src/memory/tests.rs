@@ -226,17 +226,20 @@ fn ageing_foam_opens_holes_of_the_same_mean() {
     let n = 40_000.0;
     for (white, brightness, solid) in [(1.0, 0.3, true), (1.0, 0.6, true), (0.5, 0.4, false)] {
         let ww = WhiteWater { active: 0.0, residual: white, white, brightness };
-        for sigma in [0.0, 0.04, 0.12, 1.0] {
-            let mean = points().map(|p| {
-                let l = mem.laced(ww, p[0], p[1], &EllipticalFootprint::round(sigma));
-                l.white * l.brightness
-            });
-            let mean = mean.sum::<f64>() / n;
+        // Round footprints, and long ones (a pixel seen 6° and 3° above the sea) read at probes.
+        let footprints = [0.0, 0.04, 0.12, 1.0].map(EllipticalFootprint::round).into_iter().chain(
+            [(0.005, 0.05), (0.01, 0.2)].map(|(a, b)| EllipticalFootprint::new(a, b, glam::DVec2::new(0.8, 0.6))),
+        );
+        for fp in footprints {
+            let laced: Vec<WhiteWater> = points().map(|p| mem.laced(ww, p[0], p[1], &fp)).collect();
+            let mean = laced.iter().map(|l| l.white * l.brightness).sum::<f64>() / n;
             assert!(
                 (mean - white * brightness).abs() < AREA_TOL,
-                "w {white}, b {brightness}, σ {sigma}: mean {mean}, expected {}",
+                "w {white}, b {brightness}, {fp:?}: mean {mean}, expected {}",
                 white * brightness
             );
+            let cover = laced.iter().map(|l| l.white).sum::<f64>() / n;
+            assert!((cover - white).abs() < AREA_TOL, "w {white}, {fp:?}: mean cover {cover}");
         }
         if solid {
             // Thickness shading of both laces: 1 ± 0.2 each.
