@@ -419,18 +419,9 @@ fn energy_bands(surface: &str, wind: f64) -> Result<Vec<f64>, String> {
          [sky]\nsun_elevation_deg = 30.0\nsun_azimuth_deg = 280.0\n\n\
          [phenomena]\nfoam = false\nwhitecaps = false\nspray = false\nglare = false\n"
     );
-    let mut scene = Scene::from_toml_str(&text, "energy.toml").map_err(|e| e.to_string())?;
-    let fast = brine_render::render(&scene, &RenderOptions::default(), &|| {}).map_err(|e| e.to_string())?;
-    scene.camera.spp = spp;
-    let options = RenderOptions { reference: true, ..RenderOptions::default() };
-    let reference = brine_render::render(&scene, &options, &|| {}).map_err(|e| e.to_string())?;
-    let y = |c: &glam::DVec3| c.dot(glam::DVec3::new(0.2126, 0.7152, 0.0722));
-    let band = |f: &Frame, b: u32| {
-        let rows = (b * h / 10) as usize..((b + 1) * h / 10) as usize;
-        let n = rows.len() as f64 * f64::from(w);
-        f.pixels[rows.start * w as usize..rows.end * w as usize].iter().map(y).sum::<f64>() / n
-    };
-    Ok((3..10).map(|b| band(&fast, b) / band(&reference, b)).collect())
+    let scene = Scene::from_toml_str(&text, "energy.toml").map_err(|e| e.to_string())?;
+    let bands = brine_render::energy_bands(&scene, spp).map_err(|e| e.to_string())?;
+    Ok(bands[3..].to_vec())
 }
 
 /// The far-field sparkle of one surface at one wind: [`far_noise`] at one sample per pixel over

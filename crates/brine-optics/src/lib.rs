@@ -102,7 +102,10 @@ pub use ocean_brdf::{
 };
 pub use quadrature::{GaussHermite, MAX_HERMITE_ORDER, gauss_legendre};
 pub use refraction::{SnellWindow, reflect, refract};
-pub use rough::{ReflectanceSplit, RoughReflectance, reflectance_split, water_reflectance_split};
+pub use rough::{
+    ReflectanceSplit, RoughReflectance, SlopeVisibility, reflectance_split, reflectance_split_uncorrelated,
+    water_reflectance_split,
+};
 pub use sky_reflection::{SkyReflection, reflected_sky_radiance_filtered};
 pub use subsurface::{
     diffuse_upwelling_radiance, irradiance_reflectance, irradiance_reflectance_morel, lambertian_floor_radiance,

@@ -63,7 +63,8 @@ mod world;
 
 pub use output::{OutputError, OutputFormat, write_frame, write_image};
 pub use render::{
-    Aov, Frame, RenderError, RenderOptions, Stage, StageTimes, render, render_world, render_world_cancellable,
+    Aov, ENERGY_BANDS, Frame, RenderError, RenderOptions, Stage, StageTimes, energy_bands, render, render_world,
+    render_world_cancellable,
 };
 pub use scene::{Scene, SceneError};
 pub use world::{Cover, NIGHT_ADAPTATION_LX, Timeless, WhiteWaterSea, World, WorldError, auto_exposure_ev};

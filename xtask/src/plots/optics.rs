@@ -1,11 +1,12 @@
 //! Plots of brine-optics: Fresnel curves and Schlick's error, absorption and `K_d` spectra by
-//! chlorophyll and Jerlov type, the dipole profiles of Li Ying et al.'s Table 3, BRDF lobes.
+//! chlorophyll and Jerlov type, the dipole profiles of Li Ying et al.'s Table 3, BRDF lobes, the
+//! visibility of facets by slope and the rough reflectance it gives at grazing views.
 
 use std::path::Path;
 
 use brine_optics::{
-    JerlovType, LiYingParameters, SlopeVariance, WATER_IOR, WaterBody, case1_iops, fresnel_dielectric, fresnel_schlick,
-    ocean_brdf, pure_water_absorption,
+    JerlovType, LiYingParameters, SlopeVariance, SlopeVisibility, WATER_IOR, WaterBody, case1_iops, fresnel_dielectric,
+    fresnel_schlick, ocean_brdf, pure_water_absorption, reflectance_split, reflectance_split_uncorrelated,
 };
 use glam::DVec3;
 
@@ -165,5 +166,55 @@ pub fn plot(dir: &Path) -> Result<(), String> {
         y_scale: Scale::Linear,
         series,
     }
-    .write(&dir.join("optics-brdf-lobes.svg"))
+    .write(&dir.join("optics-brdf-lobes.svg"))?;
+
+    // Which facets a grazing viewer sees, by slope: the measured visibility over Smith's.
+    let table = SlopeVisibility::stored();
+    let series = [0.03, 0.1, 0.3, 1.0, 2.0]
+        .iter()
+        .map(|&nu| {
+            let pts = (0..=60).map(|i| f64::from(i) * 0.1).map(|s| (s - nu, table.ratio(nu, s))).collect();
+            (format!("ν = cot θ_v/σ = {nu}"), pts)
+        })
+        .collect();
+    LineChart {
+        title: "Visibility of a facing facet given its slope, over Smith's (measured on Gaussian profiles)",
+        x_label: "facet slope toward the viewer, in slope deviations (−ν: grazing)",
+        y_label: "P(seen | slope) / G₁",
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+        series,
+    }
+    .write(&dir.join("optics-slope-visibility.svg"))?;
+
+    // The rough reflectance of the facets seen, with the measured visibility and with Smith's.
+    let water = |c: f64| fresnel_dielectric(c, 1.0, WATER_IOR);
+    let mut series = Vec::new();
+    for sigma in [0.1, 0.2] {
+        let sweep = |uncorrelated: bool| -> Vec<(f64, f64)> {
+            (0..=199)
+                .map(|i| 70.0 + f64::from(i) * 0.1)
+                .map(|deg| {
+                    let c = deg.to_radians().cos();
+                    let split = if uncorrelated {
+                        reflectance_split_uncorrelated(c, sigma, water)
+                    } else {
+                        reflectance_split(c, sigma, water)
+                    };
+                    (deg, split.seen)
+                })
+                .collect()
+        };
+        series.push((format!("σ = {sigma}, measured visibility"), sweep(false)));
+        series.push((format!("σ = {sigma}, Smith's visibility"), sweep(true)));
+    }
+    LineChart {
+        title: "Fresnel reflectance of the facets seen, R_seen, at grazing views",
+        x_label: "view angle from the zenith (deg)",
+        y_label: "R_seen",
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+        series,
+    }
+    .write(&dir.join("optics-rough-visibility.svg"))
 }

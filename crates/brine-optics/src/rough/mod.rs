@@ -1,31 +1,39 @@
 //! The reflectance of the rough sea toward a viewer: how much of the sky the unresolved facets
 //! reflect, and how much of their reflection meets the neighbouring waves instead.
 
+mod visibility;
 mod visible_normals;
 
-pub use visible_normals::{ReflectanceSplit, reflectance_split, water_reflectance_split};
+pub use visibility::SlopeVisibility;
+pub use visible_normals::{
+    ReflectanceSplit, reflectance_split, reflectance_split_uncorrelated, water_reflectance_split,
+};
 
 use crate::error::{OpticsError, check};
 use crate::{WATER_IOR, fresnel_dielectric};
 
-/// Sea water's table, `data/rough_reflectance_water.csv`: `σ, cos θ_v, R, R_seen` by rows of `σ`.
+/// Sea water's table, `data/rough_reflectance_water.csv`: `σ, cos θ_v, R, R_seen, μ_r` by rows of
+/// `σ`.
 const WATER_TABLE: &str = include_str!("../../data/rough_reflectance_water.csv");
 
 /// The reflectance of the rough sea toward a viewer for a uniform sky, split by where the
-/// reflected light comes from ([`reflectance_split`]):
+/// reflected light comes from ([`reflectance_split`], over the visible normals with the
+/// measured slope visibility of [`crate::SlopeVisibility`]):
 ///
 /// - `R(θ_v, σ_v)`: from the sky, reflected above the horizon and not shadowed by another facet
 ///   (Smith's height-correlated masking–shadowing);
 /// - `R_seen(θ_v, σ_v)`: the Fresnel reflectance of the facets the viewer sees, wherever their
-///   mirror directions go; `R_seen − R` comes from the waves those directions meet.
+///   mirror directions go; `R_seen − R` comes from the waves those directions meet;
+/// - `μ_r(θ_v, σ_v)`: the mean cosine of the seen facets' mirror directions to the mean normal.
 ///
 /// Tabulated over `cos θ_v` and the slope deviation `σ_v` along the view's azimuth (isotropic
 /// slopes of that deviation, as Bruneton et al.'s `F̄(v)`), for a renderer that looks the sky up
-/// once at the mirror direction of the resolved normal and weights it by the rough surface's
+/// once near the mirror direction of the resolved normal and weights it by the rough surface's
 /// reflectance instead of the smooth Fresnel factor: at grazing views the unresolved facets hide
 /// part of the mirror image and reflect the rest from other directions, so the distant sea
-/// reflects less sky than a mirror (`R = 0.30` and `R_seen = 0.32` instead of `F = 0.80` at 88°
-/// for `σ² = 0.03`).
+/// reflects less sky than a mirror (`R = 0.25` and `R_seen = 0.26` instead of `F = 0.80` at 88°
+/// for `σ² = 0.03`; Smith's uncorrelated visibility gives 0.30 and 0.32), and the sky it
+/// reflects lies above the mirror direction (there by 20°).
 ///
 /// Grid: `cos θ_v = u²`, `u` in 65 uniform steps on `[0, 1]` (dense at grazing); `σ_v = 0.6 w²`,
 /// `w` in 41 uniform steps on `[0, 1]` (dense on calm water, where `R` leaves the Fresnel value
@@ -40,6 +48,8 @@ pub struct RoughReflectance {
     sky: Vec<f64>,
     /// `seen[j·U + i]`: `R_seen` at `u_i`, `σ_j`.
     seen: Vec<f64>,
+    /// `mirror_cosine[j·U + i]`: `μ_r` at `u_i`, `σ_j`.
+    mirror_cosine: Vec<f64>,
 }
 
 impl RoughReflectance {
@@ -69,6 +79,7 @@ impl RoughReflectance {
         check("n_water", n_water, n_water > 1.0 && n_water <= 2.0, "(1, 2]")?;
         let mut sky = Vec::with_capacity(Self::U * Self::S);
         let mut seen = Vec::with_capacity(Self::U * Self::S);
+        let mut mirror_cosine = Vec::with_capacity(Self::U * Self::S);
         for j in 0..Self::S {
             let w = j as f64 / (Self::S - 1) as f64;
             let sigma = Self::MAX_SIGMA * w * w;
@@ -76,19 +87,20 @@ impl RoughReflectance {
                 let u = i as f64 / (Self::U - 1) as f64;
                 let c = u * u;
                 let split = if c <= 0.0 {
-                    ReflectanceSplit { to_sky: 0.0, seen: 0.0 }
+                    ReflectanceSplit { to_sky: 0.0, seen: 0.0, mirror_cosine: 0.0 }
                 } else if sigma <= 0.0 {
                     // Calm water: the mirror, where both parts are Fresnel's.
                     let f = fresnel_dielectric(c, 1.0, n_water);
-                    ReflectanceSplit { to_sky: f, seen: f }
+                    ReflectanceSplit { to_sky: f, seen: f, mirror_cosine: c }
                 } else {
                     water_reflectance_split(c, sigma, n_water)
                 };
                 sky.push(split.to_sky);
                 seen.push(split.seen);
+                mirror_cosine.push(split.mirror_cosine);
             }
         }
-        Ok(Self { n_water, sky, seen })
+        Ok(Self { n_water, sky, seen, mirror_cosine })
     }
 
     /// The table of sea water ([`WATER_IOR`]), precomputed by [`Self::new`] and stored in the
@@ -102,14 +114,16 @@ impl RoughReflectance {
     pub fn water() -> Self {
         let mut sky = Vec::with_capacity(Self::U * Self::S);
         let mut seen = Vec::with_capacity(Self::U * Self::S);
+        let mut mirror_cosine = Vec::with_capacity(Self::U * Self::S);
         for line in WATER_TABLE.lines().filter(|l| !l.is_empty() && !l.starts_with('#')).skip(1) {
             // The file is part of the crate and a test reads every entry: never user input.
             let mut fields = line.split(',').skip(2).map(|f| f.parse::<f64>().expect("stored table value"));
             sky.push(fields.next().expect("R"));
             seen.push(fields.next().expect("R_seen"));
+            mirror_cosine.push(fields.next().expect("mu_r"));
         }
         debug_assert_eq!(sky.len(), Self::U * Self::S);
-        Self { n_water: WATER_IOR, sky, seen }
+        Self { n_water: WATER_IOR, sky, seen, mirror_cosine }
     }
 
     /// Index of water the table was made for.
@@ -146,6 +160,24 @@ impl RoughReflectance {
     /// As [`Self::new`].
     pub fn seen_reflectance(&self, cos_theta_v: f64, sigma_v: f64) -> f64 {
         Self::lookup(&self.seen, cos_theta_v, sigma_v)
+    }
+
+    /// `μ_r(θ_v, σ_v)`: the mean cosine of the visible facets' mirror directions to the mean normal,
+    /// weighted as `R_seen` ([`ReflectanceSplit::mirror_cosine`]), bilinear in the table: where a
+    /// renderer that looks the sky up once through the reflection lobe should centre the lobe,
+    /// at the mirror direction's azimuth (at grazing views well above the mirror direction of the
+    /// mean normal, `cos θ_v`).
+    ///
+    /// # Arguments
+    /// As [`Self::reflectance`].
+    ///
+    /// # Returns
+    /// `μ_r` (dimensionless), in `[−1, 1]`.
+    ///
+    /// # References
+    /// As [`Self::new`].
+    pub fn mirror_cosine(&self, cos_theta_v: f64, sigma_v: f64) -> f64 {
+        Self::lookup(&self.mirror_cosine, cos_theta_v, sigma_v)
     }
 
     /// The rough surface's sky reflectance relative to the smooth one's at the same angle,
@@ -206,14 +238,16 @@ mod tests {
 
     /// The text of `data/rough_reflectance_water.csv`: one row per node, each `f64` written to
     /// round-trip exactly.
-    fn source(sky: &[f64], seen: &[f64]) -> String {
+    fn source(sky: &[f64], seen: &[f64], mirror_cosine: &[f64]) -> String {
         let mut text = String::from(
             "# The rough reflectance of sea water (index 1.333) toward a viewer, split between the sky (R)\n\
-             # and the visible facets in all (R_seen): brine-optics RoughReflectance::new(1.333), Bruneton\n\
-             # et al. 2010 Eq. 7-8 over the visible normals (Heitz 2014). Nodes: sigma = 0.6 w^2, w = j/40;\n\
+             # and the visible facets in all (R_seen), with the mean cosine of their mirror directions to\n\
+             # the mean normal (mirror_cosine): brine-optics RoughReflectance::new(1.333), Bruneton et al. 2010\n\
+             # Eq. 7-8 over the visible normals (Heitz 2014) seen with the measured slope visibility\n\
+             # (SlopeVisibility, data/slope_visibility.csv). Nodes: sigma = 0.6 w^2, w = j/40;\n\
              # cos_theta = u^2, u = i/64. Generated: BRINE_BLESS=1 cargo test -p brine-optics\n\
              # the_stored_table_is_the_integral; do not edit.\n\
-             sigma,cos_theta,sky,seen\n",
+             sigma,cos_theta,sky,seen,mirror_cosine\n",
         );
         for j in 0..RoughReflectance::S {
             let w = j as f64 / (RoughReflectance::S - 1) as f64;
@@ -221,11 +255,12 @@ mod tests {
                 let u = i as f64 / (RoughReflectance::U - 1) as f64;
                 let k = j * RoughReflectance::U + i;
                 text.push_str(&format!(
-                    "{:?},{:?},{:?},{:?}\n",
+                    "{:?},{:?},{:?},{:?},{:?}\n",
                     RoughReflectance::MAX_SIGMA * w * w,
                     u * u,
                     sky[k],
-                    seen[k]
+                    seen[k],
+                    mirror_cosine[k]
                 ));
             }
         }
@@ -239,14 +274,15 @@ mod tests {
         let fresh = RoughReflectance::new(WATER_IOR).unwrap();
         if std::env::var_os("BRINE_BLESS").is_some() {
             let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/rough_reflectance_water.csv");
-            std::fs::write(&path, source(&fresh.sky, &fresh.seen)).unwrap();
+            std::fs::write(&path, source(&fresh.sky, &fresh.seen, &fresh.mirror_cosine)).unwrap();
             return;
         }
         // The same arithmetic in the same order; the margin allows a platform's last-bit
         // differences in `exp` and `erfc`.
         const PLATFORM_ROUNDING: f64 = 1e-12;
         let stored = RoughReflectance::water();
-        for (k, (a, b)) in stored.sky.iter().zip(&fresh.sky).chain(stored.seen.iter().zip(&fresh.seen)).enumerate() {
+        let pairs = stored.sky.iter().zip(&fresh.sky).chain(stored.seen.iter().zip(&fresh.seen));
+        for (k, (a, b)) in pairs.chain(stored.mirror_cosine.iter().zip(&fresh.mirror_cosine)).enumerate() {
             assert!((a - b).abs() <= PLATFORM_ROUNDING, "entry {k}: stored {a}, integral {b}");
         }
     }

@@ -3,7 +3,7 @@
 
 use brine_optics::{
     JerlovType, LAMBDA_MAX_NM, LAMBDA_MIN_NM, RoughReflectance, WATER_IOR, WaterBody, check_wavelength, critical_angle,
-    fresnel_dielectric, fresnel_schlick, water_reflectance_split,
+    fresnel_dielectric, fresnel_schlick, reflectance_split_uncorrelated, water_reflectance_split,
 };
 use clap::Subcommand;
 use serde::Serialize;
@@ -80,6 +80,12 @@ pub struct RoughOut {
     pub seen: f64,
     /// `R_seen − R`: reflected into the neighbouring waves.
     pub into_waves: f64,
+    /// `μ_r`: the mean cosine of the seen facets' mirror directions to the mean normal.
+    pub mirror_cosine: f64,
+    /// `R` with Smith's uncorrelated visibility (every facing slope as likely seen).
+    pub smith_sky: f64,
+    /// `R_seen` with Smith's uncorrelated visibility.
+    pub smith_seen: f64,
     /// The smooth surface's Fresnel reflectance at the same angle.
     pub fresnel: f64,
     /// `R` as the renderer reads it from its table (sea water's index only; else null).
@@ -101,6 +107,7 @@ pub fn rough_of(a: &RoughArgs) -> Result<RoughOut, CliError> {
         return Err(CliError::Input(format!("--n-water = {} is out of range: expected (1, 2]", a.n_water)));
     }
     let split = water_reflectance_split(a.cos_theta, a.sigma, a.n_water);
+    let smith = reflectance_split_uncorrelated(a.cos_theta, a.sigma, |c| fresnel_dielectric(c, 1.0, a.n_water));
     let table_sky = (a.n_water == WATER_IOR).then(|| RoughReflectance::water().reflectance(a.cos_theta, a.sigma));
     Ok(RoughOut {
         cos_theta: a.cos_theta,
@@ -109,6 +116,9 @@ pub fn rough_of(a: &RoughArgs) -> Result<RoughOut, CliError> {
         sky: split.to_sky,
         seen: split.seen,
         into_waves: split.seen - split.to_sky,
+        mirror_cosine: split.mirror_cosine,
+        smith_sky: smith.to_sky,
+        smith_seen: smith.seen,
         fresnel: fresnel_dielectric(a.cos_theta, 1.0, a.n_water),
         table_sky,
     })
@@ -125,6 +135,13 @@ fn run_rough(a: &RoughArgs) -> Result<(), CliError> {
             out.seen,
             out.into_waves,
             out.fresnel
+        );
+        super::outln!(
+            "mean mirror direction {:.2}° above the mean plane (the mirror's {:.2}°); Smith's visibility: sky {:.6}  seen {:.6}",
+            out.mirror_cosine.clamp(-1.0, 1.0).asin().to_degrees(),
+            a.cos_theta.asin().to_degrees(),
+            out.smith_sky,
+            out.smith_seen
         );
         Ok(())
     }

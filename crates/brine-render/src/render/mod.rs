@@ -16,6 +16,8 @@ use rayon::prelude::*;
 use crate::scene::Scene;
 use crate::world::{World, WorldError};
 
+mod energy;
+pub use energy::{ENERGY_BANDS, energy_bands};
 mod sea_field;
 mod shade;
 

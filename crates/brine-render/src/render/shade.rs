@@ -224,8 +224,10 @@ pub(super) fn shade_surface(
     let table = crate::world::rough_reflectance();
     let f = (fresnel * table.roughness_factor(cos_v, sigma_v)).clamp(0.0, 1.0);
     let f_met = (fresnel * table.met_factor(cos_v, sigma_v)).clamp(0.0, 1.0 - f);
-    let r = reflect(d, n);
-    let escape = reflection_escape(world, variance, r);
+    // The sky the seen facets reflect lies above the mirror direction of the resolved normal
+    // (they lean toward the viewer): the lobe is centred at their mean mirror direction.
+    let r = seen_sky_direction(reflect(d, n), n, cos_v, sigma_v);
+    let escape = reflection_escape(world, variance, r, v);
     // Sun glint and moon glitter through the BRDF of the unresolved slopes (brine-optics
     // `reflected_source_radiance`: a point source or the disc's integral, as the disc's image needs).
     let glint = |disc: &brine_sky::Disc, rules: &SunDisc| {
@@ -270,6 +272,31 @@ pub(super) fn shade_surface(
     SurfaceShade { glint: glint_aov, ..shade }
 }
 
+/// Where the facets seen about a resolved normal reflect, on average: the unit mirror direction
+/// `r` about the unit normal `n`, turned toward `n` in its own vertical plane, keeping its
+/// azimuth, by the rise of the mean cosine `μ_r` of the mirror directions of the facets seen on a
+/// rough surface of slope deviation `sigma` at `cos θ_v` (brine-optics
+/// `RoughReflectance::mirror_cosine`) over the calm surface's, so that calm water keeps the
+/// mirror direction exactly. At grazing views the facets seen lean toward the viewer and reflect
+/// the sky well above the mirror direction of the mean normal (at 89° and σ = 0.2, 22°
+/// higher); the filtered sky is looked up there.
+///
+/// # References
+/// Bruneton E., Neyret F., Holzschuch N. 2010, CGF 29(2), §5.2 (the sky reflected by the rough
+/// sea, looked up once per pixel); Heitz E. 2014, JCGT 3(2) (the visible normals).
+pub(super) fn seen_sky_direction(r: DVec3, n: DVec3, cos_v: f64, sigma: f64) -> DVec3 {
+    let table = crate::world::rough_reflectance();
+    let raise = table.mirror_cosine(cos_v, sigma) - table.mirror_cosine(cos_v, 0.0);
+    let along = r.dot(n);
+    let tangent = r - along * n;
+    let length = tangent.length();
+    if raise <= 0.0 || length < 1e-9 {
+        return r;
+    }
+    let mu = (along + raise).min(1.0);
+    (tangent / length * (1.0 - mu * mu).max(0.0).sqrt() + mu * n).normalize()
+}
+
 /// Slopes below this variance (dimensionless) mask no reflected ray.
 const MIN_MASKING_VARIANCE: f64 = 1e-6;
 
@@ -278,33 +305,54 @@ fn in_wind_frame(world: &World, r: DVec3) -> DVec3 {
     DVec3::new(r.dot(world.wind), r.dot(DVec3::Y.cross(world.wind)), r.y)
 }
 
-/// Probability that a ray reflected along the unit `r` at a hit escapes the waves drawn around
-/// it: Smith's `1/(1 + Λ(r_y, σ_d²))` (brine-optics `smith_lambda`) for the slope variance `σ_d²`
-/// of the waves drawn there — the sea's total less the BRDF's `variance`, along `r`'s azimuth —
-/// over the mean sea, 0 for a direction pointing into the sea; averaged over the elevations of
-/// the pixel's reflection lobe (`±√3 σ_r` and `r_y`, weights 1/6, 4/6, 1/6; `σ_r = 2σ_s`, as the
-/// filtered sky's). 1 where nothing is drawn. The slopes in the BRDF mask inside its own rough
-/// reflectance already.
+/// Probability that a ray reflected along the unit `r` at a point seen from the unit direction
+/// `v` (toward the eye) escapes the waves drawn around it: Smith's height-correlated
+/// `(1 + Λ(v))/(1 + Λ(v) + Λ(r))` (brine-optics `smith_lambda`; Heitz 2014 §6) for the slope
+/// variance `σ_d²` of the waves drawn there — the sea's total less the BRDF's `variance`, along
+/// each direction's azimuth — over the mean sea: a point seen at a grazing view stands high on
+/// the waves, and its reflections clear them more often than those of an average point. 0 for a
+/// direction pointing into the sea; 1 where nothing is drawn. Averaged over the elevations of the
+/// pixel's reflection lobe above the horizon (`±√3 σ_r` and `r_y`, weights 1/6, 4/6, 1/6;
+/// `σ_r = 2σ_s`, as the filtered sky's): the part of the lobe below the horizon is the light the
+/// BRDF's facets reflect into the waves, which their rough reflectance counts already. The slopes
+/// in the BRDF mask inside that reflectance too.
 ///
 /// # References
 /// Smith B.G. 1967, IEEE Trans. Antennas Propag. 15(5) (the shadowing function); Bruneton E.,
-/// Neyret F., Holzschuch N. 2010, Eq. 6 (its Gaussian-slope form).
-pub(super) fn reflection_escape(world: &World, variance: &SlopeVariance, r: DVec3) -> f64 {
-    let s = in_wind_frame(world, r);
-    let drawn = world.variance_total.along(s) - variance.along(s);
+/// Neyret F., Holzschuch N. 2010, Eq. 6 (its Gaussian-slope form); Heitz E. 2014, "Understanding
+/// the masking-shadowing function in microfacet-based BRDFs", JCGT 3(2), §6 (the
+/// height-correlated form).
+pub(super) fn reflection_escape(world: &World, variance: &SlopeVariance, r: DVec3, v: DVec3) -> f64 {
+    let drawn_along = |a: DVec3| {
+        let s = in_wind_frame(world, a);
+        world.variance_total.along(s) - variance.along(s)
+    };
+    let drawn = drawn_along(r);
     if !(drawn > MIN_MASKING_VARIANCE) {
         return 1.0;
     }
+    let drawn_v = drawn_along(v);
+    let lambda_v = if drawn_v > MIN_MASKING_VARIANCE && v.y > 0.0 {
+        brine_optics::smith_lambda(v.y.min(1.0), drawn_v)
+    } else {
+        0.0
+    };
     // The pixel reflects a lobe of directions, not one: the escape is averaged over the lobe's
     // spread of elevations, `σ_r = 2σ_s` of the BRDF's slopes (three-point Gauss–Hermite), so a
     // distant pixel whose mirror direction grazes the waves does not flip between 0 and 1 with
     // its facet.
     let spread = 2.0 * (0.5 * (variance.sigma_x2() + variance.sigma_y2())).sqrt();
-    let escape = |elevation: f64| {
-        if elevation <= 0.0 { 0.0 } else { 1.0 / (1.0 + brine_optics::smith_lambda(elevation.min(1.0), drawn)) }
-    };
+    let escape =
+        |elevation: f64| (1.0 + lambda_v) / (1.0 + lambda_v + brine_optics::smith_lambda(elevation.min(1.0), drawn));
     let h = 3f64.sqrt() * spread;
-    (4.0 * escape(r.y) + escape(r.y - h) + escape(r.y + h)) / 6.0
+    let (mut sum, mut weight) = (0.0, 0.0);
+    for (w, e) in [(4.0, r.y), (1.0, r.y - h), (1.0, r.y + h)] {
+        if e > 0.0 {
+            sum += w * escape(e);
+            weight += w;
+        }
+    }
+    if weight > 0.0 { sum / weight } else { 0.0 }
 }
 
 /// Radiance of the wave a reflected ray along the unit `r` meets, on average: the mean sea seen
@@ -326,7 +374,8 @@ pub(super) fn met_wave_radiance(world: &World, r: DVec3, below: DVec3, light: &D
         * crate::world::rough_reflectance().roughness_factor(up.y, sigma))
     .clamp(0.0, 1.0);
     let lobe = 2.0 * (0.5 * total.total()).sqrt();
-    let sky = world.filtered_sky.radiance(up, lobe, |r| world.sky.radiance_rgb(r));
+    let seen = seen_sky_direction(up, DVec3::Y, up.y, sigma);
+    let sky = world.filtered_sky.radiance(seen, lobe, |r| world.sky.radiance_rgb(r));
     // Seen from the meeting point, the viewer is up the ray: `v = (−r_x, μ, −r_z)`.
     let v = in_wind_frame(world, DVec3::new(-up.x, up.y, -up.z));
     let glint = |disc: &brine_sky::Disc, rules: &SunDisc| {

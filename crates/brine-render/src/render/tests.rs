@@ -160,27 +160,30 @@ fn detail_normals_shade_the_near_field_and_keep_their_slopes() {
 
 /// A reflection escapes the drawn waves with Smith's probability: never deep into the sea,
 /// always where nothing is drawn, and in between Smith's `1/(1 + Λ)` for the drawn slopes averaged
-/// over the pixel's reflection lobe — so between its values at the lobe's two ends, `r_y ± √3 σ_r`
-/// — more often the higher the ray leaves (Smith 1967's `Λ` is decreasing in the elevation).
+/// over the part of the pixel's reflection lobe above the horizon — so between its values at the
+/// lobe's two ends, `r_y ± √3 σ_r` — more often the higher the ray leaves (Smith 1967's `Λ` is
+/// decreasing in the elevation). Seen from straight above, `Λ(v) = 0` and the height-correlated
+/// form is Smith's separable one.
 #[test]
 fn reflections_escape_the_drawn_waves_as_smith_says() {
     const ROUNDING: f64 = 1e-12;
     let world = World::new(&Scene::default_scene()).expect("the default scene is valid");
     let total = world.variance_total;
     let up = |e: f64| DVec3::new(e.cos(), e.sin(), 0.0);
+    let above = DVec3::Y;
     // Everything in the BRDF: nothing drawn masks the ray.
-    assert!((reflection_escape(&world, &total, up(0.01)) - 1.0).abs() < ROUNDING);
+    assert!((reflection_escape(&world, &total, up(0.01), above) - 1.0).abs() < ROUNDING);
     // Almost nothing in the BRDF (a lobe of ±0.02 rad): the sea's whole variance masks the ray.
     let brdf = SlopeVariance::new(5e-5, 5e-5).expect("valid");
     let h = 3f64.sqrt() * 2.0 * 5e-5f64.sqrt();
-    assert!(reflection_escape(&world, &brdf, up(-0.05)).abs() < ROUNDING);
+    assert!(reflection_escape(&world, &brdf, up(-0.05), above).abs() < ROUNDING);
     let mut last = 0.0;
     for e in [0.001, 0.01, 0.05, 0.1, 0.3, 0.6] {
         let r = up(e);
         let s = DVec3::new(r.dot(world.wind), r.dot(DVec3::Y.cross(world.wind)), r.y);
         let drawn = total.along(s) - brdf.along(s);
         let smith = |y: f64| if y <= 0.0 { 0.0 } else { 1.0 / (1.0 + brine_optics::smith_lambda(y, drawn)) };
-        let got = reflection_escape(&world, &brdf, r);
+        let got = reflection_escape(&world, &brdf, r, above);
         assert!(
             got >= smith(r.y - h) - ROUNDING && got <= smith(r.y + h) + ROUNDING,
             "elevation {e}: {got} outside [{}, {}]",
@@ -190,6 +193,74 @@ fn reflections_escape_the_drawn_waves_as_smith_says() {
         assert!(got > last, "elevation {e}: {got} after {last}");
         last = got;
     }
+}
+
+/// A point seen at a grazing view stands high on the drawn waves: its reflections clear them more
+/// often, by Smith's height-correlated `(1 + Λ(v))/(1 + Λ(v) + Λ(r))` (Heitz 2014 §6), which
+/// tends to 1 as the view grazes. The part of the lobe below the horizon is not counted as
+/// masked (the rough reflectance sends it to the waves met already): a wide lobe that dips
+/// below the horizon escapes as its upper part does.
+#[test]
+fn reflections_of_points_seen_at_grazing_views_escape_more() {
+    const ROUNDING: f64 = 1e-12;
+    let world = World::new(&Scene::default_scene()).expect("the default scene is valid");
+    let total = world.variance_total;
+    let dir = |e: f64| DVec3::new(e.cos(), e.sin(), 0.0);
+    // The smallest BRDF (a lobe of a few milliradians): the escape is averaged over its three
+    // elevations, as in the function.
+    let brdf = SlopeVariance::new(0.0, 0.0).expect("valid");
+    let h = 3f64.sqrt() * 2.0 * (0.5 * (brdf.sigma_x2() + brdf.sigma_y2())).sqrt();
+    let r = dir(0.05);
+    let s = DVec3::new(r.dot(world.wind), r.dot(DVec3::Y.cross(world.wind)), r.y);
+    let drawn = total.along(s) - brdf.along(s);
+    let lobe = |lambda_v: f64| {
+        let hc = |y: f64| (1.0 + lambda_v) / (1.0 + lambda_v + brine_optics::smith_lambda(y, drawn));
+        (4.0 * hc(r.y) + hc(r.y - h) + hc(r.y + h)) / 6.0
+    };
+    let mut last = reflection_escape(&world, &brdf, r, DVec3::Y);
+    assert!((last - lobe(0.0)).abs() < ROUNDING, "{last} vs {}", lobe(0.0));
+    for e in [0.3f64, 0.1, 0.03, 0.01] {
+        // The eye toward −x, looking down at `e` (`v` points to the eye).
+        let v = DVec3::new(-e.cos(), e.sin(), 0.0);
+        let sv = DVec3::new(v.dot(world.wind), v.dot(DVec3::Y.cross(world.wind)), v.y);
+        let lambda_v = brine_optics::smith_lambda(v.y, total.along(sv) - brdf.along(sv));
+        let got = reflection_escape(&world, &brdf, r, v);
+        assert!((got - lobe(lambda_v)).abs() < ROUNDING, "view {e}: {got} vs {}", lobe(lambda_v));
+        assert!(got > last, "view {e}: {got} after {last}");
+        last = got;
+    }
+    // From 0.51 seen from above (a reflection 2.9° up) to 0.88 seen 0.6° above the sea.
+    assert!(last > 0.85, "at a 0.6° view: {last}");
+    // A wide lobe (σ_r = 0.4 rad) centred 0.2 rad up: its lower point is below the horizon.
+    let wide = SlopeVariance::new(0.02, 0.02).expect("valid");
+    let r = dir(0.2);
+    let escape = reflection_escape(&world, &wide, r, DVec3::Y);
+    let h = 3f64.sqrt() * 2.0 * 0.02f64.sqrt();
+    let s = DVec3::new(r.dot(world.wind), r.dot(DVec3::Y.cross(world.wind)), r.y);
+    let drawn = total.along(s) - wide.along(s);
+    let smith = |y: f64| 1.0 / (1.0 + brine_optics::smith_lambda(y, drawn));
+    assert!(r.y - h < 0.0);
+    assert!((escape - (4.0 * smith(r.y) + smith(r.y + h)) / 5.0).abs() < ROUNDING, "{escape}");
+}
+
+/// The sky the seen facets reflect: calm water keeps the mirror direction exactly; a rough
+/// surface seen at a grazing view reflects well above it, in the same azimuth; a steep view moves
+/// little.
+#[test]
+fn the_sky_is_looked_up_where_the_seen_facets_reflect() {
+    let n = DVec3::Y;
+    let d = DVec3::new(0.0, -0.02, 1.0).normalize();
+    let mirror = brine_optics::reflect(d, n);
+    let cos_v = -d.dot(n);
+    assert_eq!(seen_sky_direction(mirror, n, cos_v, 0.0), mirror);
+    let raised = seen_sky_direction(mirror, n, cos_v, 0.16);
+    assert!((raised.length() - 1.0).abs() < 1e-12);
+    assert!(raised.y > mirror.y + 0.2, "{raised} against {mirror}");
+    assert!(raised.x.abs() < 1e-12 && raised.z > 0.0, "azimuth kept: {raised}");
+    let steep = DVec3::new(0.0, -1.0, 0.3).normalize();
+    let mirror = brine_optics::reflect(steep, n);
+    let moved = seen_sky_direction(mirror, n, -steep.dot(n), 0.05);
+    assert!(moved.angle_between(mirror) < 0.01, "{moved} against {mirror}");
 }
 
 /// Crests do not mirror the horizon: on a 12 m/s trochoid sea seen from 10 m (foam and light
