@@ -20,7 +20,8 @@
 //!   variances (Cox & Munk 1954), Smith shadowing, Fresnel at the half vector, the reflected sun (a point or a disc of finite size),
 //!   the reflected sky from a filtered environment, and the slope variance of unresolved waves;
 //!   the rough sea's reflectance over the visible normals (Heitz 2014), split between the sky and
-//!   the neighbouring waves.
+//!   the neighbouring waves, with the visibility of a facet given its slope measured on Gaussian
+//!   profiles (Smith's masking takes it to be the same for every facing slope).
 //!
 //! ## Notation
 //!
@@ -41,6 +42,8 @@
 //! | `σx²`, `σy²` | [`SlopeVariance`] | 1 | facet slope variances downwind, crosswind |
 //! | `p(ζ)` | [`slope_pdf`] | 1 | slope density |
 //! | `R`, `R_seen` | [`ReflectanceSplit`], [`RoughReflectance`] | 1 | rough reflectance: from the sky; of the visible facets in all |
+//! | `μ_r` | [`RoughReflectance::mirror_cosine`] | 1 | mean cosine of the seen facets' mirror directions to the mean normal |
+//! | `r(ν, s)` | [`SlopeVisibility::ratio`] | 1 | visibility of a facing facet given its slope, over Smith's `G₁` |
 //! | `Λ` | [`smith_lambda`] | 1 | Smith shadowing function |
 //! | `ρ(v, l)` | [`ocean_brdf`] | sr⁻¹ | BRDF |
 //!
