@@ -44,6 +44,8 @@
 //! | `R`, `R_seen` | [`ReflectanceSplit`], [`RoughReflectance`] | 1 | rough reflectance: from the sky; of the visible facets in all |
 //! | `μ_r` | [`RoughReflectance::mirror_cosine`] | 1 | mean cosine of the seen facets' mirror directions to the mean normal |
 //! | `r(ν, s)` | [`SlopeVisibility::ratio`] | 1 | visibility of a facing facet given its slope, over Smith's `G₁` |
+//! | `e(ν, s)` | [`SlopeVisibility::escape`] | 1 | escape of a seen facet's reflection given its slope, over Smith's height-correlated `G` |
+//! | `E_d` | [`drawn_escape`] | 1 | the drawn waves' share of a reflection's escape, over the BRDF's |
 //! | `Λ` | [`smith_lambda`] | 1 | Smith shadowing function |
 //! | `ρ(v, l)` | [`ocean_brdf`] | sr⁻¹ | BRDF |
 //!
@@ -106,8 +108,8 @@ pub use ocean_brdf::{
 pub use quadrature::{GaussHermite, MAX_HERMITE_ORDER, gauss_legendre};
 pub use refraction::{SnellWindow, reflect, refract};
 pub use rough::{
-    ReflectanceSplit, RoughReflectance, SlopeVisibility, reflectance_split, reflectance_split_uncorrelated,
-    water_reflectance_split,
+    ReflectanceSplit, RoughReflectance, SlopeVisibility, TwoScaleFacet, drawn_escape, reflectance_split,
+    reflectance_split_uncorrelated, water_reflectance_split,
 };
 pub use sky_reflection::{SkyReflection, reflected_sky_radiance_filtered};
 pub use subsurface::{

@@ -1,12 +1,14 @@
 //! Plots of brine-optics: Fresnel curves and Schlick's error, absorption and `K_d` spectra by
 //! chlorophyll and Jerlov type, the dipole profiles of Li Ying et al.'s Table 3, BRDF lobes, the
-//! visibility of facets by slope and the rough reflectance it gives at grazing views.
+//! visibility of facets by slope and the escape of their reflections, and the rough reflectance they
+//! give at grazing views.
 
 use std::path::Path;
 
 use brine_optics::{
-    JerlovType, LiYingParameters, SlopeVariance, SlopeVisibility, WATER_IOR, WaterBody, case1_iops, fresnel_dielectric,
-    fresnel_schlick, ocean_brdf, pure_water_absorption, reflectance_split, reflectance_split_uncorrelated,
+    JerlovType, LiYingParameters, ReflectanceSplit, SlopeVariance, SlopeVisibility, WATER_IOR, WaterBody, case1_iops,
+    fresnel_dielectric, fresnel_schlick, ocean_brdf, pure_water_absorption, reflectance_split,
+    reflectance_split_uncorrelated,
 };
 use glam::DVec3;
 
@@ -187,11 +189,34 @@ pub fn plot(dir: &Path) -> Result<(), String> {
     }
     .write(&dir.join("optics-slope-visibility.svg"))?;
 
-    // The rough reflectance of the facets seen, with the measured visibility and with Smith's.
+    // Where the seen facets' reflections go: the measured escape over Smith's height-correlated.
+    let series = [0.03, 0.1, 0.3, 1.0, 2.0]
+        .iter()
+        .map(|&nu| {
+            let pts = (0..=60)
+                .map(|i| f64::from(i) * 0.1)
+                .filter(|s| 2.0 * s - nu > 0.0 && 2.0 * s - nu <= 4.0)
+                .map(|s| (2.0 * s - nu, table.escape(nu, s)))
+                .collect();
+            (format!("ν = cot θ_v/σ = {nu}"), pts)
+        })
+        .collect();
+    LineChart {
+        title: "Escape of a seen facet's reflection given its slope, over Smith's height-correlated G",
+        x_label: "rise of the mirror direction, in slope deviations (2s − ν)",
+        y_label: "P(clear | seen, slope) / G",
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+        series,
+    }
+    .write(&dir.join("optics-reflection-escape.svg"))?;
+
+    // The rough reflectance of the facets seen (and toward the sky), with the measured visibility
+    // and escape and with Smith's.
     let water = |c: f64| fresnel_dielectric(c, 1.0, WATER_IOR);
-    let mut series = Vec::new();
+    let (mut series, mut sky) = (Vec::new(), Vec::new());
     for sigma in [0.1, 0.2] {
-        let sweep = |uncorrelated: bool| -> Vec<(f64, f64)> {
+        let sweep = |uncorrelated: bool| -> Vec<(f64, ReflectanceSplit)> {
             (0..=199)
                 .map(|i| 70.0 + f64::from(i) * 0.1)
                 .map(|deg| {
@@ -201,13 +226,28 @@ pub fn plot(dir: &Path) -> Result<(), String> {
                     } else {
                         reflectance_split(c, sigma, water)
                     };
-                    (deg, split.seen)
+                    (deg, split)
                 })
                 .collect()
         };
-        series.push((format!("σ = {sigma}, measured visibility"), sweep(false)));
-        series.push((format!("σ = {sigma}, Smith's visibility"), sweep(true)));
+        let (measured, smith) = (sweep(false), sweep(true));
+        let part = |s: &[(f64, ReflectanceSplit)], f: fn(&ReflectanceSplit) -> f64| -> Vec<(f64, f64)> {
+            s.iter().map(|(deg, split)| (*deg, f(split))).collect()
+        };
+        series.push((format!("σ = {sigma}, measured visibility"), part(&measured, |s| s.seen)));
+        series.push((format!("σ = {sigma}, Smith's visibility"), part(&smith, |s| s.seen)));
+        sky.push((format!("σ = {sigma}, measured visibility and escape"), part(&measured, |s| s.to_sky)));
+        sky.push((format!("σ = {sigma}, Smith's"), part(&smith, |s| s.to_sky)));
     }
+    LineChart {
+        title: "Fresnel reflectance of the facets seen toward the unobstructed sky, R, at grazing views",
+        x_label: "view angle from the zenith (deg)",
+        y_label: "R",
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+        series: sky,
+    }
+    .write(&dir.join("optics-rough-sky.svg"))?;
     LineChart {
         title: "Fresnel reflectance of the facets seen, R_seen, at grazing views",
         x_label: "view angle from the zenith (deg)",

@@ -1,9 +1,11 @@
 //! The reflectance of the rough sea toward a viewer: how much of the sky the unresolved facets
 //! reflect, and how much of their reflection meets the neighbouring waves instead.
 
+mod two_scale;
 mod visibility;
 mod visible_normals;
 
+pub use two_scale::{TwoScaleFacet, drawn_escape};
 pub use visibility::SlopeVisibility;
 pub use visible_normals::{
     ReflectanceSplit, reflectance_split, reflectance_split_uncorrelated, water_reflectance_split,
@@ -21,7 +23,7 @@ const WATER_TABLE: &str = include_str!("../../data/rough_reflectance_water.csv")
 /// measured slope visibility of [`crate::SlopeVisibility`]):
 ///
 /// - `R(θ_v, σ_v)`: from the sky, reflected above the horizon and not shadowed by another facet
-///   (Smith's height-correlated masking–shadowing);
+///   (Smith's height-correlated masking–shadowing, with the measured escape of the facets seen);
 /// - `R_seen(θ_v, σ_v)`: the Fresnel reflectance of the facets the viewer sees, wherever their
 ///   mirror directions go; `R_seen − R` comes from the waves those directions meet;
 /// - `μ_r(θ_v, σ_v)`: the mean cosine of the seen facets' mirror directions to the mean normal.
@@ -31,8 +33,8 @@ const WATER_TABLE: &str = include_str!("../../data/rough_reflectance_water.csv")
 /// once near the mirror direction of the resolved normal and weights it by the rough surface's
 /// reflectance instead of the smooth Fresnel factor: at grazing views the unresolved facets hide
 /// part of the mirror image and reflect the rest from other directions, so the distant sea
-/// reflects less sky than a mirror (`R = 0.25` and `R_seen = 0.26` instead of `F = 0.80` at 88°
-/// for `σ² = 0.03`; Smith's uncorrelated visibility gives 0.30 and 0.32), and the sky it
+/// reflects less sky than a mirror (`R = 0.22` and `R_seen = 0.26` instead of `F = 0.80` at 88°
+/// for `σ² = 0.03`; Smith's forms, without the measured visibility and escape, give 0.30 and 0.32), and the sky it
 /// reflects lies above the mirror direction (there by 20°).
 ///
 /// Grid: `cos θ_v = u²`, `u` in 65 uniform steps on `[0, 1]` (dense at grazing); `σ_v = 0.6 w²`,

@@ -40,17 +40,21 @@ pub struct ReflectanceSplit {
 /// The rough sea's reflectance toward a viewer, split between the sky and the other waves: the
 /// Fresnel reflectance averaged over the visible normals `D_v` (`R_seen`), and the part of it
 /// whose mirror direction leaves above the horizon unshadowed (`R_sky`, Smith's height-correlated
-/// masking–shadowing), as integrals over the slopes `ζ`:
+/// masking–shadowing with the measured escape of the facets seen), as integrals over the slopes
+/// `ζ`:
 ///
 /// `R_seen = ∫∫_{v·n>0} F(v·n) p(ζ) q(ζ) r(ν, s) / (1 + Λ(v)) d²ζ`,
-/// `R_sky  = ∫∫_{v·n>0, l_z>0} F(v·n) p(ζ) q(ζ) r(ν, s) / (1 + Λ(v) + Λ(l)) d²ζ`,
+/// `R_sky  = ∫∫_{v·n>0, l_z>0} F(v·n) p(ζ) q(ζ) r(ν, s) e(ν, s) / (1 + Λ(v) + Λ(l)) d²ζ`,
 ///
 /// `q = (v·n)/(n_z v_z)` (the facet's projected area), `l = 2(v·n)n − v` the mirror direction,
 /// `p` the isotropic Gaussian of slope deviation `σ` per axis, `Λ` Smith's term, and
 /// `r(ν, s)` ([`SlopeVisibility`]) how much more or less often than Smith's `G₁ = 1/(1 + Λ(v))`
 /// a facet is seen given its slope along the view, `ν = cot θ_v/σ`, `s = (cot θ_v − ζ_x)/σ`:
 /// measured on Gaussian profiles of the sea's short-wave spectrum, it leans the visible facets
-/// toward the viewer at grazing views (Smith's form is `r = 1`,
+/// toward the viewer at grazing views; `e(ν, s)` ([`SlopeVisibility::escape`]) how much more or
+/// less often than Smith's height-correlated form the mirror direction of a facet seen at that
+/// slope clears the surface, measured on the same profiles: near grazing the reflections that
+/// barely rise meet the crest beyond (Smith's forms are `r = e = 1`,
 /// [`reflectance_split_uncorrelated`]). `∫∫ p q r / (1 + Λ(v)) = 1` over the facing facets
 /// (the visible normals' normalisation, to the table's interpolation), so `R_seen = 1` for `F = 1`.
 ///
@@ -79,8 +83,9 @@ pub fn reflectance_split(cos_theta_v: f64, sigma: f64, fresnel: impl Fn(f64) -> 
     split(cos_theta_v, sigma, fresnel, Some(SlopeVisibility::stored()))
 }
 
-/// [`reflectance_split`] with Smith's uncorrelated visibility (`r = 1`: every facing facet as
-/// likely to be seen, whatever its slope), the form of Bruneton et al. 2010 and Heitz 2014.
+/// [`reflectance_split`] with Smith's uncorrelated visibility and height-correlated escape
+/// (`r = e = 1`: every facing facet as likely to be seen, and its reflection as likely to clear
+/// the surface, whatever its slope), the form of Bruneton et al. 2010 and Heitz 2014.
 ///
 /// # Arguments
 /// As [`reflectance_split`].
@@ -127,6 +132,8 @@ fn split(
             }
             let q = facing / c;
             let seen_given_slope = visibility.map_or(1.0, |t| t.ratio(nu, (cot - zx) / sigma));
+            // Once seen, how much more or less often than Smith's its reflection escapes.
+            let escape_given_slope = visibility.map_or(1.0, |t| t.escape(nu, (cot - zx) / sigma));
             let weight = 0.5 * panel * wi * gauss(zx) * q * seen_given_slope;
             let across = TAIL_SIGMAS * sigma;
             let (mut sum_seen, mut sum_mirror) = (0.0, 0.0);
@@ -158,7 +165,7 @@ fn split(
                 let lambda_l = smith_lambda(l_z.min(1.0), sigma2);
                 sum_sky += chord * wj * gauss(zy) * fresnel(cos_i) / (1.0 + lambda_v + lambda_l);
             }
-            to_sky += weight * sum_sky;
+            to_sky += weight * escape_given_slope * sum_sky;
         }
     }
     let mirror_cosine = if seen > 0.0 { (mirror / seen).clamp(-1.0, 1.0) } else { c };
@@ -283,7 +290,8 @@ mod tests {
                     let l = 2.0 * vn * n - v;
                     mirror += w / (1.0 + lambda_v) * l.z;
                     if l.z > 0.0 {
-                        sky += w / (1.0 + lambda_v + smith_lambda(l.z, sigma * sigma));
+                        let escape_given_slope = SlopeVisibility::stored().escape(cot / sigma, (cot - zx) / sigma);
+                        sky += w * escape_given_slope / (1.0 + lambda_v + smith_lambda(l.z, sigma * sigma));
                     }
                 }
             }

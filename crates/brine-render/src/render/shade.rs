@@ -227,7 +227,7 @@ pub(super) fn shade_surface(
     // The sky the seen facets reflect lies above the mirror direction of the resolved normal
     // (they lean toward the viewer): the lobe is centred at their mean mirror direction.
     let r = seen_sky_direction(reflect(d, n), n, cos_v, sigma_v);
-    let escape = reflection_escape(world, variance, r, v);
+    let escape = reflection_escape(world, variance, v, n);
     // Sun glint and moon glitter through the BRDF of the unresolved slopes (brine-optics
     // `reflected_source_radiance`: a point source or the disc's integral, as the disc's image needs).
     let glint = |disc: &brine_sky::Disc, rules: &SunDisc| {
@@ -256,16 +256,18 @@ pub(super) fn shade_surface(
     let started = cx.clock();
     let crest = crest_radiance(world, field, p, v, n, cx) * light.sun;
     cx.lap(Stage::Subsurface, started);
-    // The reflected ray leaves over the waves drawn around the point: it escapes to the sky with
-    // Smith's probability for their slopes ([`reflection_escape`]), else it meets another wave.
+    // The reflected light leaves over the waves drawn around the point: the drawn waves' share
+    // of its escape ([`reflection_escape`]) moves it between the sky and the waves met, within
+    // the light the facets seen reflect (`R_seen`).
     let started = cx.clock();
+    let f_sky = (f * escape).min(f + f_met);
+    let f_met = f + f_met - f_sky;
     let lobe = 2.0 * (0.5 * (variance.sigma_x2() + variance.sigma_y2())).sqrt();
     let sky =
-        if escape > 0.0 { world.filtered_sky.radiance(r, lobe, |r| world.sky.radiance_rgb(r)) } else { DVec3::ZERO };
-    let met = if escape < 1.0 || f_met > 0.0 { met_wave_radiance(world, r, below, &light) } else { DVec3::ZERO };
-    let sky = if escape < 1.0 { escape * sky + (1.0 - escape) * met } else { sky };
+        if f_sky > 0.0 { world.filtered_sky.radiance(r, lobe, |r| world.sky.radiance_rgb(r)) } else { DVec3::ZERO };
+    let met = if f_met > 0.0 { met_wave_radiance(world, r, below, &light) } else { DVec3::ZERO };
     cx.lap(Stage::Surface, started);
-    let sea = f * sky + f_met * met + sun + (1.0 - f - f_met) * below / (WATER_IOR * WATER_IOR) + crest;
+    let sea = f_sky * sky + f_met * met + sun + (1.0 - f_sky - f_met) * below / (WATER_IOR * WATER_IOR) + crest;
     let started = cx.clock();
     let shade = white_water(world, p, d, t, normal, sea, light);
     cx.lap(Stage::WhiteWater, started);
@@ -305,54 +307,30 @@ fn in_wind_frame(world: &World, r: DVec3) -> DVec3 {
     DVec3::new(r.dot(world.wind), r.dot(DVec3::Y.cross(world.wind)), r.y)
 }
 
-/// Probability that a ray reflected along the unit `r` at a point seen from the unit direction
-/// `v` (toward the eye) escapes the waves drawn around it: Smith's height-correlated
-/// `(1 + Λ(v))/(1 + Λ(v) + Λ(r))` (brine-optics `smith_lambda`; Heitz 2014 §6) for the slope
-/// variance `σ_d²` of the waves drawn there — the sea's total less the BRDF's `variance`, along
-/// each direction's azimuth — over the mean sea: a point seen at a grazing view stands high on
-/// the waves, and its reflections clear them more often than those of an average point. 0 for a
-/// direction pointing into the sea; 1 where nothing is drawn. Averaged over the elevations of the
-/// pixel's reflection lobe above the horizon (`±√3 σ_r` and `r_y`, weights 1/6, 4/6, 1/6;
-/// `σ_r = 2σ_s`, as the filtered sky's): the part of the lobe below the horizon is the light the
-/// BRDF's facets reflect into the waves, which their rough reflectance counts already. The slopes
-/// in the BRDF mask inside that reflectance too.
+/// The drawn waves' share of the escape of the light reflected toward the viewer at a point of
+/// upward unit normal `n` (the drawn waves' and the detail normals') seen from the unit direction
+/// `v` (toward the eye): how much more or less of it than the BRDF's rough reflectance sends to
+/// the sky reaches the sky past the waves drawn around the point (brine-optics `drawn_escape`:
+/// the whole sea's masking, Smith's height-correlated form with the measured escape of the
+/// facets seen, over the BRDF's own), for the slope deviations of every wave and of the BRDF's
+/// `variance` along the view's azimuth. 1 where nothing is drawn, for a view from straight above
+/// and for a facet that faces away; `≥ 0`, above 1 where the BRDF's own integral, taken in the
+/// drawn facet's frame, masks more than the whole sea does.
 ///
 /// # References
-/// Smith B.G. 1967, IEEE Trans. Antennas Propag. 15(5) (the shadowing function); Bruneton E.,
-/// Neyret F., Holzschuch N. 2010, Eq. 6 (its Gaussian-slope form); Heitz E. 2014, "Understanding
-/// the masking-shadowing function in microfacet-based BRDFs", JCGT 3(2), §6 (the
-/// height-correlated form).
-pub(super) fn reflection_escape(world: &World, variance: &SlopeVariance, r: DVec3, v: DVec3) -> f64 {
-    let drawn_along = |a: DVec3| {
-        let s = in_wind_frame(world, a);
-        world.variance_total.along(s) - variance.along(s)
-    };
-    let drawn = drawn_along(r);
-    if !(drawn > MIN_MASKING_VARIANCE) {
+/// Smith B.G. 1967, IEEE Trans. Antennas Propag. 15(5); Heitz E. 2014, "Understanding the
+/// masking-shadowing function in microfacet-based BRDFs", JCGT 3(2), §6; Bruneton E., Neyret F.,
+/// Holzschuch N. 2010, CGF 29(2), §4.
+pub(super) fn reflection_escape(world: &World, variance: &SlopeVariance, v: DVec3, n: DVec3) -> f64 {
+    let wv = in_wind_frame(world, v);
+    let (total, brdf) = (world.variance_total.along(wv), variance.along(wv));
+    let horizontal = DVec3::new(v.x, 0.0, v.z).length();
+    if !(total - brdf > MIN_MASKING_VARIANCE) || horizontal < 1e-9 || v.y <= 0.0 || n.y <= 0.0 {
         return 1.0;
     }
-    let drawn_v = drawn_along(v);
-    let lambda_v = if drawn_v > MIN_MASKING_VARIANCE && v.y > 0.0 {
-        brine_optics::smith_lambda(v.y.min(1.0), drawn_v)
-    } else {
-        0.0
-    };
-    // The pixel reflects a lobe of directions, not one: the escape is averaged over the lobe's
-    // spread of elevations, `σ_r = 2σ_s` of the BRDF's slopes (three-point Gauss–Hermite), so a
-    // distant pixel whose mirror direction grazes the waves does not flip between 0 and 1 with
-    // its facet.
-    let spread = 2.0 * (0.5 * (variance.sigma_x2() + variance.sigma_y2())).sqrt();
-    let escape =
-        |elevation: f64| (1.0 + lambda_v) / (1.0 + lambda_v + brine_optics::smith_lambda(elevation.min(1.0), drawn));
-    let h = 3f64.sqrt() * spread;
-    let (mut sum, mut weight) = (0.0, 0.0);
-    for (w, e) in [(4.0, r.y), (1.0, r.y - h), (1.0, r.y + h)] {
-        if e > 0.0 {
-            sum += w * escape(e);
-            weight += w;
-        }
-    }
-    if weight > 0.0 { sum / weight } else { 0.0 }
+    let zeta = -(n.x * v.x + n.z * v.z) / (n.y * horizontal);
+    brine_optics::TwoScaleFacet::new(v.y / horizontal, zeta, total.sqrt(), brdf.clamp(0.0, total).sqrt())
+        .map_or(1.0, |facet| brine_optics::drawn_escape(&facet))
 }
 
 /// Radiance of the wave a reflected ray along the unit `r` meets, on average: the mean sea seen

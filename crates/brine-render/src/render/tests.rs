@@ -158,87 +158,42 @@ fn detail_normals_shade_the_near_field_and_keep_their_slopes() {
     assert!(gain > 0.1 * (expected.x + expected.z), "drawn {gain}, band {}", expected.x + expected.z);
 }
 
-/// A reflection escapes the drawn waves with Smith's probability: never deep into the sea,
-/// always where nothing is drawn, and in between Smith's `1/(1 + Λ)` for the drawn slopes averaged
-/// over the part of the pixel's reflection lobe above the horizon — so between its values at the
-/// lobe's two ends, `r_y ± √3 σ_r` — more often the higher the ray leaves (Smith 1967's `Λ` is
-/// decreasing in the elevation). Seen from straight above, `Λ(v) = 0` and the height-correlated
-/// form is Smith's separable one.
+/// The drawn waves' share of a reflection's escape is brine-optics `drawn_escape` for the view's
+/// elevation, the drawn facet's slope toward the eye and the sea's slope deviations along the
+/// view's azimuth (computed here from the world's variances in the wind frame): 1 where nothing
+/// is drawn or the eye looks straight down; at a grazing view over drawn waves, a facet that
+/// faces the eye steeply sends its reflection high and it escapes more often than a level one's.
 #[test]
-fn reflections_escape_the_drawn_waves_as_smith_says() {
+fn reflections_escape_the_drawn_waves_as_the_two_scale_sea_says() {
     const ROUNDING: f64 = 1e-12;
     let world = World::new(&Scene::default_scene()).expect("the default scene is valid");
     let total = world.variance_total;
-    let up = |e: f64| DVec3::new(e.cos(), e.sin(), 0.0);
-    let above = DVec3::Y;
-    // Everything in the BRDF: nothing drawn masks the ray.
-    assert!((reflection_escape(&world, &total, up(0.01), above) - 1.0).abs() < ROUNDING);
-    // Almost nothing in the BRDF (a lobe of ±0.02 rad): the sea's whole variance masks the ray.
-    let brdf = SlopeVariance::new(5e-5, 5e-5).expect("valid");
-    let h = 3f64.sqrt() * 2.0 * 5e-5f64.sqrt();
-    assert!(reflection_escape(&world, &brdf, up(-0.05), above).abs() < ROUNDING);
-    let mut last = 0.0;
-    for e in [0.001, 0.01, 0.05, 0.1, 0.3, 0.6] {
-        let r = up(e);
-        let s = DVec3::new(r.dot(world.wind), r.dot(DVec3::Y.cross(world.wind)), r.y);
-        let drawn = total.along(s) - brdf.along(s);
-        let smith = |y: f64| if y <= 0.0 { 0.0 } else { 1.0 / (1.0 + brine_optics::smith_lambda(y, drawn)) };
-        let got = reflection_escape(&world, &brdf, r, above);
-        assert!(
-            got >= smith(r.y - h) - ROUNDING && got <= smith(r.y + h) + ROUNDING,
-            "elevation {e}: {got} outside [{}, {}]",
-            smith(r.y - h),
-            smith(r.y + h)
-        );
-        assert!(got > last, "elevation {e}: {got} after {last}");
-        last = got;
+    let level = DVec3::Y;
+    // Everything in the BRDF, or a view from straight above: nothing drawn masks the ray.
+    let v = DVec3::new(-0.05f64.cos(), 0.05f64.sin(), 0.0);
+    assert!((reflection_escape(&world, &total, v, level) - 1.0).abs() < ROUNDING);
+    let brdf = SlopeVariance::new(0.2 * total.sigma_x2(), 0.2 * total.sigma_y2()).expect("valid");
+    assert!((reflection_escape(&world, &brdf, DVec3::Y, level) - 1.0).abs() < ROUNDING);
+    for (e, azimuth) in [(0.01f64, 0.0f64), (0.05, 1.0), (0.2, 2.5), (0.6, -1.0)] {
+        // The eye at elevation `e` in the direction of `azimuth` from +x (`v` points to it).
+        let toward = DVec3::new(azimuth.cos(), 0.0, azimuth.sin());
+        let v = (toward * e.cos() + DVec3::Y * e.sin()).normalize();
+        let along = DVec3::new(v.dot(world.wind), v.dot(DVec3::Y.cross(world.wind)), v.y);
+        let (sigma_t, sigma_b) = (total.along(along).sqrt(), brdf.along(along).sqrt());
+        let escape = |zeta: f64| {
+            // Height rising by `ζ` per metre toward the eye: `∇h = ζ·toward`, `n ∝ (−∇h, 1)`.
+            let n = DVec3::new(-zeta * toward.x, 1.0, -zeta * toward.z).normalize();
+            let got = reflection_escape(&world, &brdf, v, n);
+            let facet = brine_optics::TwoScaleFacet::new(e.tan(), zeta, sigma_t, sigma_b).expect("valid");
+            let expected = brine_optics::drawn_escape(&facet);
+            assert!((got - expected).abs() < ROUNDING, "elevation {e}, ζ {zeta}: {got} vs {expected}");
+            got
+        };
+        let (flat, steep) = (escape(0.0), escape(-2.0 * sigma_t));
+        if e < 0.1 {
+            assert!(steep > flat, "elevation {e}: steep {steep}, level {flat}");
+        }
     }
-}
-
-/// A point seen at a grazing view stands high on the drawn waves: its reflections clear them more
-/// often, by Smith's height-correlated `(1 + Λ(v))/(1 + Λ(v) + Λ(r))` (Heitz 2014 §6), which
-/// tends to 1 as the view grazes. The part of the lobe below the horizon is not counted as
-/// masked (the rough reflectance sends it to the waves met already): a wide lobe that dips
-/// below the horizon escapes as its upper part does.
-#[test]
-fn reflections_of_points_seen_at_grazing_views_escape_more() {
-    const ROUNDING: f64 = 1e-12;
-    let world = World::new(&Scene::default_scene()).expect("the default scene is valid");
-    let total = world.variance_total;
-    let dir = |e: f64| DVec3::new(e.cos(), e.sin(), 0.0);
-    // The smallest BRDF (a lobe of a few milliradians): the escape is averaged over its three
-    // elevations, as in the function.
-    let brdf = SlopeVariance::new(0.0, 0.0).expect("valid");
-    let h = 3f64.sqrt() * 2.0 * (0.5 * (brdf.sigma_x2() + brdf.sigma_y2())).sqrt();
-    let r = dir(0.05);
-    let s = DVec3::new(r.dot(world.wind), r.dot(DVec3::Y.cross(world.wind)), r.y);
-    let drawn = total.along(s) - brdf.along(s);
-    let lobe = |lambda_v: f64| {
-        let hc = |y: f64| (1.0 + lambda_v) / (1.0 + lambda_v + brine_optics::smith_lambda(y, drawn));
-        (4.0 * hc(r.y) + hc(r.y - h) + hc(r.y + h)) / 6.0
-    };
-    let mut last = reflection_escape(&world, &brdf, r, DVec3::Y);
-    assert!((last - lobe(0.0)).abs() < ROUNDING, "{last} vs {}", lobe(0.0));
-    for e in [0.3f64, 0.1, 0.03, 0.01] {
-        // The eye toward −x, looking down at `e` (`v` points to the eye).
-        let v = DVec3::new(-e.cos(), e.sin(), 0.0);
-        let sv = DVec3::new(v.dot(world.wind), v.dot(DVec3::Y.cross(world.wind)), v.y);
-        let lambda_v = brine_optics::smith_lambda(v.y, total.along(sv) - brdf.along(sv));
-        let got = reflection_escape(&world, &brdf, r, v);
-        assert!((got - lobe(lambda_v)).abs() < ROUNDING, "view {e}: {got} vs {}", lobe(lambda_v));
-        assert!(got > last, "view {e}: {got} after {last}");
-        last = got;
-    }
-    // A wide lobe (σ_r = 0.4 rad) centred 0.2 rad up: its lower point is below the horizon.
-    let wide = SlopeVariance::new(0.02, 0.02).expect("valid");
-    let r = dir(0.2);
-    let escape = reflection_escape(&world, &wide, r, DVec3::Y);
-    let h = 3f64.sqrt() * 2.0 * 0.02f64.sqrt();
-    let s = DVec3::new(r.dot(world.wind), r.dot(DVec3::Y.cross(world.wind)), r.y);
-    let drawn = total.along(s) - wide.along(s);
-    let smith = |y: f64| 1.0 / (1.0 + brine_optics::smith_lambda(y, drawn));
-    assert!(r.y - h < 0.0);
-    assert!((escape - (4.0 * smith(r.y) + smith(r.y + h)) / 5.0).abs() < ROUNDING, "{escape}");
 }
 
 /// The sky the seen facets reflect: calm water keeps the mirror direction exactly; a rough
