@@ -20,8 +20,10 @@
 //!   variances (Cox & Munk 1954), Smith shadowing, Fresnel at the half vector, the reflected sun (a point or a disc of finite size),
 //!   the reflected sky from a filtered environment, and the slope variance of unresolved waves;
 //!   the rough sea's reflectance over the visible normals (Heitz 2014), split between the sky and
-//!   the neighbouring waves, with the visibility of a facet given its slope measured on Gaussian
-//!   profiles (Smith's masking takes it to be the same for every facing slope).
+//!   the neighbouring waves, with the visibility of a facet given its slope and the escape of its
+//!   reflection measured on Gaussian profiles (Smith's masking and shadowing take both to be the
+//!   same for every facing slope); the drawn waves' share of that escape for a sea drawn in two
+//!   scales.
 //!
 //! ## Notation
 //!

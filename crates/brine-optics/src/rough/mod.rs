@@ -245,8 +245,8 @@ mod tests {
             "# The rough reflectance of sea water (index 1.333) toward a viewer, split between the sky (R)\n\
              # and the visible facets in all (R_seen), with the mean cosine of their mirror directions to\n\
              # the mean normal (mirror_cosine): brine-optics RoughReflectance::new(1.333), Bruneton et al. 2010\n\
-             # Eq. 7-8 over the visible normals (Heitz 2014) seen with the measured slope visibility\n\
-             # (SlopeVisibility, data/slope_visibility.csv). Nodes: sigma = 0.6 w^2, w = j/40;\n\
+             # Eq. 7-8 over the visible normals (Heitz 2014) seen with the measured slope visibility and\n\
+             # reflection escape (SlopeVisibility, data/slope_visibility.csv). Nodes: sigma = 0.6 w^2, w = j/40;\n\
              # cos_theta = u^2, u = i/64. Generated: BRINE_BLESS=1 cargo test -p brine-optics\n\
              # the_stored_table_is_the_integral; do not edit.\n\
              sigma,cos_theta,sky,seen,mirror_cosine\n",

@@ -428,7 +428,8 @@ pub(crate) mod measurement {
     #[test]
     fn the_two_scale_sea_masks_as_the_whole_profile() {
         // Measured: 3.2–5.4 % low with three quarters short, 1.2–4.8 % low at the even split,
-        // within 2 % with a quarter short (the product: 3–25 % low).
+        // within 2 % with a quarter short (the product: 10–25 % low at ν = 0.05 and 0.2, 3–5 % at
+        // 0.8).
         const COMPOSITION: f64 = 0.07;
         let hc = |nu: f64, m: f64| (1.0 + lambda(nu)) / (1.0 + lambda(nu) + lambda(m));
         let t = SlopeVisibility::stored();
@@ -616,16 +617,20 @@ mod tests {
     /// says.
     #[test]
     fn barely_rising_reflections_meet_the_wave_they_leave() {
-        // Two measurements with other seeds differ by a few per cent per cell.
-        const MEASUREMENT: f64 = 0.05;
+        // The steep cells read 1.000 to three digits; two measurements with other seeds differ
+        // there by under 1 % (the cell noise of up to 10 % at ν < 0.2 is where the reflection
+        // barely rises).
+        const STEEP: f64 = 0.02;
+        // Measured 0.17–0.27 where the reflection rises 0.5 σ; the cell noise there is up to a
+        // tenth of the value.
+        const BARELY: f64 = 0.35;
         let t = SlopeVisibility::stored();
         for nu in [0.03, 0.1, 0.3] {
             let barely = 0.5 * (0.5 + nu);
-            assert!(t.escape(nu, barely) < 0.7, "ν {nu}: barely rising {}", t.escape(nu, barely));
+            assert!(t.escape(nu, barely) < BARELY, "ν {nu}: barely rising {}", t.escape(nu, barely));
             let steep = nu + 2.0;
-            assert!((t.escape(nu, steep) - 1.0).abs() < MEASUREMENT, "ν {nu}: steep {}", t.escape(nu, steep));
+            assert!((t.escape(nu, steep) - 1.0).abs() < STEEP, "ν {nu}: steep {}", t.escape(nu, steep));
         }
-        assert!((t.escape(SlopeVisibility::NU_MAX, 0.5) - 1.0).abs() < 1e-15);
     }
 
     /// What the measurement shows, against Smith's uncorrelated form (`r = 1`): near grazing the
