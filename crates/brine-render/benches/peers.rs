@@ -27,7 +27,7 @@ const RUNS: usize = 3;
 
 /// Footprints per mesh edge tried, coarse to fine; the table reports each, and the ratios use the
 /// coarsest that meets [`MATCHED_P99_M`].
-const PIXELS: [f64; 4] = [2.0, 1.0, 0.5, 0.25];
+const PIXELS: [f64; 5] = [2.0, 1.0, 0.5, 0.25, 0.125];
 
 /// The accuracy the mesh must reach: over the pixels within [`MATCHED_RANGE_M`], 99 % of the
 /// mesh's hit points within 5 mm (vertically) of Brine's surface: `|Δdepth| |d_y|`, the depth

@@ -179,3 +179,21 @@ fn model_errors_name_the_flags_typed() {
     let o = brine(&["sun", "--lat", "95", "--lon", "0", "--time", "2024-01-01T00:00:00Z"], dir.path());
     assert!(stderr(&o).starts_with("error: --lat = 95 is out of range"), "{}", stderr(&o));
 }
+
+#[test]
+fn the_camera_mesh_spacing_is_checked_and_named() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("scene.toml"), TINY).unwrap();
+    for value in ["0.1", "65", "nan"] {
+        let typed = format!("--pixels={value}");
+        let o = brine(&["mesh", "scene.toml", "-o", "m.glb", "--camera", &typed, "-q"], dir.path());
+        assert_eq!(o.status.code(), Some(2), "{value}: {}", stderr(&o));
+        assert!(stderr(&o).contains("--pixels"), "{value}: {}", stderr(&o));
+        assert!(!dir.path().join("m.glb").exists());
+    }
+    // The finest spacing the layout allows (⅛ footprint) is accepted: a tiny camera's mesh.
+    let o = brine(&["mesh", "scene.toml", "-o", "m.glb", "--camera", "--pixels", "0.125", "-q"], dir.path());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(dir.path().join("m.glb").exists());
+    assert!(temporaries(dir.path()).is_empty());
+}

@@ -147,7 +147,7 @@ pub struct MeshArgs {
     #[arg(long)]
     pub camera: bool,
     /// With `--camera`: pixel footprints per edge.
-    #[arg(long, default_value_t = 2.0, value_parser = super::within(0.25, 64.0), requires = "camera")]
+    #[arg(long, default_value_t = 2.0, value_parser = super::within(0.125, 64.0), requires = "camera")]
     pub pixels: f64,
     /// With `--camera`: the surface as the camera's rays draw it, the far waves faded with the
     /// pixel footprint (the trochoid sea); without, every wave everywhere.

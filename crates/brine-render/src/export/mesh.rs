@@ -149,7 +149,7 @@ pub fn grid_mesh(world: &World, t: f64, grid: &MeshGrid) -> Mesh {
 /// one of the image. The other seas have no faded height: [`camera_mesh_faded_supported`].
 ///
 /// # Arguments
-/// - `world`, `t`: as [`grid_mesh`]; `pixels`: pixel footprints per edge, `≥ 0.25`;
+/// - `world`, `t`: as [`grid_mesh`]; `pixels`: pixel footprints per edge, `≥ 0.125`;
 ///   `faded`: the waves faded as the camera's primary rays fade them.
 ///
 /// # Returns
@@ -211,7 +211,7 @@ fn faded_vertex(
 /// The radii and azimuths (atan2 in the x–z plane) of [`camera_mesh`] and its vertex count.
 pub fn camera_layout(world: &World, pixels: f64) -> (Vec<f64>, Vec<f64>, u64) {
     let cam = &world.camera;
-    let alpha = cam.pixel_angle() * pixels.max(0.25);
+    let alpha = cam.pixel_angle() * pixels.max(0.125);
     let h = (cam.position.y - world.sea.height_bounds().1).max(0.5);
     let aspect = f64::from(cam.width) / f64::from(cam.height);
     let half_h = (cam.tan_half_fov * aspect).atan();
