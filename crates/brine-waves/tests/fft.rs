@@ -122,6 +122,8 @@ fn polar_band_integral(s: &dyn Spectrum, d: &dyn Spreading, wind: f64, lo: f64, 
     breaks.windows(2).map(|w| simpson(radial, w[0] + 1e-12, w[1] - 1e-12, POLAR_PAIRS)).sum()
 }
 
+/// Options of a tiled sea: these tests check each cascade's own periodic field (the blend that
+/// keeps an untiled sea from repeating is tested in `fft_tracing.rs`).
 fn options(n: usize, tiles: &[f64], choppiness: f64, seed: u64) -> FftOptions {
     FftOptions {
         resolution: n,
@@ -130,7 +132,7 @@ fn options(n: usize, tiles: &[f64], choppiness: f64, seed: u64) -> FftOptions {
         loop_period: None,
         seed,
         wind_direction: 0.3,
-        tiled: false,
+        tiled: true,
     }
 }
 
@@ -247,7 +249,7 @@ fn scale(f: &FftRestFields) -> f64 {
 fn tiles_are_periodic_and_the_sea_loops_exactly() {
     let elf = Elfouhaily::from_fetch(12.0, 3e4).unwrap();
     let d = elf.spreading(Directions::Downwind);
-    let o = FftOptions { resolution: 64, loop_period: Some(30.0), ..FftOptions::for_spectrum(&elf, 2) };
+    let o = FftOptions { resolution: 64, loop_period: Some(30.0), tiled: true, ..FftOptions::for_spectrum(&elf, 2) };
     let looping = FftOcean::new(&elf, &d, &o).unwrap();
     let free = FftOcean::new(&elf, &d, &FftOptions { loop_period: None, ..o.clone() }).unwrap();
     for t in [0.0, 7.3, 1234.5] {
@@ -449,7 +451,7 @@ fn the_resampled_displaced_surface_converges_at_second_order() {
 fn the_upper_envelope_covers_every_point_of_a_folding_sea() {
     let elf = Elfouhaily::from_fetch(20.0, 2e5).unwrap();
     let d = elf.spreading(Directions::Downwind);
-    let o = FftOptions { resolution: 64, choppiness: 4.0, ..FftOptions::for_spectrum(&elf, 3) };
+    let o = FftOptions { resolution: 64, choppiness: 4.0, tiled: true, ..FftOptions::for_spectrum(&elf, 3) };
     let ocean = FftOcean::new(&elf, &d, &o).unwrap();
     let rest = ocean.rest_fields(4.0);
     let folded: Vec<usize> =
@@ -505,7 +507,7 @@ const MSS_REL: f64 = 0.05;
 fn filtered_slopes_span_the_gradient_and_the_whole_sea_mean_square_slope() {
     let elf = Elfouhaily::from_fetch(10.0, 1e5).unwrap();
     let d = elf.spreading(Directions::Downwind);
-    let o = FftOptions { resolution: 64, choppiness: 0.0, ..FftOptions::for_spectrum(&elf, 3) };
+    let o = FftOptions { resolution: 64, choppiness: 0.0, tiled: true, ..FftOptions::for_spectrum(&elf, 3) };
     let ocean = FftOcean::new(&elf, &d, &o).unwrap();
     let frame = ocean.at_time(2.0);
     let filter = FftSlopeFilter::new(&frame);

@@ -40,7 +40,17 @@ const AT_ROOT_ABS: f64 = 1e-9;
 /// cascades of 64² over 80 m, 11.7 m and 1.70 m (finest spacing 2.7 cm).
 fn frames() -> &'static [(f64, FftFrame)] {
     static FRAMES: OnceLock<Vec<(f64, FftFrame)>> = OnceLock::new();
-    FRAMES.get_or_init(|| {
+    FRAMES.get_or_init(|| make_frames(false))
+}
+
+/// The same frames of a tiled sea: each cascade's own periodic spline, without the blend.
+fn tiled_frames() -> &'static [(f64, FftFrame)] {
+    static FRAMES: OnceLock<Vec<(f64, FftFrame)>> = OnceLock::new();
+    FRAMES.get_or_init(|| make_frames(true))
+}
+
+fn make_frames(tiled: bool) -> Vec<(f64, FftFrame)> {
+    {
         let elf = Elfouhaily::from_fetch(12.0, 2e4).unwrap();
         let d = elf.spreading(Directions::Downwind);
         let mut out = Vec::new();
@@ -52,12 +62,12 @@ fn frames() -> &'static [(f64, FftFrame)] {
                 loop_period: None,
                 seed,
                 wind_direction: 0.7 * seed as f64,
-                tiled: false,
+                tiled,
             };
             out.push((choppiness, FftOcean::new(&elf, &d, &o).unwrap().at_time(2.0 + seed as f64)));
         }
         out
-    })
+    }
 }
 
 proptest! {
@@ -116,22 +126,50 @@ proptest! {
 /// lowest measured.
 const SLOPE_BOUND_REACHED: f64 = 0.7;
 
+/// Least fraction of a blended cascade's axis slope bounds that its sampled slopes must reach.
+/// The blend's bound is `2λ + (B G₁/S) M` (brine-waves `TileBlend`): the factor 2 is `sup Σ ŵ`,
+/// reached only where four corners' reads have their largest slopes at once, and `M` (the tile's
+/// largest height) and `λ` are not reached at the same point either; sampled as below, the slopes
+/// reach 0.23–0.31 of the bounds of these cascades. 0.2 is below the lowest measured.
+const BLEND_SLOPE_BOUND_REACHED: f64 = 0.2;
+
+/// The largest sampled axis slopes of a cascade on a grid 4× finer than its cells over one tile,
+/// each checked against `max_slope`.
+fn sampled_axis_slopes(c: &brine_waves::FftCascade) -> (f64, f64) {
+    let dx = c.spacing();
+    let n = c.resolution();
+    let (mut gx, mut gz) = (0.0f64, 0.0f64);
+    for j in 0..4 * n {
+        for i in 0..4 * n {
+            let g = c.traced_gradient(i as f64 * 0.25 * dx, j as f64 * 0.25 * dx);
+            gx = gx.max(g.x.abs());
+            gz = gz.max(g.y.abs());
+            assert!(g.length() <= c.max_slope(), "{} > {}", g.length(), c.max_slope());
+        }
+    }
+    (gx, gz)
+}
+
 #[test]
 fn the_slope_bounds_are_close_to_the_largest_slopes() {
     for (_, frame) in frames() {
         for c in frame.cascades() {
-            let dx = c.spacing();
-            let n = c.resolution();
+            assert!(c.blended());
             let (a, b) = c.max_axis_slopes();
-            let (mut gx, mut gz) = (0.0f64, 0.0f64);
-            for j in 0..4 * n {
-                for i in 0..4 * n {
-                    let g = c.traced_gradient(i as f64 * 0.25 * dx, j as f64 * 0.25 * dx);
-                    gx = gx.max(g.x.abs());
-                    gz = gz.max(g.y.abs());
-                    assert!(g.length() <= c.max_slope(), "{} > {}", g.length(), c.max_slope());
-                }
-            }
+            let (gx, gz) = sampled_axis_slopes(c);
+            assert!(gx <= a && gz <= b, "({gx}, {gz}) vs ({a}, {b})");
+            assert!(
+                gx >= BLEND_SLOPE_BOUND_REACHED * a && gz >= BLEND_SLOPE_BOUND_REACHED * b,
+                "loose: ({gx}, {gz}) vs ({a}, {b})"
+            );
+        }
+    }
+    // The tile's own spline (a tiled sea, no blend).
+    for (_, frame) in tiled_frames() {
+        for c in frame.cascades() {
+            assert!(!c.blended());
+            let (a, b) = c.max_axis_slopes();
+            let (gx, gz) = sampled_axis_slopes(c);
             assert!(gx <= a && gz <= b, "({gx}, {gz}) vs ({a}, {b})");
             assert!(
                 gx >= SLOPE_BOUND_REACHED * a && gz >= SLOPE_BOUND_REACHED * b,
@@ -412,6 +450,41 @@ fn assert_cone_rays_clear(
             let t = t_enter + (t_c - t_enter) * f64::from(j) / 2000.0;
             let f = f_along(frame, &r, footprint, t);
             assert!(f > -AT_ROOT_ABS, "{what}, t_enter {t_enter}: ray {k} crosses at t = {t} < t_c = {t_c} (F = {f})");
+        }
+    }
+}
+
+/// Largest correlation of a blended cascade's slopes with themselves one tile away (along x, z
+/// and the diagonal, 20 000 points): a periodic cascade correlates by 1 there; the blend's
+/// lattice (spacing half a tile) gives two points a tile apart no common corner, so their reads
+/// are at independent random offsets. The synthetic study (docs/dev/fft-repetition.md) measured
+/// |ρ| ≤ 0.005; this bound allows the sampling error of 20 000 points (about 0.007 one sigma)
+/// several times over.
+const TILE_LAG_CORRELATION: f64 = 0.05;
+
+#[test]
+fn a_blended_cascade_does_not_repeat_with_its_tile() {
+    let (a1, a2) = (0.754_877_666_246_692_7, 0.569_840_290_998_053_3);
+    let corr = |c: &brine_waves::FftCascade, lag: (f64, f64)| {
+        let side = 40.0 * c.tile_size();
+        let (mut sxy, mut sxx, mut syy, mut sx, mut sy, mut n) = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+        for i in 1..=20_000 {
+            let (x, z) = (side * (0.5 + a1 * i as f64).fract(), side * (0.5 + a2 * i as f64).fract());
+            let p = c.traced_gradient(x, z).x;
+            let q = c.traced_gradient(x + lag.0, z + lag.1).x;
+            (sxy, sxx, syy, sx, sy, n) = (sxy + p * q, sxx + p * p, syy + q * q, sx + p, sy + q, n + 1.0);
+        }
+        let cov = sxy / n - sx * sy / n / n;
+        cov / ((sxx / n - (sx / n).powi(2)) * (syy / n - (sy / n).powi(2))).sqrt()
+    };
+    for ((_, blended), (_, tiled)) in frames().iter().zip(tiled_frames()) {
+        for (cb, ct) in blended.cascades().iter().zip(tiled.cascades()) {
+            let l = cb.tile_size();
+            for lag in [(l, 0.0), (0.0, l), (l, l), (2.0 * l, -l)] {
+                let (rb, rt) = (corr(cb, lag), corr(ct, lag));
+                assert!(rb.abs() <= TILE_LAG_CORRELATION, "blended: {rb} at {lag:?}");
+                assert!(rt > 0.999, "tiled: {rt} at {lag:?}");
+            }
         }
     }
 }

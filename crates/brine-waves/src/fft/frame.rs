@@ -8,6 +8,7 @@ use brine_core::footprint::footprint_weight;
 use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
+use crate::fft::blend::TileBlend;
 use crate::fft::resample::resample;
 use crate::fft::spline::SplineGrid;
 use crate::{FftOcean, FftRestFields};
@@ -60,6 +61,8 @@ pub struct FftCascade {
     variance: f64,
     slope_covariance: DVec3,
     uncovered: usize,
+    /// The tile-and-blend that keeps the cascade from repeating (`None` for a tiled sea).
+    blend: Option<TileBlend>,
 }
 
 /// Bilinear weights of a point: the four grid indices and `(s, t)`.
@@ -113,7 +116,36 @@ impl FftCascade {
     /// B-spline interpolation); Tessendorf 2001 (the field).
     #[inline]
     pub fn height(&self, x: f64, z: f64) -> f64 {
-        self.spline.value(x, z)
+        match &self.blend {
+            None => self.spline.value(x, z),
+            Some(b) => b
+                .corners(x, z)
+                .iter()
+                .filter(|c| c.weight > 0.0)
+                .map(|c| c.weight * self.spline.value(x + c.offset[0], z + c.offset[1]))
+                .sum(),
+        }
+    }
+
+    /// The traced height and its exact gradient, `(s, ∂s/∂x, ∂s/∂z)`: the spline's, or the
+    /// blend of the corners' reads, `H = Σ ŵ_k s_k`, `∇H = Σ (ŵ_k ∇s_k + s_k ∇ŵ_k)`.
+    #[inline]
+    fn value_and_gradient(&self, x: f64, z: f64) -> (f64, f64, f64) {
+        match &self.blend {
+            None => self.spline.value_and_gradient(x, z),
+            Some(b) => {
+                let (mut h, mut gx, mut gz) = (0.0, 0.0, 0.0);
+                for c in b.corners(x, z) {
+                    if c.weight > 0.0 {
+                        let (s, sx, sz) = self.spline.value_and_gradient(x + c.offset[0], z + c.offset[1]);
+                        h += c.weight * s;
+                        gx += c.weight * sx + s * c.gradient[0];
+                        gz += c.weight * sz + s * c.gradient[1];
+                    }
+                }
+                (h, gx, gz)
+            }
+        }
     }
 
     /// Gradient of the traced height, `∇s` (the spline's exact derivative).
@@ -128,7 +160,7 @@ impl FftCascade {
     /// Unser 1999 (derivative of a B-spline).
     #[inline]
     pub fn traced_gradient(&self, x: f64, z: f64) -> DVec2 {
-        let (_, gx, gz) = self.spline.value_and_gradient(x, z);
+        let (_, gx, gz) = self.value_and_gradient(x, z);
         DVec2::new(gx, gz)
     }
 
@@ -145,7 +177,7 @@ impl FftCascade {
     /// Unser 1999.
     #[inline]
     pub fn height_and_derivative(&self, x: f64, z: f64, dx: f64, dz: f64) -> (f64, f64) {
-        let (s, gx, gz) = self.spline.value_and_gradient(x, z);
+        let (s, gx, gz) = self.value_and_gradient(x, z);
         (s, gx * dx + gz * dz)
     }
 
@@ -163,6 +195,33 @@ impl FftCascade {
     /// Tessendorf 2001 (the slope and choppy-displacement sums); docs/equations.md §1.
     #[inline]
     pub fn gradient(&self, x: f64, z: f64) -> DVec2 {
+        match &self.blend {
+            None => self.tile_gradient(x, z),
+            Some(b) => {
+                let mut g = DVec2::ZERO;
+                for c in b.corners(x, z) {
+                    if c.weight > 0.0 {
+                        let (px, pz) = (x + c.offset[0], z + c.offset[1]);
+                        let h = self.tile_height(px, pz);
+                        g += c.weight * self.tile_gradient(px, pz) + h * DVec2::new(c.gradient[0], c.gradient[1]);
+                    }
+                }
+                g
+            }
+        }
+    }
+
+    /// The bilinear interpolant of the grid heights (the shading's height, without the blend).
+    #[inline]
+    fn tile_height(&self, x: f64, z: f64) -> f64 {
+        let c = self.cell(x, z);
+        let h = &self.height;
+        Self::lerp2(&c, f64::from(h[c.i00]), f64::from(h[c.i10]), f64::from(h[c.i01]), f64::from(h[c.i11]))
+    }
+
+    /// The bilinear interpolant of the grid's shading gradients (without the blend).
+    #[inline]
+    fn tile_gradient(&self, x: f64, z: f64) -> DVec2 {
         let c = self.cell(x, z);
         let g = &self.gradient;
         let comp = |k: usize| {
@@ -190,9 +249,35 @@ impl FftCascade {
     /// Dupuy & Bruneton 2012; Tessendorf 2001 (choppy waves); docs/equations.md §10.
     #[inline]
     pub fn jacobian(&self, x: f64, z: f64) -> f64 {
+        match &self.blend {
+            None => self.tile_jacobian(x, z),
+            // J − 1 blends as the height does.
+            Some(b) => {
+                1.0 + b
+                    .corners(x, z)
+                    .iter()
+                    .filter(|c| c.weight > 0.0)
+                    .map(|c| c.weight * (self.tile_jacobian(x + c.offset[0], z + c.offset[1]) - 1.0))
+                    .sum::<f64>()
+            }
+        }
+    }
+
+    #[inline]
+    fn tile_jacobian(&self, x: f64, z: f64) -> f64 {
         let c = self.cell(x, z);
         let j = &self.jacobian;
         Self::lerp2(&c, f64::from(j[c.i00]), f64::from(j[c.i10]), f64::from(j[c.i01]), f64::from(j[c.i11]))
+    }
+
+    /// The tile-and-blend of the cascade, if any.
+    pub fn blended(&self) -> bool {
+        self.blend.is_some()
+    }
+
+    /// `max(|min c|, |max c|)`: the bound of the tile's own spline.
+    fn tile_magnitude(&self) -> f64 {
+        self.spline.min.abs().max(self.spline.max.abs())
     }
 
     /// Tile size `L` (m).
@@ -228,31 +313,54 @@ impl FftCascade {
 
     /// `(min c, max c)` (m): bounds of the traced height.
     pub fn height_bounds(&self) -> (f64, f64) {
-        (self.spline.min, self.spline.max)
+        match &self.blend {
+            None => (self.spline.min, self.spline.max),
+            // ŵ ≥ 0 and 1 ≤ Σ ŵ ≤ 2.
+            Some(b) => {
+                (b.weight_sum_bound() * self.spline.min.min(0.0), b.weight_sum_bound() * self.spline.max.max(0.0))
+            }
+        }
     }
 
     /// Certified bound `L = √(a² + b²)` of `|∇s|` (see the type's documentation).
     pub fn max_slope(&self) -> f64 {
-        self.spline.max_slope()
+        match &self.blend {
+            None => self.spline.max_slope(),
+            Some(b) => b.gradient_bound(self.tile_magnitude(), self.spline.max_slope()),
+        }
     }
 
     /// Certified bounds `(a, b)` of `|∂s/∂x|` and `|∂s/∂z|`.
     pub fn max_axis_slopes(&self) -> (f64, f64) {
-        self.spline.slope
+        match &self.blend {
+            None => self.spline.slope,
+            Some(_) => (self.directional_max_slope(1.0, 0.0), self.directional_max_slope(0.0, 1.0)),
+        }
     }
 
     /// Certified bound of `|∇s·d|` along the horizontal part `(dₓ, d_z)` of a direction:
     /// `a|dₓ| + b|d_z|`.
     #[inline]
     pub fn directional_max_slope(&self, dx: f64, dz: f64) -> f64 {
-        self.spline.directional_slope(dx, dz)
+        let lambda = self.spline.directional_slope(dx, dz);
+        match &self.blend {
+            None => lambda,
+            Some(b) => b.slope_bound(self.tile_magnitude(), lambda, dx, dz),
+        }
     }
 
     /// Certified bound of `|d²s/dt²|` along the horizontal part `(dₓ, d_z)` of a direction:
     /// `A dₓ² + 2C|dₓd_z| + B d_z²`.
     #[inline]
     pub fn directional_curvature(&self, dx: f64, dz: f64) -> f64 {
-        self.spline.directional_curvature(dx, dz)
+        let kappa = self.spline.directional_curvature(dx, dz);
+        match &self.blend {
+            None => kappa,
+            Some(b) => {
+                let lambda = self.spline.directional_slope(dx, dz);
+                b.curvature_bound(self.tile_magnitude(), lambda, kappa, dx, dz)
+            }
+        }
     }
 
     /// The band `[k_lo, k_hi)` of `|k|_∞` (rad m⁻¹) the cascade holds.
@@ -359,6 +467,7 @@ impl FftFrame {
                     variance: spec.variance,
                     slope_covariance: DVec3::new(cov[0], cov[1], cov[2]),
                     uncovered: grid.uncovered,
+                    blend: (!ocean.options().tiled).then(|| TileBlend::new(f.tile_size, ocean.options().seed, c)),
                 }
             })
             .collect();
@@ -457,12 +566,12 @@ impl FftFrame {
 
     /// `(h_min, h_max)` (m): bounds of the traced height, `Σ_c min H_c` and `Σ_c max H_c`.
     pub fn height_bounds(&self) -> (f64, f64) {
-        self.cascades.iter().fold((0.0, 0.0), |(lo, hi), c| (lo + c.spline.min, hi + c.spline.max))
+        self.cascades.iter().map(FftCascade::height_bounds).fold((0.0, 0.0), |(lo, hi), (a, b)| (lo + a, hi + b))
     }
 
     /// Certified bound of `|∇h̄|` over the whole sea, `Σ_c L_c`.
     pub fn max_slope(&self) -> f64 {
-        self.cascades.iter().map(|c| c.spline.max_slope()).sum()
+        self.cascades.iter().map(FftCascade::max_slope).sum()
     }
 
     /// The fade weight `w_c = smoothstep(1, 1.5, T_c/t)` of cascade `c`, `T_c` its

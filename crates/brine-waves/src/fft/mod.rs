@@ -1,5 +1,6 @@
 //! Tessendorf's FFT sea: spectrum, cascades, frames, certified splines, footprint-filtered slopes.
 
+pub(crate) mod blend;
 pub(crate) mod frame;
 #[cfg(feature = "tracing")]
 pub(crate) mod lipschitz;
