@@ -325,12 +325,15 @@ fn top_down_pixel_m() -> f64 {
     2.0 * 50.0 * 30f64.to_radians().tan() / f64::from(TOP_DOWN_SIZE)
 }
 
-/// How much the FFT sea repeats: each cascade is periodic, so the sea's slopes correlate with
-/// themselves one tile `L_c` away by cascade `c`'s share of their variance, on top of what any
-/// sea of that spectrum correlates at that distance. Returns the largest share over the
-/// cascades: of the slopes a pixel of the top-down view shows (each cascade's gradient averaged
-/// over the pixel's footprint, as brine-waves `FftSlopeFilter` reads it), over [`LAG_POINTS`]
-/// points, and of the drawn surface itself (the cascades' gradient grids, no footprint).
+/// How much the FFT sea repeats: what its cascades' repetition adds to the correlation of the
+/// sea's slopes with themselves one tile `L_c` away. At that lag only cascade `c` can repeat
+/// (the tiles are incommensurate), and it adds its share of the slope variance times its own
+/// slopes' correlation with themselves there, `ρ_c` (1 for a periodic cascade; a cascade read
+/// through its blend, brine-waves `TileBlend`, does not repeat), along x, z and the diagonal.
+/// What any sea of the spectrum correlates at that distance is not counted. Returns the
+/// largest over the cascades: of the slopes a pixel of the top-down view shows (each cascade's
+/// gradient averaged over the pixel's footprint and blended, as brine-waves `FftSlopeFilter`
+/// reads it), over [`LAG_POINTS`] points, and of the drawn surface (the traced gradient).
 fn tile_lag_correlation(text: &str) -> Result<(f64, f64), String> {
     let scene = Scene::from_toml_str(text, "lags.toml").map_err(|e| e.to_string())?;
     let world = brine_render::World::new(&scene).map_err(|e| e.to_string())?;
@@ -346,26 +349,59 @@ fn tile_lag_correlation(text: &str) -> Result<(f64, f64), String> {
             (LAG_SQUARE_M * (0.5 + a1 * i).fract(), LAG_SQUARE_M * (0.5 + a2 * i).fract())
         })
         .collect();
-    let variance = |v: &mut dyn Iterator<Item = (f64, f64)>| {
-        let (mut n, mut sx, mut sz, mut sxx) = (0.0, 0.0, 0.0, 0.0);
-        for (x, z) in v {
-            (n, sx, sz, sxx) = (n + 1.0, sx + x, sz + z, sxx + x * x + z * z);
+    // Variance of a slope field (both components) and its largest correlation with itself at
+    // the cascade's tile lags (the components pooled).
+    let stats = |slope: &dyn Fn(f64, f64) -> (f64, f64), l: f64| {
+        let values: Vec<(f64, f64)> = points.iter().map(|&(x, z)| slope(x, z)).collect();
+        let n = values.len() as f64;
+        let mean = values.iter().fold((0.0, 0.0), |m, v| (m.0 + v.0 / n, m.1 + v.1 / n));
+        let var = values.iter().map(|v| (v.0 - mean.0).powi(2) + (v.1 - mean.1).powi(2)).sum::<f64>() / n;
+        let mut rho = f64::NEG_INFINITY;
+        for lag in [(l, 0.0), (0.0, l), (l, l)] {
+            let cov = points
+                .iter()
+                .zip(&values)
+                .map(|(&(x, z), v)| {
+                    let w = slope(x + lag.0, z + lag.1);
+                    (v.0 - mean.0) * (w.0 - mean.0) + (v.1 - mean.1) * (w.1 - mean.1)
+                })
+                .sum::<f64>()
+                / n;
+            rho = rho.max(cov / var.max(f64::MIN_POSITIVE));
         }
-        sxx / n - (sx / n).powi(2) - (sz / n).powi(2)
+        (var, rho)
     };
     let (mut seen, mut drawn) = (Vec::new(), Vec::new());
     for c in frame.cascades() {
-        let g = c.gradients();
-        drawn.push(variance(&mut g.iter().map(|g| (f64::from(g[0]), f64::from(g[1])))));
-        let base = g.iter().map(|g| [f64::from(g[0]), f64::from(g[1])]).collect();
-        let pyramid = brine_waves::FftPyramid::<2>::new(c.resolution(), c.spacing(), base);
-        seen.push(variance(&mut points.iter().map(|&(x, z)| {
-            let m = pyramid.footprint_mean(x, z, sigma);
-            (m[0], m[1])
-        })));
+        let base = c
+            .gradients()
+            .iter()
+            .zip(c.heights())
+            .map(|(g, &h)| [f64::from(g[0]), f64::from(g[1]), f64::from(h)])
+            .collect();
+        let pyramid = brine_waves::FftPyramid::<3>::new(c.resolution(), c.spacing(), base);
+        let filtered = |x: f64, z: f64| match c.blend() {
+            None => {
+                let m = pyramid.footprint_mean(x, z, sigma);
+                (m[0], m[1])
+            }
+            Some(b) => b.corners(x, z).iter().filter(|k| k.weight > 0.0).fold((0.0, 0.0), |g, k| {
+                let m = pyramid.footprint_mean(x + k.offset[0], z + k.offset[1], sigma);
+                (g.0 + k.weight * m[0] + m[2] * k.gradient[0], g.1 + k.weight * m[1] + m[2] * k.gradient[1])
+            }),
+        };
+        let traced = |x: f64, z: f64| {
+            let g = c.traced_gradient(x, z);
+            (g.x, g.y)
+        };
+        seen.push(stats(&filtered, c.tile_size()));
+        drawn.push(stats(&traced, c.tile_size()));
     }
-    let largest_share = |v: &[f64]| v.iter().copied().fold(0.0, f64::max) / v.iter().sum::<f64>();
-    Ok((largest_share(&seen), largest_share(&drawn)))
+    let largest_excess = |v: &[(f64, f64)]| {
+        let total: f64 = v.iter().map(|s| s.0).sum();
+        v.iter().map(|&(var, rho)| var / total * rho).fold(0.0, f64::max)
+    };
+    Ok((largest_excess(&seen), largest_excess(&drawn)))
 }
 
 /// Shortest wave the detail figure can count, in near-field footprints: a box of side `w`
@@ -595,11 +631,14 @@ pub fn run(root: &Path) -> Result<(), String> {
            of it and put their slope in its few lowest bins, whatever the sea, which the plain share\n\
            counts as peaks (of the fitted trochoid set's slope variance, 22 % at 8 m/s, 39 % at 12 and\n\
            51 % at 16 is in waves longer than a quarter of the view).\n\
-         - **tile lags** (FFT): how much the sea repeats. Each cascade is periodic, so one of its\n\
-           tiles away the slopes correlate with themselves by its share of their variance, on top of\n\
-           what any sea of the same spectrum correlates there. The figure is the largest share: of the\n\
-           slopes a pixel of the top-down view shows (averaged over its {px:.2} m footprint, {LAG_POINTS}\n\
-           points), and (in brackets) of the drawn surface, down to its millimetre waves.\n\
+         - **tile lags** (FFT): how much the sea repeats. One tile of a cascade away, its repetition\n\
+           adds to the correlation of the sea's slopes its share of their variance times its own\n\
+           correlation there: 1 for a periodic cascade, about 0 for one read through its blend of\n\
+           randomly offset reads (the sea's cascades are). The figure is the largest over the\n\
+           cascades (along x, z and the diagonal): of the slopes a pixel of the top-down view shows\n\
+           (averaged over its {px:.2} m footprint, {LAG_POINTS} points), and (in brackets) of the drawn\n\
+           surface, down to its millimetre waves. What any sea of the spectrum correlates at that\n\
+           distance is not counted.\n\
          - **sparkle** (2 and 5 m/s): the high-pass noise of the far field (150 m to 2.5 km) at 1\n\
            sample per pixel over that at {SPARKLE_SPP} (whose samples each filter over a quarter of the\n\
            pixel's width, the rest covered by their spread): near 1 when each pixel is filtered over\n\

@@ -113,6 +113,7 @@ pub use brine_core::footprint::{BOX_WIDTH_PER_SIGMA, EllipticalFootprint, MAX_AN
 #[cfg(feature = "tracing")]
 pub use brine_trace::RayTile;
 pub use error::WaveError;
+pub use fft::blend::{BLEND_SPACING_PER_TILE, BLEND_TRANSITION, BlendCorner, TileBlend};
 pub use fft::frame::{FftCascade, FftFrame};
 pub use fft::ocean::{FftKinematics, FftOcean, FftRestFields, FftRestJacobian, ParticleState};
 pub use fft::options::{

@@ -3,7 +3,7 @@
 
 use std::borrow::Borrow;
 
-use brine_waves::{FftFrame, FftOcean, FftPyramid, FftRestJacobian, FftStackPyramid};
+use brine_waves::{FftFrame, FftOcean, FftPyramid, FftRestJacobian, FftStackPyramid, TileBlend};
 use glam::DVec2;
 use rayon::prelude::*;
 
@@ -37,6 +37,10 @@ use crate::statistics::Moments;
 pub struct FftJacobianStatistics {
     /// Per cascade, the pyramid of `(kᵢ, kᵢ²)`.
     cascades: Vec<FftPyramid<2>>,
+    /// Per cascade, its tile-and-blend (brine-waves `TileBlend`; `None` for a tiled sea).
+    blends: Vec<Option<TileBlend>>,
+    /// `1/n`.
+    share: f64,
 }
 
 impl FftJacobianStatistics {
@@ -70,7 +74,8 @@ impl FftJacobianStatistics {
                 FftPyramid::new(c.resolution(), c.spacing(), base)
             })
             .collect();
-        Self { cascades }
+        let blends = frame.cascades().iter().map(|c| c.blend().copied()).collect();
+        Self { cascades, blends, share }
     }
 
     /// The pyramids of the Jacobians of rest-grid derivative fields (brine-waves
@@ -100,7 +105,8 @@ impl FftJacobianStatistics {
                 FftPyramid::new(f.resolution, f.tile_size / f.resolution as f64, base)
             })
             .collect();
-        Self { cascades }
+        let blends = fields.iter().map(|f| f.blend).collect();
+        Self { cascades, blends, share }
     }
 
     /// Number of cascades.
@@ -124,8 +130,22 @@ impl FftJacobianStatistics {
     /// # Panics
     /// If `cascade ≥ cascade_count()`.
     pub fn cascade_moments(&self, cascade: usize, x: f64, z: f64, footprint_m: f64) -> (f64, f64) {
-        let [m, m2] = self.cascades[cascade].footprint_mean(x, z, footprint_m);
-        (m, m2)
+        let p = &self.cascades[cascade];
+        let Some(b) = &self.blends[cascade] else {
+            let [m, m2] = p.footprint_mean(x, z, footprint_m);
+            return (m, m2);
+        };
+        // A blended cascade: `kᵢ − 1/n = Σ ŵ_c (k_c − 1/n)` over its corners' reads, which are
+        // independent: mean `1/n + Σ ŵ_c (⟨k⟩_c − 1/n)`, variance `Σ ŵ_c² Var_c`.
+        let (mut m, mut var) = (self.share, 0.0);
+        for c in b.corners(x, z) {
+            if c.weight > 0.0 {
+                let [mc, m2c] = p.footprint_mean(x + c.offset[0], z + c.offset[1], footprint_m);
+                m += c.weight * (mc - self.share);
+                var += c.weight * c.weight * (m2c - mc * mc).max(0.0);
+            }
+        }
+        (m, m * m + var)
     }
 
     /// Mean and variance of `J` over a pixel footprint.
@@ -146,8 +166,8 @@ impl FftJacobianStatistics {
     pub fn moments_at(&self, x: f64, z: f64, footprint_m: f64) -> Moments {
         debug_assert!(footprint_m >= 0.0);
         let (mut mu, mut sigma2) = (0.0, 0.0);
-        for p in &self.cascades {
-            let [m, m2] = p.footprint_mean(x, z, footprint_m);
+        for c in 0..self.cascades.len() {
+            let (m, m2) = self.cascade_moments(c, x, z, footprint_m);
             mu += m;
             // Footprint means are convex combinations: m2 ≥ m² (Jensen) but for the f32 storage.
             debug_assert!(m2 - m * m >= -1e-5 * (m2.abs() + m * m) - 1e-12, "m2 = {m2}, m = {m}");
@@ -177,8 +197,8 @@ const SAME_INSTANT_S: f64 = 1e-6;
 pub struct FftInstantJacobian {
     time_s: f64,
     drift_m_s: DVec2,
-    /// Per cascade kept: resolution, spacing (m) and the `kᵢ` grid.
-    cascades: Vec<(usize, f64, Vec<f32>)>,
+    /// Per cascade kept: resolution, spacing (m), the `kᵢ` grid and the cascade's blend.
+    cascades: Vec<(usize, f64, Vec<f32>, Option<TileBlend>)>,
 }
 
 impl FftInstantJacobian {
@@ -202,7 +222,7 @@ impl FftInstantJacobian {
             .iter()
             .map(|f| {
                 let k = (0..f.dxx.len()).map(|i| (f.jacobian(i, chop) - 1.0 + share) as f32).collect();
-                (f.resolution, f.tile_size / f.resolution as f64, k)
+                (f.resolution, f.tile_size / f.resolution as f64, k, f.blend)
             })
             .collect();
         Self { time_s, drift_m_s, cascades }
@@ -233,8 +253,10 @@ pub struct FftJacobianHistory {
     /// The instants, newest first.
     instants: Vec<f64>,
     drift_m_s: DVec2,
-    /// Per cascade, the pyramid of `kᵢ` at every instant.
-    cascades: Vec<FftStackPyramid>,
+    /// Per cascade, the pyramid of `kᵢ` at every instant and the cascade's blend.
+    cascades: Vec<(FftStackPyramid, Option<TileBlend>)>,
+    /// `1/n`, `n` the cascades kept.
+    share: f64,
 }
 
 impl FftJacobianHistory {
@@ -249,7 +271,7 @@ impl FftJacobianHistory {
     /// If the instants differ in drift or cascades (a programming error).
     pub fn new<I: Borrow<FftInstantJacobian> + Sync>(instants: &[I]) -> Self {
         let Some(first) = instants.first().map(Borrow::borrow) else {
-            return Self { instants: Vec::new(), drift_m_s: DVec2::ZERO, cascades: Vec::new() };
+            return Self { instants: Vec::new(), drift_m_s: DVec2::ZERO, cascades: Vec::new(), share: 1.0 };
         };
         let count = instants.len();
         for i in instants.iter().map(Borrow::borrow) {
@@ -266,14 +288,42 @@ impl FftJacobianHistory {
         let cascades = (0..first.cascades.len())
             .into_par_iter()
             .map(|c| {
-                let (n, spacing, _) = first.cascades[c];
+                let (n, spacing, _, blend) = first.cascades[c];
                 // Written in order, read from `count` streams.
                 let grids: Vec<&[f32]> = instants.iter().map(|i| i.borrow().cascades[c].2.as_slice()).collect();
                 let base = (0..n * n).flat_map(|texel| grids.iter().map(move |g| g[texel])).collect();
-                FftStackPyramid::new(n, spacing, count, base)
+                (FftStackPyramid::new(n, spacing, count, base), blend)
             })
             .collect();
-        Self { instants: instants.iter().map(|i| i.borrow().time_s).collect(), drift_m_s: first.drift_m_s, cascades }
+        Self {
+            instants: instants.iter().map(|i| i.borrow().time_s).collect(),
+            drift_m_s: first.drift_m_s,
+            cascades,
+            share: 1.0 / first.cascades.len().max(1) as f64,
+        }
+    }
+
+    /// `kᵢ` of a blended cascade at instant `instant` over a footprint: its corners at the rest
+    /// position `u`, each read at grid position `y + o` (the instant's grid holds rest position
+    /// `p + v tᵢ` at `p`, and `y = u − v tᵢ`); `1/n + Σ ŵ (⟨k⟩_c − 1/n)`.
+    fn blended_mean(
+        &self,
+        stack: &FftStackPyramid,
+        blend: &TileBlend,
+        u: DVec2,
+        y: DVec2,
+        footprint_m: f64,
+        instant: usize,
+    ) -> f64 {
+        let mut m = self.share;
+        for c in blend.corners(u.x, u.y) {
+            if c.weight > 0.0 {
+                let mut v = [0.0];
+                stack.add_footprint_mean(y.x + c.offset[0], y.y + c.offset[1], footprint_m, instant, &mut v);
+                m += c.weight * (v[0] - self.share);
+            }
+        }
+        m
     }
 
     /// Number of instants held.
@@ -304,8 +354,18 @@ impl FftJacobianHistory {
             // Every instant at the same grid position.
             let y = u0 - drift_m_s * t0;
             let held = (self.instants.len() - i0).min(out.len());
-            for c in &self.cascades {
-                c.add_footprint_mean(y.x, y.y, footprint_m, i0, &mut out[..held]);
+            for (stack, blend) in &self.cascades {
+                match blend {
+                    None => stack.add_footprint_mean(y.x, y.y, footprint_m, i0, &mut out[..held]),
+                    // The drift moves each instant's rest position `y + v tⱼ` across the blend's
+                    // lattice: instant by instant.
+                    Some(b) => {
+                        for (j, o) in out[..held].iter_mut().enumerate() {
+                            let u = y + self.drift_m_s * self.instants[i0 + j];
+                            *o += self.blended_mean(stack, b, u, y, footprint_m, i0 + j);
+                        }
+                    }
+                }
             }
             out[held..].fill(1.0);
             return;
@@ -317,8 +377,11 @@ impl FftJacobianHistory {
                 Some(i) => {
                     let y = uj - self.drift_m_s * self.instants[i];
                     let mut m = [0.0];
-                    for c in &self.cascades {
-                        c.add_footprint_mean(y.x, y.y, footprint_m, i, &mut m);
+                    for (stack, blend) in &self.cascades {
+                        match blend {
+                            None => stack.add_footprint_mean(y.x, y.y, footprint_m, i, &mut m),
+                            Some(b) => m[0] += self.blended_mean(stack, b, uj, y, footprint_m, i),
+                        }
                     }
                     m[0]
                 }

@@ -14,13 +14,14 @@ use proptest::prelude::*;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-/// A choppy 14 m/s sea (some folds), three 64² cascades.
+/// A choppy 14 m/s sea (some folds), three 64² cascades, tiled: each cascade its periodic tile,
+/// whose pyramids these tests check (the blend of an untiled sea: `blended_*` below).
 fn frame() -> &'static (FftFrame, FftJacobianStatistics) {
     static FRAME: OnceLock<(FftFrame, FftJacobianStatistics)> = OnceLock::new();
     FRAME.get_or_init(|| {
         let elf = Elfouhaily::from_fetch(14.0, 1e5).unwrap();
         let d = elf.spreading(Directions::Downwind);
-        let o = FftOptions { resolution: 64, choppiness: 2.0, ..FftOptions::for_spectrum(&elf, 3) };
+        let o = FftOptions { resolution: 64, choppiness: 2.0, tiled: true, ..FftOptions::for_spectrum(&elf, 3) };
         let frame = FftOcean::new(&elf, &d, &o).unwrap().at_time(3.0);
         let stats = FftJacobianStatistics::new(&frame);
         (frame, stats)
@@ -201,8 +202,20 @@ proptest! {
 /// levels in f32 (about one rounding of the value per level), over 3 cascades: ≈ 4×10⁻⁶; 10⁻⁵.
 const HISTORY_F32: f64 = 1e-5;
 
-/// The sea of the history tests: the 14 m/s sea of [`frame`], three 64² cascades, choppiness 2.
+/// The sea of the history tests: the 14 m/s sea of [`frame`], three 64² cascades, choppiness 2,
+/// tiled (the blended sea: [`blended_ocean`]).
 fn history_ocean() -> &'static FftOcean {
+    static OCEAN: OnceLock<FftOcean> = OnceLock::new();
+    OCEAN.get_or_init(|| {
+        let elf = Elfouhaily::from_fetch(14.0, 1e5).unwrap();
+        let d = elf.spreading(Directions::Downwind);
+        let o = FftOptions { resolution: 64, choppiness: 2.0, tiled: true, ..FftOptions::for_spectrum(&elf, 3) };
+        FftOcean::new(&elf, &d, &o).unwrap()
+    })
+}
+
+/// The same sea untiled: each cascade read through its blend (brine-waves `TileBlend`).
+fn blended_ocean() -> &'static FftOcean {
     static OCEAN: OnceLock<FftOcean> = OnceLock::new();
     OCEAN.get_or_init(|| {
         let elf = Elfouhaily::from_fetch(14.0, 1e5).unwrap();
@@ -210,6 +223,72 @@ fn history_ocean() -> &'static FftOcean {
         let o = FftOptions { resolution: 64, choppiness: 2.0, ..FftOptions::for_spectrum(&elf, 3) };
         FftOcean::new(&elf, &d, &o).unwrap()
     })
+}
+
+/// A blended sea's statistics read its blend: with no footprint `μ` is the blended Jacobian the
+/// frame gives at the point; beyond the largest tile each cascade's variance is its tile's
+/// (`Σ ŵ² = 1`), and `μ − 1` is `Σ_c Σ ŵ (⟨J_c⟩ − 1)`, between once and twice the tiles' `Σ (⟨J_c⟩ − 1)`
+/// (`1 ≤ Σ ŵ ≤ 2`, and every cascade's mean has the same sign here).
+#[test]
+fn blended_statistics_read_the_blend() {
+    let frame = blended_ocean().at_time(3.0);
+    assert!(frame.cascades().iter().all(|c| c.blended()));
+    let stats = FftJacobianStatistics::new(&frame);
+    for i in 0..50 {
+        let (x, z) = (i as f64 * 7.31 - 160.0, i as f64 * -3.9 + 55.0);
+        let m = stats.moments_at(x, z, 0.0);
+        assert!((m.mu - frame.jacobian(x, z)).abs() < SUM_ROUNDING, "({x}, {z}): {} vs {}", m.mu, frame.jacobian(x, z));
+    }
+    let (mut offset, mut var) = (0.0, 0.0);
+    for c in frame.cascades() {
+        let j: Vec<f64> = c.jacobians().iter().map(|&v| f64::from(v)).collect();
+        let mean = j.iter().sum::<f64>() / j.len() as f64;
+        offset += mean - 1.0;
+        var += j.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / j.len() as f64;
+    }
+    for (x, z) in [(17.0, -3.0), (-901.0, 433.0), (5.5, 5.5)] {
+        let big = stats.moments_at(x, z, 10.0 * stats.largest_tile());
+        assert!((big.sigma2 - var).abs() < SUM_ROUNDING * 10.0, "{big:?} vs variance {var}");
+        let got = big.mu - 1.0;
+        let (lo, hi) = if offset >= 0.0 { (offset, 2.0 * offset) } else { (2.0 * offset, offset) };
+        assert!(got >= lo - SUM_ROUNDING && got <= hi + SUM_ROUNDING, "μ − 1 = {got}, tiles' {offset}");
+    }
+}
+
+/// A blended sea's history, with the foam's drift, reads at each instant the blend of that
+/// instant's rest position `uⱼ = u₀ − v jΔt`: `μⱼ = 1 + Σ_c Σ_k ŵ_k(uⱼ)(⟨k_c⟩(y + o_k) − 1/n)`,
+/// `y = uⱼ − v tⱼ` on the instant's grid moved by `−v tⱼ`, read here corner by corner from the
+/// moved grids' own (unblended) statistics, but for the history's f32 storage.
+#[test]
+fn the_blended_history_reads_each_instant_where_the_foam_was() {
+    let ocean = blended_ocean();
+    let (t0, step, breaking) = (7.25, 0.25, 0.8);
+    let drift = DVec2::new(0.41, -0.17);
+    let instants: Vec<FftInstantJacobian> =
+        (0..6).map(|j| FftInstantJacobian::new(ocean, t0 - f64::from(j) * step, breaking, drift)).collect();
+    let history = FftJacobianHistory::new(&instants);
+    for (x, z, footprint) in [(0.3, 1.7, 0.0), (-41.2, 77.7, 0.7), (250.0, -13.3, 6.0)] {
+        let u0 = DVec2::new(x, z);
+        let mut out = [0.0; 6];
+        history.mean_history(u0, t0, step, drift, footprint, &mut out);
+        for (j, &got) in out.iter().enumerate() {
+            let tj = t0 - j as f64 * step;
+            let uj = u0 - drift * (j as f64 * step);
+            let mut moved = ocean.rest_jacobian_fields_shifted(tj, breaking, (drift * tj).to_array());
+            let blends: Vec<_> = moved.iter_mut().map(|f| f.blend.take().expect("an untiled sea blends")).collect();
+            let tiles = FftJacobianStatistics::from_rest_jacobians(&moved, 2.0);
+            let share = 1.0 / moved.len() as f64;
+            let y = uj - drift * tj;
+            let mut mu = 1.0;
+            for (c, b) in blends.iter().enumerate() {
+                for k in b.corners(uj.x, uj.y) {
+                    let (m, _) = tiles.cascade_moments(c, y.x + k.offset[0], y.y + k.offset[1], footprint);
+                    mu += k.weight * (m - share);
+                }
+            }
+            assert!((got - mu).abs() < HISTORY_F32, "({x}, {z}) instant {j}: {got} vs {mu}");
+        }
+    }
 }
 
 /// With the foam's drift, instant `j` is read where the foam now at `u₀` was, `uⱼ = u₀ − v jΔt`:

@@ -77,15 +77,15 @@ fn axis_bounds() -> AxisBounds {
 /// One corner of the blend at a point: the offset its read is taken at and its weight, with
 /// the weight's gradient and Hessian (per metre).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct BlendCorner {
+pub struct BlendCorner {
     /// Offset `o` (m) added to the point before the periodic read.
-    pub(crate) offset: [f64; 2],
+    pub offset: [f64; 2],
     /// `ŵ`.
-    pub(crate) weight: f64,
+    pub weight: f64,
     /// `(∂ŵ/∂x, ∂ŵ/∂z)` (m⁻¹).
-    pub(crate) gradient: [f64; 2],
+    pub gradient: [f64; 2],
     /// `(∂²ŵ/∂x², ∂²ŵ/∂x∂z, ∂²ŵ/∂z²)` (m⁻²).
-    pub(crate) hessian: [f64; 3],
+    pub hessian: [f64; 3],
 }
 
 /// The tile-and-blend of one periodic cascade (Heitz & Neyret 2018, with separable,
@@ -101,7 +101,7 @@ pub(crate) struct BlendCorner {
 /// - `|∇H·d| ≤ B² λ(d) + (B G₁/S)(|dₓ| + |d_z|) M`;
 /// - `|d²H/dt²| ≤ B² κ(d) + 2 (B G₁/S)(|dₓ| + |d_z|) λ(d) + (B G₂ (dₓ² + d_z²) + 2 G₁² |dₓd_z|) M/S²`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct TileBlend {
+pub struct TileBlend {
     inv_spacing: f64,
     tile: f64,
     key: u64,
@@ -139,8 +139,14 @@ impl TileBlend {
 
     /// The four corners of the cell of `(x, z)`, weights 0 included (a read may be skipped
     /// where the weight is 0).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite.
+    ///
+    /// # Returns
+    /// The corners `(o_k, ŵ_k, ∇ŵ_k, ∇²ŵ_k)`, `Σ ŵ_k² = 1`.
     #[inline]
-    pub(crate) fn corners(&self, x: f64, z: f64) -> [BlendCorner; 4] {
+    pub fn corners(&self, x: f64, z: f64) -> [BlendCorner; 4] {
         let (u, v) = (x * self.inv_spacing, z * self.inv_spacing);
         let (fu, fv) = (u.floor(), v.floor());
         let (i, j) = (fu as i64, fv as i64);

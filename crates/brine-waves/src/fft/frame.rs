@@ -270,9 +270,14 @@ impl FftCascade {
         Self::lerp2(&c, f64::from(j[c.i00]), f64::from(j[c.i10]), f64::from(j[c.i01]), f64::from(j[c.i11]))
     }
 
-    /// The tile-and-blend of the cascade, if any.
+    /// Whether the cascade is read through a tile-and-blend (an untiled sea's cascades are).
     pub fn blended(&self) -> bool {
         self.blend.is_some()
+    }
+
+    /// The cascade's tile-and-blend, if any.
+    pub fn blend(&self) -> Option<&TileBlend> {
+        self.blend.as_ref()
     }
 
     /// `max(|min c|, |max c|)`: the bound of the tile's own spline.
@@ -467,7 +472,7 @@ impl FftFrame {
                     variance: spec.variance,
                     slope_covariance: DVec3::new(cov[0], cov[1], cov[2]),
                     uncovered: grid.uncovered,
-                    blend: (!ocean.options().tiled).then(|| TileBlend::new(f.tile_size, ocean.options().seed, c)),
+                    blend: ocean.tile_blend(c),
                 }
             })
             .collect();

@@ -68,7 +68,8 @@ pub struct FftOptions {
     pub wind_direction: f64,
     /// The cascades are meant to repeat together over the first tile (a tileable sea, as
     /// `brine bake` makes with [`crate::TileLattice::commensurate_tiles`]): commensurate tile
-    /// ratios are then allowed (default `false`).
+    /// ratios are then allowed, and each cascade is its periodic tile (default `false`: each
+    /// cascade is read through a [`crate::TileBlend`], so that the sea does not repeat).
     pub tiled: bool,
 }
 

@@ -3,6 +3,7 @@
 
 use glam::{DVec2, DVec3};
 
+use crate::fft::blend::TileBlend;
 use crate::{EllipticalFootprint, FftFrame, FftPyramid};
 
 /// The slopes of an FFT sea over a pixel footprint.
@@ -34,7 +35,8 @@ pub struct FilteredSlopes {
 /// CGF 29(2) (geometry-to-BRDF transition); docs/equations.md §11.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FftSlopeFilter {
-    cascades: Vec<FftPyramid<5>>,
+    /// Per cascade, the pyramid of `(ζₓ, ζ_z, ζₓ², ζₓζ_z, ζ_z², h)` and the cascade's blend.
+    cascades: Vec<(FftPyramid<6>, Option<TileBlend>)>,
 }
 
 impl FftSlopeFilter {
@@ -47,12 +49,13 @@ impl FftSlopeFilter {
                 let base = c
                     .gradients()
                     .iter()
-                    .map(|g| {
+                    .zip(c.heights())
+                    .map(|(g, &h)| {
                         let (x, z) = (f64::from(g[0]), f64::from(g[1]));
-                        [x, z, x * x, x * z, z * z]
+                        [x, z, x * x, x * z, z * z, f64::from(h)]
                     })
                     .collect();
-                FftPyramid::new(c.resolution(), c.spacing(), base)
+                (FftPyramid::new(c.resolution(), c.spacing(), base), c.blend().copied())
             })
             .collect();
         Self { cascades }
@@ -69,7 +72,7 @@ impl FftSlopeFilter {
     /// [`FilteredSlopes`].
     pub fn filtered(&self, x: f64, z: f64, footprint_m: f64) -> FilteredSlopes {
         debug_assert!(footprint_m >= 0.0);
-        Self::from_moments(self.cascades.iter().map(|p| p.footprint_mean(x, z, footprint_m)))
+        self.blended(x, z, |p, x, z| p.footprint_mean(x, z, footprint_m))
     }
 
     /// Mean gradient and slope covariance over an elliptical Gaussian footprint (a pixel seen at
@@ -85,23 +88,47 @@ impl FftSlopeFilter {
     /// # Returns
     /// [`FilteredSlopes`].
     pub fn filtered_elliptical(&self, x: f64, z: f64, footprint: &EllipticalFootprint) -> FilteredSlopes {
-        Self::from_moments(self.cascades.iter().map(|p| p.ellipse_mean(x, z, footprint)))
+        self.blended(x, z, |p, x, z| p.ellipse_mean(x, z, footprint))
     }
 
-    /// The gradient and covariance of the cascades' footprint moments `(ζₓ, ζ_z, ζₓ², ζₓζ_z, ζ_z²)`.
-    fn from_moments(moments: impl Iterator<Item = [f64; 5]>) -> FilteredSlopes {
-        let (mut g, mut cov) = (DVec2::ZERO, DVec3::ZERO);
-        for m in moments {
-            g += DVec2::new(m[0], m[1]);
-            // Footprint means are convex combinations, so the covariance is a covariance (Jensen,
-            // Cauchy–Schwarz) but for the f32 storage, which alone the clamps absorb.
-            let tol = 1e-5 * (m[2].abs() + m[4].abs() + m[0] * m[0] + m[1] * m[1]) + 1e-12;
-            debug_assert!(m[2] - m[0] * m[0] >= -tol && m[4] - m[1] * m[1] >= -tol, "footprint moments {m:?}");
-            let (xx, zz) = ((m[2] - m[0] * m[0]).max(0.0), (m[4] - m[1] * m[1]).max(0.0));
-            debug_assert!((m[3] - m[0] * m[1]).abs() <= (xx * zz).sqrt() + tol, "footprint moments {m:?}");
-            let xz = (m[3] - m[0] * m[1]).clamp(-(xx * zz).sqrt(), (xx * zz).sqrt());
-            cov += DVec3::new(xx, xz, zz);
+    /// Sums the cascades' footprint moments read by `read`: a blended cascade (see
+    /// `FftCascade`) reads its corners at their offsets, and its slopes `Σ ŵ_k ζ_k + Σ h_k ∇ŵ_k`
+    /// have the mean `Σ (ŵ_k ⟨ζ⟩_k + ⟨h⟩_k ∇ŵ_k)` and, the corners' reads being independent, the
+    /// covariance `Σ ŵ_k² cov_k` (the weights taken at the footprint's centre).
+    fn blended(&self, x: f64, z: f64, read: impl Fn(&FftPyramid<6>, f64, f64) -> [f64; 6]) -> FilteredSlopes {
+        let mut out = FilteredSlopes { gradient: DVec2::ZERO, covariance: DVec3::ZERO };
+        for (p, blend) in &self.cascades {
+            match blend {
+                None => {
+                    let (g, cov) = Self::gradient_and_covariance(&read(p, x, z));
+                    out.gradient += g;
+                    out.covariance += cov;
+                }
+                Some(b) => {
+                    for c in b.corners(x, z) {
+                        if c.weight > 0.0 {
+                            let m = read(p, x + c.offset[0], z + c.offset[1]);
+                            let (g, cov) = Self::gradient_and_covariance(&m);
+                            out.gradient += c.weight * g + m[5] * DVec2::new(c.gradient[0], c.gradient[1]);
+                            out.covariance += c.weight * c.weight * cov;
+                        }
+                    }
+                }
+            }
         }
-        FilteredSlopes { gradient: g, covariance: cov }
+        out
+    }
+
+    /// The mean gradient and the covariance of one read's footprint moments
+    /// `(ζₓ, ζ_z, ζₓ², ζₓζ_z, ζ_z², h)`.
+    fn gradient_and_covariance(m: &[f64; 6]) -> (DVec2, DVec3) {
+        // Footprint means are convex combinations, so the covariance is a covariance (Jensen,
+        // Cauchy–Schwarz) but for the f32 storage, which alone the clamps absorb.
+        let tol = 1e-5 * (m[2].abs() + m[4].abs() + m[0] * m[0] + m[1] * m[1]) + 1e-12;
+        debug_assert!(m[2] - m[0] * m[0] >= -tol && m[4] - m[1] * m[1] >= -tol, "footprint moments {m:?}");
+        let (xx, zz) = ((m[2] - m[0] * m[0]).max(0.0), (m[4] - m[1] * m[1]).max(0.0));
+        debug_assert!((m[3] - m[0] * m[1]).abs() <= (xx * zz).sqrt() + tol, "footprint moments {m:?}");
+        let xz = (m[3] - m[0] * m[1]).clamp(-(xx * zz).sqrt(), (xx * zz).sqrt());
+        (DVec2::new(m[0], m[1]), DVec3::new(xx, xz, zz))
     }
 }

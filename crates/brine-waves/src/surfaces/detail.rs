@@ -204,7 +204,9 @@ impl DetailWaves {
             loop_period: options.loop_period,
             seed: options.seed ^ DETAIL_SEED_MIX,
             wind_direction: options.wind_direction,
-            tiled: false,
+            // Periodic tiles, read without a blend (`TileBlend`): the detail's repetition is
+            // not yet removed.
+            tiled: true,
         };
         let ocean = FftOcean::new(&band, spreading, &fft)?;
         Ok(Self { ocean, options: *options })

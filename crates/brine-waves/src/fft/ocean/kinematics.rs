@@ -83,6 +83,8 @@ pub struct ParticleState {
 pub struct FftKinematics {
     pub(super) choppiness: f64,
     pub(super) cascades: Vec<CascadeKinematics>,
+    /// Per cascade, its tile-and-blend (as the frame's).
+    pub(super) blends: Vec<Option<TileBlend>>,
 }
 
 /// Newton steps of the rest-position search ([`FftKinematics::rest_position`]): each squares the
@@ -103,6 +105,33 @@ impl FftKinematics {
     /// # Returns
     /// The [`ParticleState`] (bilinear in the grid's cells).
     pub fn at_rest(&self, c: usize, u: DVec2) -> ParticleState {
+        match &self.blends[c] {
+            None => self.tile_at_rest(c, u),
+            // The corners' states blended as the height is (the deformation's `D ∇ŵ` terms, of
+            // relative size `|D|/S`, left out).
+            Some(b) => {
+                let mut out = ParticleState {
+                    displacement: DVec2::ZERO,
+                    deformation: DVec3::new(1.0, 0.0, 1.0),
+                    velocity: DVec3::ZERO,
+                    vertical_acceleration: 0.0,
+                };
+                for k in b.corners(u.x, u.y) {
+                    if k.weight > 0.0 {
+                        let p = self.tile_at_rest(c, u + DVec2::new(k.offset[0], k.offset[1]));
+                        out.displacement += k.weight * p.displacement;
+                        out.deformation += k.weight * (p.deformation - DVec3::new(1.0, 0.0, 1.0));
+                        out.velocity += k.weight * p.velocity;
+                        out.vertical_acceleration += k.weight * p.vertical_acceleration;
+                    }
+                }
+                out
+            }
+        }
+    }
+
+    /// [`Self::at_rest`] on the tile itself (no blend).
+    fn tile_at_rest(&self, c: usize, u: DVec2) -> ParticleState {
         let k = &self.cascades[c];
         let l = self.choppiness;
         let (i00, i10, i01, i11, s, t) = bilinear_cell(k.n, k.tile, u);
@@ -200,6 +229,7 @@ pub(super) fn synthesise_jacobian(
     packs.par_iter_mut().for_each(|p| inverse_fft_2d(p, n, c.fft.as_ref()));
     FftRestJacobian {
         resolution: n,
+        blend: None,
         tile_size: c.tile,
         dxx: packs[0].iter().map(|v| v.re).collect(),
         dzz: packs[0].iter().map(|v| v.im).collect(),
@@ -213,6 +243,9 @@ pub(super) fn synthesise_jacobian(
 pub struct FftRestJacobian {
     /// Grid resolution `N`.
     pub resolution: usize,
+    /// The cascade's tile-and-blend ([`FftOcean::tile_blend`]): read the grid at its corners'
+    /// offsets (rest positions), `None` for a tiled sea.
+    pub blend: Option<TileBlend>,
     /// Tile size `L` (m).
     pub tile_size: f64,
     /// `∂Dₓ/∂x` (dimensionless).

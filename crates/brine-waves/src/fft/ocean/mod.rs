@@ -12,6 +12,7 @@ use rayon::prelude::*;
 use rustfft::num_complex::Complex64;
 use rustfft::{Fft, FftPlanner};
 
+use crate::fft::blend::TileBlend;
 use crate::fft::options::FFT_CASCADE_CUT_INDEX;
 use crate::fft::spectrum::{Band, cell_energy, directional_spectrum};
 use crate::{Dispersion, FftFrame, FftOptions, Spectrum, Spreading, WaveError};
@@ -480,7 +481,10 @@ impl FftOcean {
             .par_iter()
             .enumerate()
             .filter(|(i, _)| self.band(*i).0 < k_max)
-            .map(|(_, c)| synthesise_jacobian(c, tau, footprint_m, k_max, shift_m))
+            .map(|(i, c)| FftRestJacobian {
+                blend: self.tile_blend(i),
+                ..synthesise_jacobian(c, tau, footprint_m, k_max, shift_m)
+            })
             .collect()
     }
 
@@ -526,7 +530,18 @@ impl FftOcean {
         debug_assert!(t.is_finite(), "time {t} must be finite");
         let tau = self.phase_time(t);
         let cascades = self.cascades.par_iter().map(|c| synthesise_kinematics(c, tau)).collect();
-        FftKinematics { choppiness: self.options.choppiness, cascades }
+        let blends = (0..self.cascades.len()).map(|c| self.tile_blend(c)).collect();
+        FftKinematics { choppiness: self.options.choppiness, cascades, blends }
+    }
+
+    /// The tile-and-blend of cascade `c` (`None` for a tiled sea, [`FftOptions::tiled`]): the
+    /// same for the traced surface, the shading, the white water and the kinematics, keyed by
+    /// the seed and the cascade.
+    ///
+    /// # Panics
+    /// If `c ≥ cascade_count()`.
+    pub fn tile_blend(&self, c: usize) -> Option<TileBlend> {
+        (!self.options.tiled).then(|| TileBlend::new(self.options.tile_sizes[c], self.options.seed, c))
     }
 
     /// The sea at time `t`, ready to trace and shade: each cascade's displaced surface resampled
