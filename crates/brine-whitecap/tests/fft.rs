@@ -46,6 +46,18 @@ const QUANTILE_TOL: f64 = 1e-6;
 /// `√12`, the box width per Gaussian standard deviation.
 const BOX: f64 = 3.464_101_615_137_754_6;
 
+/// `Σ_c (⟨J_c⟩ − 1)` and `Σ_c Var(J_c)` over the cascades' Jacobian grids.
+fn grid_offset_and_variance(frame: &FftFrame) -> (f64, f64) {
+    let (mut offset, mut var) = (0.0, 0.0);
+    for c in frame.cascades() {
+        let j: Vec<f64> = c.jacobians().iter().map(|&v| f64::from(v)).collect();
+        let mean = j.iter().sum::<f64>() / j.len() as f64;
+        offset += mean - 1.0;
+        var += j.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / j.len() as f64;
+    }
+    (offset, var)
+}
+
 #[test]
 fn pyramid_levels_are_block_means_of_k_and_k_squared() {
     let (frame, stats) = frame();
@@ -90,13 +102,8 @@ fn footprint_limits_are_the_point_jacobian_and_the_whole_sea() {
     let m = stats.moments_at(0.0, 0.0, 0.0);
     assert!((m.mu - frame.jacobian(0.0, 0.0)).abs() < SUM_ROUNDING && m.sigma2.abs() < ZERO_VARIANCE, "{m:?}");
     // Beyond the largest tile: the grid means and variances of every cascade.
-    let (mut mu, mut var) = (1.0, 0.0);
-    for c in frame.cascades() {
-        let j: Vec<f64> = c.jacobians().iter().map(|&v| f64::from(v)).collect();
-        let mean = j.iter().sum::<f64>() / j.len() as f64;
-        mu += mean - 1.0;
-        var += j.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / j.len() as f64;
-    }
+    let (offset, var) = grid_offset_and_variance(frame);
+    let mu = 1.0 + offset;
     let big = stats.moments_at(17.0, -3.0, 10.0 * stats.largest_tile());
     assert!((big.mu - mu).abs() < SUM_ROUNDING && (big.sigma2 - var).abs() < SUM_ROUNDING, "{big:?} vs ({mu}, {var})");
     let sea = stats.sea_moments();
@@ -239,13 +246,7 @@ fn blended_statistics_read_the_blend() {
         let m = stats.moments_at(x, z, 0.0);
         assert!((m.mu - frame.jacobian(x, z)).abs() < SUM_ROUNDING, "({x}, {z}): {} vs {}", m.mu, frame.jacobian(x, z));
     }
-    let (mut offset, mut var) = (0.0, 0.0);
-    for c in frame.cascades() {
-        let j: Vec<f64> = c.jacobians().iter().map(|&v| f64::from(v)).collect();
-        let mean = j.iter().sum::<f64>() / j.len() as f64;
-        offset += mean - 1.0;
-        var += j.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / j.len() as f64;
-    }
+    let (offset, var) = grid_offset_and_variance(&frame);
     for (x, z) in [(17.0, -3.0), (-901.0, 433.0), (5.5, 5.5)] {
         let big = stats.moments_at(x, z, 10.0 * stats.largest_tile());
         assert!((big.sigma2 - var).abs() < SUM_ROUNDING * 10.0, "{big:?} vs variance {var}");
@@ -255,18 +256,22 @@ fn blended_statistics_read_the_blend() {
     }
 }
 
-/// A blended sea's history, with the foam's drift, reads at each instant the blend of that
-/// instant's rest position `uⱼ = u₀ − v jΔt`: `μⱼ = 1 + Σ_c Σ_k ŵ_k(uⱼ)(⟨k_c⟩(y + o_k) − 1/n)`,
-/// `y = uⱼ − v tⱼ` on the instant's grid moved by `−v tⱼ`, read here corner by corner from the
-/// moved grids' own (unblended) statistics, but for the history's f32 storage.
-#[test]
-fn the_blended_history_reads_each_instant_where_the_foam_was() {
-    let ocean = blended_ocean();
-    let (t0, step, breaking) = (7.25, 0.25, 0.8);
-    let drift = DVec2::new(0.41, -0.17);
+/// The drift history of the tests below: six instants `Δt = 0.25 s` apart from `t₀ = 7.25 s`,
+/// breaking footprint 0.8 m, drift `(0.41, −0.17)` m/s.
+const DRIFT_CASE: (f64, f64, f64, DVec2) = (7.25, 0.25, 0.8, DVec2::new(0.41, -0.17));
+
+/// Reads `ocean`'s drift history ([`DRIFT_CASE`]) at three points and footprints and checks each
+/// instant `j` against `expected(j, tⱼ, uⱼ, y = uⱼ − v tⱼ, footprint)`. Returns the history
+/// and, per point, its means.
+fn check_drift_history(
+    ocean: &FftOcean,
+    expected: impl Fn(f64, DVec2, DVec2, f64) -> f64,
+) -> (FftJacobianHistory, Vec<(DVec2, f64, [f64; 6])>) {
+    let (t0, step, breaking, drift) = DRIFT_CASE;
     let instants: Vec<FftInstantJacobian> =
         (0..6).map(|j| FftInstantJacobian::new(ocean, t0 - f64::from(j) * step, breaking, drift)).collect();
     let history = FftJacobianHistory::new(&instants);
+    let mut read = Vec::new();
     for (x, z, footprint) in [(0.3, 1.7, 0.0), (-41.2, 77.7, 0.7), (250.0, -13.3, 6.0)] {
         let u0 = DVec2::new(x, z);
         let mut out = [0.0; 6];
@@ -274,21 +279,36 @@ fn the_blended_history_reads_each_instant_where_the_foam_was() {
         for (j, &got) in out.iter().enumerate() {
             let tj = t0 - j as f64 * step;
             let uj = u0 - drift * (j as f64 * step);
-            let mut moved = ocean.rest_jacobian_fields_shifted(tj, breaking, (drift * tj).to_array());
-            let blends: Vec<_> = moved.iter_mut().map(|f| f.blend.take().expect("an untiled sea blends")).collect();
-            let tiles = FftJacobianStatistics::from_rest_jacobians(&moved, 2.0);
-            let share = 1.0 / moved.len() as f64;
-            let y = uj - drift * tj;
-            let mut mu = 1.0;
-            for (c, b) in blends.iter().enumerate() {
-                for k in b.corners(uj.x, uj.y) {
-                    let (m, _) = tiles.cascade_moments(c, y.x + k.offset[0], y.y + k.offset[1], footprint);
-                    mu += k.weight * (m - share);
-                }
-            }
+            let mu = expected(tj, uj, uj - drift * tj, footprint);
             assert!((got - mu).abs() < HISTORY_F32, "({x}, {z}) instant {j}: {got} vs {mu}");
         }
+        read.push((u0, footprint, out));
     }
+    (history, read)
+}
+
+/// A blended sea's history, with the foam's drift, reads at each instant the blend of that
+/// instant's rest position `uⱼ = u₀ − v jΔt`: `μⱼ = 1 + Σ_c Σ_k ŵ_k(uⱼ)(⟨k_c⟩(y + o_k) − 1/n)`,
+/// `y = uⱼ − v tⱼ` on the instant's grid moved by `−v tⱼ`, read here corner by corner from the
+/// moved grids' own (unblended) statistics, but for the history's f32 storage.
+#[test]
+fn the_blended_history_reads_each_instant_where_the_foam_was() {
+    let ocean = blended_ocean();
+    let (_, _, breaking, drift) = DRIFT_CASE;
+    check_drift_history(ocean, |tj, uj, y, footprint| {
+        let mut moved = ocean.rest_jacobian_fields_shifted(tj, breaking, (drift * tj).to_array());
+        let blends: Vec<_> = moved.iter_mut().map(|f| f.blend.take().expect("an untiled sea blends")).collect();
+        let tiles = FftJacobianStatistics::from_rest_jacobians(&moved, 2.0);
+        let share = 1.0 / moved.len() as f64;
+        let mut mu = 1.0;
+        for (c, b) in blends.iter().enumerate() {
+            for k in b.corners(uj.x, uj.y) {
+                let (m, _) = tiles.cascade_moments(c, y.x + k.offset[0], y.y + k.offset[1], footprint);
+                mu += k.weight * (m - share);
+            }
+        }
+        mu
+    });
 }
 
 /// With the foam's drift, instant `j` is read where the foam now at `u₀` was, `uⱼ = u₀ − v jΔt`:
@@ -299,23 +319,12 @@ fn the_blended_history_reads_each_instant_where_the_foam_was() {
 #[test]
 fn the_history_follows_the_drift() {
     let ocean = history_ocean();
-    let (t0, step, breaking) = (7.25, 0.25, 0.8);
-    let drift = DVec2::new(0.41, -0.17);
-    let instants: Vec<FftInstantJacobian> =
-        (0..6).map(|j| FftInstantJacobian::new(ocean, t0 - f64::from(j) * step, breaking, drift)).collect();
-    let history = FftJacobianHistory::new(&instants);
-    for (x, z, footprint) in [(0.3, 1.7, 0.0), (-41.2, 77.7, 0.7), (250.0, -13.3, 6.0)] {
-        let u0 = DVec2::new(x, z);
-        let mut out = [0.0; 6];
-        history.mean_history(u0, t0, step, drift, footprint, &mut out);
-        for (j, &got) in out.iter().enumerate() {
-            let tj = t0 - j as f64 * step;
-            let uj = u0 - drift * (j as f64 * step);
-            let moved = ocean.rest_jacobian_fields_shifted(tj, breaking, (drift * tj).to_array());
-            let y = uj - drift * tj;
-            let mu = FftJacobianStatistics::from_rest_jacobians(&moved, 2.0).moments_at(y.x, y.y, footprint).mu;
-            assert!((got - mu).abs() < HISTORY_F32, "({x}, {z}) instant {j}: {got} vs {mu}");
-        }
+    let (t0, step, breaking, drift) = DRIFT_CASE;
+    let (history, read) = check_drift_history(ocean, |tj, _, y, footprint| {
+        let moved = ocean.rest_jacobian_fields_shifted(tj, breaking, (drift * tj).to_array());
+        FftJacobianStatistics::from_rest_jacobians(&moved, 2.0).moments_at(y.x, y.y, footprint).mu
+    });
+    for (u0, footprint, out) in read {
         // Asked on another lattice (half the step) it reads instant by instant: the held
         // instants agree with the fast path, the others have no breaking.
         let mut half = [0.0; 6];
