@@ -52,6 +52,12 @@
 //! | `h(x, z, t)` | [`WaveSurface::height`] | m | surface height above mean sea level |
 //! | `D`, `J` | [`WaveSurface::displacement`], [`WaveSurface::jacobian`] | m, 1 | displacement, Jacobian |
 //! | `L` | [`WaveSurface::max_slope`] | 1 | Lipschitz constant of `h` |
+//! | `L_c` | [`FftCascade::tile_size`] | m | side of FFT cascade `c`'s periodic tile |
+//! | `S` | [`BLEND_SPACING_PER_TILE`] `× L_c` | m | spacing of a [`TileBlend`]'s lattice |
+//! | `o_k` | [`BlendCorner::offset`] | m | random offset of lattice corner `k` into the tile |
+//! | `ŵ_k` | [`BlendCorner::weight`] | 1 | variance-preserving blend weight, `Σ ŵ_k² = 1` |
+//! | `f` | [`BLEND_TRANSITION`] | 1 | share of a cell over which one corner hands over to the next |
+//! | `G₁`, `G₂` | — | 1 | suprema of `|a₀′| + |a₁′|`, `|a₀″| + |a₁″|` per unit cell coordinate |
 //!
 //! ## Validity
 //!
@@ -100,6 +106,9 @@
 //!   (directional spreading).
 //! - Cox C., Munk W. 1954, JOSA 44(11) (slope statistics); Dupuy J., Bruneton E. 2012 (Jacobian);
 //!   Bruneton E. et al. 2010, CGF 29(2) (Gerstner sums).
+//! - Heitz E., Neyret F. 2018, "High-performance by-example noise using a histogram-preserving
+//!   blending operator", Proc. ACM Comput. Graph. Interact. Tech. 1(2), Article 31 (HPG 2018)
+//!   (tile and blend, variance-preserving weights).
 
 mod error;
 mod fft;

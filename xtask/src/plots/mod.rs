@@ -91,10 +91,11 @@ fn range_of(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
 }
 
 /// Tick label with at most four significant digits: plain for moderate magnitudes, scientific
-/// otherwise (log axes otherwise print values like `9.999999999e-5`).
+/// otherwise (log axes otherwise print values like `9.999999999e-5`). Below 10⁻¹⁵ in magnitude a
+/// tick is the zero of a linear axis missed by rounding (`-5.55e-17`), and prints as `0`.
 pub fn tick(v: &f64) -> String {
     let a = v.abs();
-    if *v == 0.0 {
+    if a < 1e-15 {
         "0".into()
     } else if (1e-3..1e5).contains(&a) {
         format!("{v:.4}").trim_end_matches('0').trim_end_matches('.').to_owned()

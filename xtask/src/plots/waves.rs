@@ -1,7 +1,7 @@
 //! Plots of brine-waves: the five spectra, a fitted set over its spectrum, trochoid profiles,
 //! spreading functions, dispersion curves, Elfouhaily's curvature spectra and its mean-square
 //! slope against Cox & Munk, and the FFT ocean (its cascades' spectra, choppy profiles, the
-//! distribution of its Jacobian).
+//! distribution of its Jacobian, a cascade's correlation with itself, periodic and blended).
 
 use std::f64::consts::PI;
 use std::path::Path;
@@ -380,5 +380,46 @@ fn fft(dir: &Path) -> Result<(), String> {
         y_scale: Scale::Linear,
         series: jacobians,
     }
-    .write(&dir.join("waves-fft-jacobian.svg"))
+    .write(&dir.join("waves-fft-jacobian.svg"))?;
+    blend(&elf, &spreading, &base, dir)
+}
+
+/// The tile and blend: the along-wind slope autocorrelation of each cascade, periodic and
+/// blended, against the lag in tiles (quasi-random points over 40 tiles, 4000 per lag).
+fn blend(elf: &Elfouhaily, spreading: &dyn Spreading, base: &FftOptions, dir: &Path) -> Result<(), String> {
+    let tiled = FftOcean::new(elf, spreading, &FftOptions { tiled: true, ..base.clone() }).map_err(err)?.at_time(0.0);
+    let blended =
+        FftOcean::new(elf, spreading, &FftOptions { tiled: false, ..base.clone() }).map_err(err)?.at_time(0.0);
+    let (a1, a2) = (0.754_877_666_246_692_7, 0.569_840_290_998_053_3);
+    let correlation = |c: &brine_waves::FftCascade, lag: f64| {
+        let side = 40.0 * c.tile_size();
+        let (mut sxy, mut sxx, mut syy, mut sx, mut sy, mut n) = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+        for i in 1..=4000 {
+            let (x, z) = (side * (0.5 + a1 * f64::from(i)).fract(), side * (0.5 + a2 * f64::from(i)).fract());
+            let p = c.traced_gradient(x, z).x;
+            let q = c.traced_gradient(x + lag, z).x;
+            (sxy, sxx, syy, sx, sy, n) = (sxy + p * q, sxx + p * p, syy + q * q, sx + p, sy + q, n + 1.0);
+        }
+        let cov = sxy / n - sx * sy / n / n;
+        cov / ((sxx / n - (sx / n).powi(2)) * (syy / n - (sy / n).powi(2))).sqrt()
+    };
+    let mut series = Vec::new();
+    for (name, frame) in [("periodic", &tiled), ("blended", &blended)] {
+        for (c, cascade) in frame.cascades().iter().enumerate().take(2) {
+            let l = cascade.tile_size();
+            series.push((
+                format!("{name}, cascade {c} (L = {l:.1} m)"),
+                (0..=240).map(|i| f64::from(i) / 80.0).map(|u| (u, correlation(cascade, u * l))).collect(),
+            ));
+        }
+    }
+    LineChart {
+        title: "FFT ocean: along-wind slope correlation of a cascade with itself, periodic and blended",
+        x_label: "lag (tiles of the cascade)",
+        y_label: "correlation",
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+        series,
+    }
+    .write(&dir.join("waves-fft-blend.svg"))
 }

@@ -350,6 +350,14 @@ pub const KEYS: &[KeySpec] = &[
         "—",
         "when given, every frequency is rounded to a multiple of 2π/T: the animation loops exactly after T",
     ),
+    k(
+        "sea.fft",
+        "blend",
+        BOOL,
+        "—",
+        "`true`",
+        "read every cascade through a tile and blend, so that the sea does not repeat with its tiles; false: the periodic tiles, about 2.3× faster, repeating in aerial views",
+    ),
     // [sea.swell]
     with_note(
         k(

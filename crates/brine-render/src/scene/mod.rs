@@ -339,11 +339,15 @@ pub struct FftConfig {
     pub choppiness: f64,
     /// Loop period (s, `(0, 10⁶]`): when given, the sea repeats exactly after it.
     pub loop_period_s: Option<f64>,
+    /// Read every cascade through a tile and blend (brine-waves `TileBlend`, default `true`), so
+    /// that the sea does not repeat with the cascades' tiles; `false` reads the periodic tiles,
+    /// about 2.3× faster and visibly repeating in aerial views.
+    pub blend: bool,
 }
 
 impl Default for FftConfig {
     fn default() -> Self {
-        Self { resolution: 256, cascades: 4, choppiness: 1.0, loop_period_s: None }
+        Self { resolution: 256, cascades: 4, choppiness: 1.0, loop_period_s: None, blend: true }
     }
 }
 

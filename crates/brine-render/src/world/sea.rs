@@ -162,6 +162,7 @@ pub(super) fn fft_sea(s: &SeaConfig, lattice: Option<&TileLattice>) -> Result<Op
         loop_period: f.loop_period_s,
         seed: s.seed,
         wind_direction: wind,
+        tiled: !f.blend,
         ..FftOptions::for_spectrum(&summed, f.cascades as usize)
     };
     if let Some(l) = lattice {

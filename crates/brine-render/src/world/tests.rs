@@ -42,6 +42,25 @@ fn detail_normals_belong_to_the_fitted_seas() {
     assert!(world.detail.is_none() && world.fft_slopes.is_none());
 }
 
+/// `[sea.fft] blend` chooses between the tile and blend (the default) and the periodic tiles;
+/// the FFT sea's footprint-filtered slopes follow the same choice, so they differ.
+#[test]
+fn the_fft_blend_key_chooses_the_blend_or_the_periodic_tiles() {
+    let mut scene = Scene::default_scene();
+    scene.sea.surface = SurfaceKind::Fft;
+    let blended = World::new(&scene).expect("a valid scene");
+    scene.sea.fft.blend = false;
+    let periodic = World::new(&scene).expect("a valid scene");
+    let cascades = |w: &World| match w.ocean() {
+        Ocean::Fft { ocean } => (0..ocean.cascade_count()).map(|c| ocean.tile_blend(c).is_some()).collect::<Vec<_>>(),
+        _ => panic!("an FFT sea"),
+    };
+    assert!(cascades(&blended).iter().all(|&b| b), "every cascade blended by default");
+    assert!(cascades(&periodic).iter().all(|&b| !b), "no cascade blended with blend = false");
+    let (a, b) = (blended.fft_slopes.as_ref().expect("slopes"), periodic.fft_slopes.as_ref().expect("slopes"));
+    assert_ne!(a.filtered(3.7, -12.1, 0.0).gradient, b.filtered(3.7, -12.1, 0.0).gradient);
+}
+
 /// At light wind the drawn sea holds no more slope than Cox & Munk measured: the fitted band
 /// and the FFT cascades stop where the spectrum reaches their total (at 2 m/s the trochoid
 /// band `[0.5, 12] ω_p` held 1.4× of it). The fitted set's waves are the band's discrete
