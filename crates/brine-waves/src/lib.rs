@@ -107,7 +107,7 @@
 //! - Cox C., Munk W. 1954, JOSA 44(11) (slope statistics); Dupuy J., Bruneton E. 2012 (Jacobian);
 //!   Bruneton E. et al. 2010, CGF 29(2) (Gerstner sums).
 //! - Heitz E., Neyret F. 2018, "High-performance by-example noise using a histogram-preserving
-//!   blending operator", Proc. ACM Comput. Graph. Interact. Tech. 1(2), Article 31 (HPG 2018)
+//!   blending operator", Proc. ACM Comput. Graph. Interact. Tech. 1(2) (HPG 2018), doi:10.1145/3233304
 //!   (tile and blend, variance-preserving weights).
 
 mod error;

@@ -91,7 +91,7 @@ pub struct BlendCorner {
 /// The tile-and-blend of one periodic cascade (Heitz & Neyret 2018, with separable,
 /// variance-preserving weights): `H(x) = Σ_k ŵ_k(x) s(x + o_k)` over the four corners of the
 /// square lattice cell of `x` (spacing `S = L/2`), each corner with its own random offset `o_k`
-/// in the tile. `ŵ_{ij} = a_i(u) a_j(v)` ([`axis_weights`]) with `Σ ŵ² = 1`, so a blend of
+/// in the tile. `ŵ_{ij} = a_i(u) a_j(v)` (`axis_weights`) with `Σ ŵ² = 1`, so a blend of
 /// independent reads keeps the cascade's variance; the weights are `C²`.
 ///
 /// **Bounds.** With `|s| ≤ M`, `|∇s·d| ≤ λ(d)` and `|d²s/dt²| ≤ κ(d)` along a horizontal direction
@@ -102,10 +102,10 @@ pub struct BlendCorner {
 /// - `|d²H/dt²| ≤ B² κ(d) + 2 (B G₁/S)(|dₓ| + |d_z|) λ(d) + (B G₂ (dₓ² + d_z²) + 2 G₁² |dₓd_z|) M/S²`.
 ///
 /// `G₁` and `G₂` are the maxima of the weights' derivatives over 2¹⁴ + 1 points of the cell,
-/// raised by [`BLEND_BOUND_MARGIN`]; a test checks them against 16 times as many points.
+/// raised by `BLEND_BOUND_MARGIN` (2 %); a test checks them against 16 times as many points.
 ///
 /// **Brine's variant.** Heitz & Neyret blend three reads on a triangle grid with weights
-/// `w_k/√(Σ w²)` (their §3.2, variance-preserving blending) and then restore the histogram; here the
+/// `w_k/√(Σ w²)` (variance-preserving blending, exact for Gaussian inputs) and then restore the histogram; here the
 /// grid is square and the weights separable, so that each axis is one `C²` hand-over and the
 /// bounds above factor per axis, and no histogram is restored: the cascades are Gaussian fields,
 /// and a variance-preserving blend of independent Gaussian reads is Gaussian with the same
@@ -113,8 +113,8 @@ pub struct BlendCorner {
 ///
 /// # References
 /// - Heitz E., Neyret F. 2018, "High-performance by-example noise using a histogram-preserving
-///   blending operator", Proc. ACM Comput. Graph. Interact. Tech. 1(2), Article 31 (HPG 2018),
-///   §3 (tiling and blending, variance-preserving weights).
+///   blending operator", Proc. ACM Comput. Graph. Interact. Tech. 1(2) (HPG 2018), doi:10.1145/3233304
+///   (tiling and blending; for Gaussian inputs, blending that preserves mean and variance).
 /// - Steele G.L., Lea D., Flood C.H. 2014, "Fast splittable pseudorandom number generators",
 ///   OOPSLA (the SplitMix64 finaliser of the offsets' hash).
 #[derive(Debug, Clone, Copy, PartialEq)]
