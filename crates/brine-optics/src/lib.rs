@@ -103,8 +103,8 @@ pub use iop::{
 };
 pub use jerlov::{DarlesWater, JERLOV_LAMBDA_RANGE_NM, JerlovType};
 pub use ocean_brdf::{
-    MIN_SLOPE_VARIANCE, POINT_DISC_Q, POINT_DISC_TAIL, SEA_ROUGHNESS_LENGTH_M, SlopeVariance, SunDisc,
-    glitter_slope_density, mean_fresnel, ocean_brdf, reflected_disc_radiance, reflected_source_radiance,
+    MIN_SLOPE_VARIANCE, POINT_DISC_Q, POINT_DISC_TAIL, SEA_ROUGHNESS_LENGTH_M, SMITH_NEGLIGIBLE_NU, SlopeVariance,
+    SunDisc, glitter_slope_density, mean_fresnel, ocean_brdf, reflected_disc_radiance, reflected_source_radiance,
     reflected_sun_radiance, slope_pdf, smith_lambda, u12_5_from_u10,
 };
 pub use quadrature::{GaussHermite, MAX_HERMITE_ORDER, gauss_legendre};

@@ -181,6 +181,14 @@ pub fn slope_pdf(zeta_x: f64, zeta_y: f64, variance: &SlopeVariance) -> f64 {
     (-0.5 * (zeta_x * zeta_x / sx2 + zeta_y * zeta_y / sy2)).exp() / (2.0 * PI * (sx2 * sy2).sqrt())
 }
 
+/// `ν` from which [`smith_lambda`] returns 0: there `Λ(ν) ≤ e^{−ν²}/(4ν³√π) ≤ 1.6×10⁻¹⁹`, below
+/// half the spacing of doubles at 1 (1.1×10⁻¹⁶), so every `1 + Λ + …` it enters is unchanged,
+/// and the closed form's two terms (both about `e^{−ν²}`) would only cancel. The bound is the
+/// alternating asymptotic series `erfc ν = e^{−ν²}/(ν√π) (1 − 1/(2ν²) + 3/(4ν⁴) − …)` cut after
+/// its second term (Abramowitz & Stegun 1964, §7.1.23). Views this far from grazing (`ν ≥ 6`:
+/// `cot θ ≥ 8.5 σ`) are most of a frame's, and `erfc`'s tail is the costly branch.
+pub const SMITH_NEGLIGIBLE_NU: f64 = 6.0;
+
 /// Smith's shadowing term `Λ` for Gaussian slopes,
 /// `Λ = (e^{−ν²} − ν√π erfc ν) / (2ν√π)`, `ν = μ/√(2σ_s²(1 − μ²))`.
 ///
@@ -189,7 +197,8 @@ pub fn slope_pdf(zeta_x: f64, zeta_y: f64, variance: &SlopeVariance) -> f64 {
 /// - `sigma_s2`: slope variance in the direction's azimuth plane, `> 0`.
 ///
 /// # Returns
-/// `Λ ≥ 0` (dimensionless); `0` at normal incidence. Uses `libm::erfc` (full precision).
+/// `Λ ≥ 0` (dimensionless); `0` at normal incidence, and `0` for `ν ≥` [`SMITH_NEGLIGIBLE_NU`],
+/// where `Λ < 1.6×10⁻¹⁹` (so `1 + Λ` rounds to 1). Uses `libm::erfc` (full precision).
 ///
 /// # References
 /// Smith 1967; Bruneton et al. 2010, Eq. 6; docs/equations.md §11.
@@ -200,6 +209,9 @@ pub fn smith_lambda(cos_theta: f64, sigma_s2: f64) -> f64 {
         return 0.0;
     }
     let nu = mu / (2.0 * sigma_s2 * (1.0 - mu * mu)).sqrt();
+    if nu >= SMITH_NEGLIGIBLE_NU {
+        return 0.0;
+    }
     let sqrt_pi = PI.sqrt();
     ((-nu * nu).exp() - nu * sqrt_pi * libm::erfc(nu)) / (2.0 * nu * sqrt_pi)
 }
@@ -224,11 +236,22 @@ pub fn ocean_brdf(v: DVec3, l: DVec3, variance: &SlopeVariance, n_water: f64) ->
     if v.z <= 0.0 || l.z <= 0.0 {
         return 0.0;
     }
+    brdf_seen_with(v, l, variance, n_water, view_lambda(v, variance))
+}
+
+/// Smith's `Λ(v)` of the view direction `v` (`v_z > 0`) in [`ocean_brdf`], which depends on the
+/// view alone: computed once for many light directions.
+fn view_lambda(v: DVec3, variance: &SlopeVariance) -> f64 {
+    smith_lambda(v.z.max(0.01), variance.along(v))
+}
+
+/// [`ocean_brdf`] with the view's `Λ(v)` given (`lambda_v = view_lambda(v, variance)`), for
+/// `v_z > 0`, `l_z > 0`.
+fn brdf_seen_with(v: DVec3, l: DVec3, variance: &SlopeVariance, n_water: f64, lambda_v: f64) -> f64 {
     let h = (v + l).normalize();
     let (vz, lz) = (v.z.max(0.01), l.z.max(0.01));
     let zeta = (h.x / h.z, h.y / h.z);
     let p = slope_pdf(zeta.0, zeta.1, variance);
-    let lambda_v = smith_lambda(vz, variance.along(v));
     let lambda_l = smith_lambda(lz, variance.along(l));
     let f = fresnel_dielectric(v.dot(h), 1.0, n_water);
     f * p / (4.0 * h.z.powi(4) * vz * lz * (1.0 + lambda_v + lambda_l))
@@ -532,7 +555,14 @@ pub fn reflected_disc_radiance(
         return reflected_sun_radiance(v, l, variance, sun_irradiance);
     }
     let rings = disc.rings_for(v, l, variance);
-    let sum = disc.integrate(l, rings, |d| ocean_brdf(v, d, variance, WATER_IOR) * d.z.max(0.0));
+    // `ocean_brdf` node by node, the view's `Λ(v)` computed once.
+    let lambda_v = if v.z > 0.0 { view_lambda(v, variance) } else { 0.0 };
+    let sum = disc.integrate(l, rings, |d| {
+        if v.z <= 0.0 || d.z <= 0.0 {
+            return 0.0;
+        }
+        brdf_seen_with(v, d, variance, WATER_IOR, lambda_v) * d.z
+    });
     sun_irradiance / disc.solid_angle * sum
 }
 
@@ -669,6 +699,27 @@ mod tests {
         }
     }
 
+    /// At [`SMITH_NEGLIGIBLE_NU`] the closed form is already below the bound that makes `1 + Λ`
+    /// round to 1, so returning 0 from there on changes no sum `1 + Λ + …`.
+    #[test]
+    fn smith_lambda_is_negligible_where_it_is_cut() {
+        // ν = μ/√(2σ²(1 − μ²)) with σ² = ½: μ = ν/√(1 + ν²).
+        let at = |nu: f64| smith_lambda(nu / (1.0 + nu * nu).sqrt(), 0.5);
+        /// `e^{−ν²}/(4ν³√π)` at ν = 6 (the bound of the constant's documentation).
+        const BOUND_AT_6: f64 = 1.6e-19;
+        let below = SMITH_NEGLIGIBLE_NU * (1.0 - 1e-9);
+        let closed = at(below);
+        assert!((0.0..=BOUND_AT_6).contains(&closed), "Λ(6⁻) = {closed:e}");
+        assert_eq!((1.0 + closed).to_bits(), 1.0f64.to_bits());
+        assert_eq!(at(SMITH_NEGLIGIBLE_NU).to_bits(), 0.0f64.to_bits());
+        // The bound itself, from the asymptotic series.
+        let nu: f64 = SMITH_NEGLIGIBLE_NU;
+        assert!((-nu * nu).exp() / (4.0 * nu.powi(3) * PI.sqrt()) <= BOUND_AT_6);
+        // Well below the cut, the closed form is untouched: Λ(1) = (e⁻¹ − √π erfc 1)/(2√π) =
+        // 0.025127 (evaluated with Python's `math.erfc`).
+        assert_relative_eq!(at(1.0), 0.025_127, max_relative = ORACLE);
+    }
+
     #[test]
     fn smith_lambda_oracles() {
         assert_relative_eq!(smith_lambda(0.3, 0.05), 2.5705e-2, max_relative = ORACLE);
@@ -688,5 +739,23 @@ mod tests {
         /// The formula is symmetric in `v`, `l` up to the order of the sums `v + l`, `Λ(v) + Λ(l)`.
         const ROUNDING: f64 = 1e-12;
         assert_relative_eq!(ocean_brdf(v, l, &var, 1.333), ocean_brdf(l, v, &var, 1.333), max_relative = ROUNDING);
+    }
+
+    proptest::proptest! {
+        /// The disc's glint computes the view's `Λ(v)` once, not per node: the same numbers as
+        /// integrating [`ocean_brdf`] itself over the disc.
+        #[test]
+        fn the_disc_glint_integrates_the_brdf_itself(
+            view in (-1.0f64..1.0, -1.0f64..1.0, 0.01f64..1.0), light in (-1.0f64..1.0, -1.0f64..1.0, -0.02f64..1.0),
+            sx in 1e-5f64..0.1, sy in 1e-5f64..0.1, rings in 1usize..6,
+        ) {
+            let v = DVec3::new(view.0, view.1, view.2).normalize();
+            let l = DVec3::new(light.0, light.1, light.2).normalize();
+            let var = SlopeVariance::new(sx, sy).unwrap();
+            let disc = SunDisc::with_rings(0.02, rings).unwrap();
+            let direct = disc.integrate(l, rings, |d| ocean_brdf(v, d, &var, WATER_IOR) * d.z.max(0.0));
+            let glint = reflected_disc_radiance(v, l, &var, disc.solid_angle(), &disc);
+            proptest::prop_assert_eq!(glint.to_bits(), (disc.solid_angle() / disc.solid_angle() * direct).to_bits());
+        }
     }
 }

@@ -89,7 +89,9 @@ impl Spectrum for PiersonMoskowitz {
             return 0.0;
         }
         let r = self.omega_0() / omega;
-        Self::ALPHA * G * G * libm::pow(omega, -5.0) * libm::exp(-Self::BETA * libm::pow(r, 4.0))
+        // Integer powers by products (within 3 ulp of `pow`, without its cost).
+        let (omega2, r2) = (omega * omega, r * r);
+        Self::ALPHA * G * G / (omega2 * omega2 * omega) * libm::exp(-Self::BETA * (r2 * r2))
     }
 
     /// `ω_p = (4β/5)^{1/4} ω₀ ≈ 0.877 g/U₁₉.₅`.

@@ -42,24 +42,30 @@ pub trait Spreading: Sync {
     /// # References
     /// Inverse-transform sampling (Devroye 1986, *Non-Uniform Random Variate Generation*, §II.2).
     fn sample(&self, omega: f64, u: f64) -> f64 {
-        const N: usize = 2048;
-        let h = 2.0 * PI / N as f64;
-        let mut cdf = Vec::with_capacity(N + 1);
-        cdf.push(0.0);
-        let mut prev = self.density(-PI, omega);
-        let mut acc = 0.0;
-        for j in 1..=N {
-            let d = self.density(-PI + j as f64 * h, omega);
-            acc += 0.5 * (prev + d) * h;
-            cdf.push(acc);
-            prev = d;
-        }
-        let target = u.clamp(0.0, 1.0) * acc;
-        let j = cdf.partition_point(|&c| c < target).clamp(1, N);
-        let (c0, c1) = (cdf[j - 1], cdf[j]);
-        let frac = if c1 > c0 { (target - c0) / (c1 - c0) } else { 0.5 };
-        -PI + (j as f64 - 1.0 + frac) * h
+        tabulated_inverse(|theta| self.density(theta, omega), u)
     }
+}
+
+/// The inverse `C⁻¹(u)` of the cumulative distribution of `density` over `(−π, π]`, tabulated on
+/// 2048 trapezoids and interpolated linearly ([`Spreading::sample`]'s default).
+fn tabulated_inverse(density: impl Fn(f64) -> f64, u: f64) -> f64 {
+    const N: usize = 2048;
+    let h = 2.0 * PI / N as f64;
+    let mut cdf = Vec::with_capacity(N + 1);
+    cdf.push(0.0);
+    let mut prev = density(-PI);
+    let mut acc = 0.0;
+    for j in 1..=N {
+        let d = density(-PI + j as f64 * h);
+        acc += 0.5 * (prev + d) * h;
+        cdf.push(acc);
+        prev = d;
+    }
+    let target = u.clamp(0.0, 1.0) * acc;
+    let j = cdf.partition_point(|&c| c < target).clamp(1, N);
+    let (c0, c1) = (cdf[j - 1], cdf[j]);
+    let frac = if c1 > c0 { (target - c0) / (c1 - c0) } else { 0.5 };
+    -PI + (j as f64 - 1.0 + frac) * h
 }
 
 /// Which directions a spreading symmetric under `θ → θ + π` covers.
@@ -170,16 +176,33 @@ impl CosineTwoS {
 /// Normalisation `2^{2s−1} Γ(s+1)² / (π Γ(2s+1))` of the cos-2s law, through `ln Γ` so that it
 /// stays finite for large `s`.
 fn cos2s_normalisation(s: f64) -> f64 {
-    let ln = (2.0 * s - 1.0) * std::f64::consts::LN_2 + 2.0 * libm::lgamma(s + 1.0)
-        - libm::lgamma(2.0 * s + 1.0)
-        - libm::log(PI);
+    let ln =
+        (2.0 * s - 1.0) * std::f64::consts::LN_2 + 2.0 * libm::lgamma(s + 1.0) - libm::lgamma(2.0 * s + 1.0) - LN_PI;
     libm::exp(ln)
+}
+
+/// `ln π`, the value `libm::log(π)` rounds to.
+const LN_PI: f64 = 1.144_729_885_849_400_2;
+
+impl CosineTwoS {
+    /// `θ ↦ D(θ; ω)` with the exponent and the normalisation, which depend on `ω` alone, computed
+    /// once.
+    fn density_at(&self, omega: f64) -> impl Fn(f64) -> f64 {
+        let s = self.exponent(omega);
+        let norm = cos2s_normalisation(s);
+        move |theta| norm * libm::pow(libm::fabs(libm::cos(0.5 * theta)), 2.0 * s)
+    }
 }
 
 impl Spreading for CosineTwoS {
     fn density(&self, theta: f64, omega: f64) -> f64 {
-        let s = self.exponent(omega);
-        cos2s_normalisation(s) * libm::pow(libm::fabs(libm::cos(0.5 * theta)), 2.0 * s)
+        self.density_at(omega)(theta)
+    }
+
+    /// The default tabulated inverse, with the exponent and the normalisation computed once for
+    /// the 2049 densities (the same numbers as [`Spreading::sample`]'s default).
+    fn sample(&self, omega: f64, u: f64) -> f64 {
+        tabulated_inverse(self.density_at(omega), u)
     }
 }
 
@@ -329,6 +352,28 @@ mod tests {
 
     /// `s_max = 17.01` printed to 2 decimals.
     const PRINTED_2_DECIMALS: f64 = 0.005;
+
+    #[test]
+    fn ln_pi_is_what_libm_gives() {
+        assert_eq!(LN_PI.to_bits(), libm::log(PI).to_bits());
+    }
+
+    proptest::proptest! {
+        /// The cos-2s law's own inverse (exponent and normalisation once per `ω`) draws exactly
+        /// the direction the default tabulated inverse of its density draws.
+        #[test]
+        fn the_cos2s_inverse_is_the_default_one(
+            omega in 0.05f64..20.0, u in 0.0f64..=1.0, which in 0usize..3,
+        ) {
+            let d = match which {
+                0 => CosineTwoS::hasselmann(0.9).unwrap(),
+                1 => CosineTwoS::mitsuyasu(0.7, 12.0).unwrap(),
+                _ => CosineTwoS::constant(7.5).unwrap(),
+            };
+            let default = tabulated_inverse(|theta| d.density(theta, omega), u);
+            proptest::prop_assert_eq!(d.sample(omega, u).to_bits(), default.to_bits());
+        }
+    }
 
     /// `∫_{−π}^{π} D dθ` by the midpoint rule on `n` cells.
     fn integral(d: &dyn Spreading, omega: f64, n: usize) -> f64 {
