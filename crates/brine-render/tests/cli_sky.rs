@@ -169,6 +169,21 @@ fn sky_json_is_finite_non_negative_and_the_library_value() {
         assert!((xyz[k] / want_xyz[k] - 1.0).abs() < SAME_NUMBER, "{xyz:?} vs {want_xyz:?}");
         assert!((rgb[k] / want_rgb[k] - 1.0).abs() < SAME_NUMBER, "{rgb:?} vs {want_rgb:?}");
     }
+    // What lights a horizontal plane: the sky's irradiance and the sun's times the sine of its
+    // elevation; and its chromaticity's offset below the daylight locus.
+    let (sun_e, sky_e, global) = (
+        triple("sun_irradiance_rgb_klx"),
+        triple("sky_horizontal_irradiance_rgb_klx"),
+        triple("global_horizontal_irradiance_rgb_klx"),
+    );
+    let sum = DVec3::from_array(sky_e) + DVec3::from_array(sun_e) * 20f64.to_radians().sin();
+    for k in 0..3 {
+        assert!((global[k] / sum[k] - 1.0).abs() < SAME_NUMBER, "{global:?} vs {sum:?}");
+    }
+    let g = brine_sky::linear_srgb_to_xyz(sum);
+    let (x, y) = (g.x / g.element_sum(), g.y / g.element_sum());
+    let offset = -3.0 * x * x + 2.870 * x - 0.275 - y;
+    assert!((num(&m, "global_below_daylight_locus") - offset).abs() < SAME_NUMBER, "{offset}");
 }
 
 #[test]

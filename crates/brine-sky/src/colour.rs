@@ -109,6 +109,32 @@ mod tests {
         assert!((x - 0.25).abs() < 1e-15 && (y - 0.5).abs() < 1e-15);
     }
 
+    proptest::proptest! {
+        /// Two lights mix on the straight segment between their chromaticities, weighted by
+        /// their `X + Y + Z`; the daylight locus is a parabola of second derivative −6, so the
+        /// mixture's offset below it is the parts' offsets, weighted, plus the chord's gap
+        /// `3 (x − x₁)(x₂ − x)` (docs/models/brine-sky.md, "Sun plus sky on a horizontal plane").
+        #[test]
+        fn a_mixture_lies_below_the_daylight_locus_by_the_chord(
+            a in proptest::array::uniform3(0.01f64..10.0),
+            b in proptest::array::uniform3(0.01f64..10.0),
+        ) {
+            /// Sums of a few products of values of order 1: rounding of order 10⁻¹⁵.
+            const ROUNDING: f64 = 1e-12;
+            let (a, b) = (DVec3::from_array(a), DVec3::from_array(b));
+            let ((x1, y1), (x2, y2)) = (chromaticity(a).unwrap(), chromaticity(b).unwrap());
+            let (x, y) = chromaticity(a + b).unwrap();
+            let w = a.element_sum() / (a + b).element_sum();
+            let parts = w * (daylight_locus_y(x1) - y1) + (1.0 - w) * (daylight_locus_y(x2) - y2);
+            let gap = 3.0 * (x - x1) * (x2 - x);
+            proptest::prop_assert!(gap >= -ROUNDING, "a chord of a concave curve runs below it: {gap}");
+            proptest::prop_assert!(
+                (daylight_locus_y(x) - y - (parts + gap)).abs() < ROUNDING,
+                "{} vs {} + {}", daylight_locus_y(x) - y, parts, gap
+            );
+        }
+    }
+
     #[test]
     fn d65_white_maps_to_equal_rgb() {
         // D65 chromaticity (0.31271, 0.32902) with Y = 1 is sRGB white (1, 1, 1).

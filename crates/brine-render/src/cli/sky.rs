@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use brine_sky::{
     CloudParams, DaylightModel, MoonParams, Sky, SkyParams, chromaticity, daylight_locus_y, fisheye_pixel_direction,
+    linear_srgb_to_xyz,
 };
 use glam::{DVec2, DVec3};
 
@@ -52,7 +53,9 @@ pub struct SkyArgs {
     /// View azimuth (degrees from north through east) for --json.
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = super::finite)]
     pub view_azimuth_deg: f64,
-    /// Print the radiance toward the view direction as JSON (XYZ and linear sRGB, kcd/m²).
+    /// Print the radiance toward the view direction as JSON (XYZ and linear sRGB, kcd/m²), with
+    /// the sun's, the sky's and their sum's irradiance (klx) and the offsets of the view's and
+    /// the sum's chromaticity below the CIE daylight locus.
     #[arg(long)]
     pub json: bool,
     /// Write a fisheye image of the dome (.png or .exr): zenith at the centre, north up, east to
@@ -141,6 +144,8 @@ pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
         let rgb = sky.radiance_rgb(v);
         let xyz = sky.radiance_xyz(v);
         let sun = sky.sun();
+        // What lights a horizontal white surface: the sun on the plane and the sky's irradiance.
+        let global = sky.horizontal_irradiance_rgb() + sun.irradiance_rgb * sun.direction.y.max(0.0);
         let mut out = serde_json::json!({
             "view_elevation_deg": args.view_elevation_deg,
             "view_azimuth_deg": args.view_azimuth_deg,
@@ -151,6 +156,8 @@ pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
             "sun_radiance_rgb_kcd_m2": sun.radiance_rgb.to_array(),
             "sun_irradiance_rgb_klx": sun.irradiance_rgb.to_array(),
             "sky_horizontal_irradiance_rgb_klx": sky.horizontal_irradiance_rgb().to_array(),
+            "global_horizontal_irradiance_rgb_klx": global.to_array(),
+            "global_below_daylight_locus": daylight_locus_offset(linear_srgb_to_xyz(global)),
         });
         if let Some(m) = sky.moon() {
             out["moon_irradiance_rgb_klx"] = serde_json::json!(m.irradiance_rgb.to_array());
