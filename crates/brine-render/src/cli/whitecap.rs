@@ -251,6 +251,42 @@ pub fn whitecap_json(args: &WhitecapArgs) -> Result<Value, CliError> {
     }
 }
 
+/// The threshold `α` as text: a number, or what an infinite threshold means (JSON has `null`,
+/// for a target coverage of 0 or 1).
+fn alpha_text(v: &Value, target: f64) -> String {
+    match v["alpha"].as_f64() {
+        Some(a) => format!("{a:.5}"),
+        None if target <= 0.0 => "−∞ (no whitecaps: Monahan's W is 0)".into(),
+        None => "+∞ (white everywhere: Monahan's W is 1)".into(),
+    }
+}
+
+/// The text answer of `brine whitecap` for its JSON answer `v`.
+fn whitecap_text(v: &Value) -> String {
+    let f = |key: &str| v[key].as_f64().unwrap_or(f64::NAN);
+    if v.get("u10_m_s").is_none() {
+        return format!("W = {:.8}", f("coverage"));
+    }
+    let target = f("monahan_coverage");
+    let head = format!("U10 = {} m/s, {} waves: α = {}", v["u10_m_s"], v["waves"], alpha_text(v, target));
+    if v.get("mean_white").is_some() {
+        // --white-water: the memory's white water at the point footprint.
+        return format!(
+            "{head} at the point footprint\n\
+             white {:.5} (active whitecaps {:.5}, foam left behind {:.5}, wind streaks' share {:.5}), \
+             more than half white {:.5}, Monahan {target:.5} ({}); {} points",
+            f("mean_white"),
+            f("active_coverage"),
+            f("residual_coverage"),
+            f("windrow_coverage"),
+            f("visible_coverage"),
+            v["monahan_law"].as_str().unwrap_or("?"),
+            v["points"],
+        );
+    }
+    format!("{head}, surface coverage {:.5} ± {:.5}, Monahan {target:.5}", f("coverage"), f("coverage_std_error"))
+}
+
 /// Runs `brine whitecap`.
 ///
 /// # Errors
@@ -259,18 +295,8 @@ pub fn run_whitecap(args: &WhitecapArgs) -> Result<(), CliError> {
     let v = whitecap_json(args)?;
     if args.json {
         super::outln!("{v}");
-    } else if v.get("u10_m_s").is_some() {
-        super::outln!(
-            "U10 = {} m/s, {} waves: α = {:.5}, surface coverage {:.5} ± {:.5}, Monahan {:.5}",
-            v["u10_m_s"],
-            v["waves"],
-            v["alpha"].as_f64().unwrap_or(f64::NAN),
-            v["coverage"].as_f64().unwrap_or(f64::NAN),
-            v["coverage_std_error"].as_f64().unwrap_or(f64::NAN),
-            v["monahan_coverage"].as_f64().unwrap_or(f64::NAN)
-        );
     } else {
-        super::outln!("W = {:.8}", v["coverage"].as_f64().unwrap_or(f64::NAN));
+        super::outln!("{}", whitecap_text(&v));
     }
     Ok(())
 }
@@ -329,6 +355,29 @@ mod tests {
         // Stage B outlasts stage A: most white water is foam left behind.
         assert!(v["active_coverage"].as_f64().unwrap() < 0.5 * v["mean_white"].as_f64().unwrap(), "{v}");
         assert!((v["decay_time_s"].as_f64().unwrap() - 3.85).abs() < 1e-12);
+    }
+
+    /// Every text answer names its figures with numbers: no NaN from a key the mode does not
+    /// have, and an infinite threshold (a target of 0 or 1) said in words.
+    #[test]
+    fn text_answers_hold_no_nan() {
+        for line in [
+            "--mu 1 --sigma 0.2 --alpha 0.8",
+            "--u10 10 --calibrate --mc-samples 2000",
+            "--u10 10 --alpha 0.5 --mc-samples 2000",
+            "--u10 16 --white-water --mc-samples 2000",
+            "--u10 1 --white-water --mc-samples 2000",
+            "--u10 40 --white-water --mc-samples 2000",
+        ] {
+            let text = whitecap_text(&run(line).unwrap());
+            assert!(!text.contains("NaN"), "{line}: {text}");
+        }
+        let v = run("--u10 16 --white-water --mc-samples 2000").unwrap();
+        let text = whitecap_text(&v);
+        let white = format!("white {:.5}", v["mean_white"].as_f64().unwrap());
+        assert!(text.contains(&white) && text.contains("active whitecaps"), "{text}");
+        assert!(whitecap_text(&run("--u10 1 --white-water --mc-samples 2000").unwrap()).contains("α = −∞"));
+        assert!(whitecap_text(&run("--u10 40 --white-water --mc-samples 2000").unwrap()).contains("α = +∞"));
     }
 
     #[test]
