@@ -225,6 +225,7 @@ impl Scene {
             .detach(|| World::on_lattice(&scene, Some(&lattice)).map(|w| bake_frame(&w, t, &options)))
             .map_err(scene_err)?;
         let n = frame.size;
+        let limit = frame.limit.map(|l| brine_render::cli::export::grid_limit_json(&l, up));
         let m = frame.maps;
         let grid3 = |v: Vec<[f32; 3]>| -> PyResult<Bound<'py, PyAny>> {
             Ok(v.into_iter().flatten().collect::<Vec<f32>>().into_pyarray(py).reshape([n, n, 3])?.into_any())
@@ -239,6 +240,7 @@ impl Scene {
         d.set_item("spray", grid3(m.spray)?)?;
         d.set_item("tile_m", tile_m)?;
         d.set_item("time_s", frame.time)?;
+        d.set_item("grid_limit", pythonize::pythonize(py, &limit)?)?;
         Ok(d)
     }
 }

@@ -68,12 +68,15 @@ def test_queries_equal_the_cli(scene, brine_cli, tmp_path):
 
 
 def test_a_bake_samples_one_surface_at_any_size(scene):
-    n, tile = 32, 64.0
+    n, tile = 64, 16.0
     b = scene.bake(size=n, tile_m=tile)
     assert b["displacement"].shape == (n, n, 3) and b["foam"].shape == (n, n) and b["tile_m"] == tile
     fine = scene.bake(size=2 * n, tile_m=tile)
-    # Texel (i, j) is the rest point (i, j)·tile/n (exact here: 2 m and 1 m texels): the finer
-    # bake's even texels are the same rest points, so the same surface to the bit.
+    # 0.25 m and 0.125 m texels hold every wave of this sea (its shortest is 0.83 m, over three
+    # texels), so neither bake leaves one out...
+    assert b["grid_limit"]["faded_waves"] == 0 and fine["grid_limit"]["faded_waves"] == 0
+    # ...and texel (i, j) is the rest point (i, j)·tile/n (exact here): the finer bake's even
+    # texels are the same rest points, so the same surface to the bit.
     np.testing.assert_array_equal(fine["displacement"][::2, ::2], b["displacement"])
     np.testing.assert_array_equal(fine["normal"][::2, ::2], b["normal"])
     h = b["displacement"][..., 1]
@@ -83,6 +86,11 @@ def test_a_bake_samples_one_surface_at_any_size(scene):
     zup = scene.bake(size=n, tile_m=tile, up="z")["displacement"]
     np.testing.assert_array_equal(zup[..., 2], b["displacement"][..., 1])
     np.testing.assert_array_equal(zup[..., 1], -b["displacement"][..., 2])
+    # 2 m texels cannot hold the waves under 4 m: the bake leaves them out and says what slopes
+    # they took, as `brine bake` writes in bake.json.
+    coarse = scene.bake(size=8, tile_m=tile)["grid_limit"]
+    assert coarse["shortest_wave_m"] == 4.0 and coarse["faded_waves"] > 0, coarse
+    assert coarse["lost_mean_square_slope"] > 0.0
 
 
 def test_bad_scenes_and_arguments_raise():

@@ -198,3 +198,30 @@ fn a_time_lapse_needs_a_place_and_moves_the_sun() {
         |im: &image::RgbImage| im.pixels().map(|p| u32::from(p[0]) + u32::from(p[1]) + u32::from(p[2])).sum::<u32>();
     assert!(mean(&day) > 2 * mean(&night), "day {} vs night {}", mean(&day), mean(&night));
 }
+
+/// `bake.json` says what the grid left out: a trochoid sea on 2 m texels loses its waves under
+/// 4 m, the covariance in the maps' axes (`X = x`, `Y = −z` with `--up z`: the cross term changes
+/// sign); on texels fine enough for every wave nothing is lost.
+#[test]
+fn a_bake_says_what_its_grid_left_out() {
+    let dir = tempfile::tempdir().unwrap();
+    let read = |name: &str| -> serde_json::Value {
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join(name).join("bake.json")).unwrap()).unwrap()
+    };
+    for (name, size, up) in [("y", "32", "y"), ("z", "32", "z"), ("fine", "512", "y")] {
+        let out = brine(&["bake", "-q", "-o", name, "--size", size, "--tile-m", "64", "--up", up], dir.path());
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    }
+    let (y, z, fine) =
+        (read("y")["grid_limit"].clone(), read("z")["grid_limit"].clone(), read("fine")["grid_limit"].clone());
+    assert_eq!(y["shortest_wave_m"], 4.0);
+    assert!(y["faded_waves"].as_u64().unwrap() > 0 && y["lost_mean_square_slope"].as_f64().unwrap() > 0.0, "{y}");
+    let c = |v: &serde_json::Value, k: &str| v["lost_slope_covariance"][k].as_f64().unwrap();
+    assert_eq!(
+        (y["lost_slope_covariance"]["axes"].as_str(), z["lost_slope_covariance"]["axes"].as_str()),
+        (Some("x z"), Some("X Y"))
+    );
+    assert_eq!((c(&z, "xx"), c(&z, "xy"), c(&z, "yy")), (c(&y, "xx"), -c(&y, "xy"), c(&y, "yy")));
+    assert_eq!(c(&y, "xx") + c(&y, "yy"), y["lost_mean_square_slope"].as_f64().unwrap());
+    assert_eq!((fine["faded_waves"].as_u64(), fine["lost_mean_square_slope"].as_f64()), (Some(0), Some(0.0)));
+}

@@ -135,7 +135,7 @@ pub use fft::slopes::{FftSlopeFilter, FilteredSlopes};
 pub use fft::spectrum::directional_spectrum;
 pub use fit::extraction::{AmplitudeRule, FrequencyBin, SeaComponent, SteepnessLimit, fit_sea_state, frequency_bins};
 pub use fit::extraction::{FitOptions, FrequencyPartition, fit_trochoids};
-pub use fit::lattice::TileLattice;
+pub use fit::lattice::{GridBand, TileLattice, grid_band};
 pub use fit::set::TrochoidSet;
 pub use fit::trochoid::{MAX_STEEPNESS, Trochoid, solve_trochoid_phase};
 pub use sea::{FrameSurface, Ocean, SINE_DETAIL_WAVELENGTH_M, SeaFrame, SurfaceSample};

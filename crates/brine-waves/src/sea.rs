@@ -100,6 +100,30 @@ impl Ocean {
         }
     }
 
+    /// The sea a square grid of spacing `spacing_m` (m, `> 0`) samples without aliasing: the
+    /// trochoid and Gerstner sums of [`crate::grid_band`]'s waves (the waves shorter than two
+    /// spacings left out, those up to three faded), for baked maps and meshes. `None` for the
+    /// sine sea (its detail waves are normals of their own) and the FFT sea (its cascades are
+    /// grids of their own).
+    ///
+    /// # Errors
+    /// [`WaveError::OutOfRange`] if the faded Gerstner sum cannot be built (it can whenever the
+    /// sea's own could: fading only lowers `Σ Qᵢ`).
+    pub fn grid_band(&self, spacing_m: f64) -> Result<Option<(Ocean, crate::GridBand)>, WaveError> {
+        let band = |set: &TrochoidSet| crate::grid_band(set, spacing_m);
+        Ok(match self {
+            Ocean::Trochoids { set } => {
+                let b = band(set);
+                Some((Ocean::trochoids(b.waves.clone()), b))
+            }
+            Ocean::Gerstner { set, .. } => {
+                let b = band(set);
+                Some((Ocean::gerstner(b.waves.clone())?, b))
+            }
+            Ocean::Sine { .. } | Ocean::Fft { .. } => None,
+        })
+    }
+
     /// The sea frozen at time `t`.
     ///
     /// # Arguments

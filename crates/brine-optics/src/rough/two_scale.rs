@@ -7,7 +7,7 @@
 //! drawn waves around the point then stop part of what is left. The two masks are not
 //! independent (a wave face that rises toward the horizon rises at every scale), so their product
 //! masks too much: on Gaussian profiles of four decades split in two bands, seen 0.05 and 0.2
-//! total slope deviations above grazing (`ν`), the product leaves 10–26 % less light to the sky
+//! total slope deviations above grazing (`ν`), the product leaves 10–25 % less light to the sky
 //! than the profile does. What the whole surface does is known: Smith's height-correlated
 //! masking for the total slope deviation, corrected by the measured escape of the facets seen
 //! ([`crate::SlopeVisibility::escape`]), gives a profile's share to 1 %. The drawn waves' factor

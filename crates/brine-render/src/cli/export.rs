@@ -249,6 +249,22 @@ pub fn default_tile_m(scene: &Scene) -> Result<f64, CliError> {
     })
 }
 
+/// `bake.json`'s `grid_limit`: the waves the grid left out and their slope covariance in the
+/// maps' horizontal axes (`x, z` for `--up y`; `X = x, Y = −z` for `--up z`).
+pub fn grid_limit_json(l: &crate::export::GridLimit, up: UpAxis) -> serde_json::Value {
+    let [xx, xz, zz] = l.lost_slope_covariance;
+    let (axes, cross) = match up {
+        UpAxis::Y => ("x z", xz),
+        UpAxis::Z => ("X Y", -xz),
+    };
+    serde_json::json!({
+        "shortest_wave_m": l.shortest_wave_m,
+        "faded_waves": l.faded_waves,
+        "lost_slope_covariance": { "axes": axes, "xx": xx, "xy": cross, "yy": zz },
+        "lost_mean_square_slope": xx + zz,
+    })
+}
+
 /// Runs `brine bake`.
 ///
 /// # Errors
@@ -291,6 +307,7 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
     let started = std::time::Instant::now();
     let mut range_m = 0.0f64;
     let mut frames = Vec::new();
+    let mut limit = None;
     for f in first..last {
         let t = time_of(f);
         let own;
@@ -304,6 +321,7 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
             }
         };
         let frame = crate::export::bake_frame(world, t, &options);
+        limit = limit.or(frame.limit);
         // One displacement range for every frame of a PNG bake: the sea's height bound.
         let (lo, hi) = world.sea.height_bounds();
         range_m = range_m.max(lo.abs().max(hi.abs()) * 1.5).max(1e-3);
@@ -327,6 +345,7 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
             crate::export::bake::png_scales(range_m).iter().map(|(k, s)| (k.to_string(), serde_json::json!(s))).collect::<serde_json::Map<_, _>>()
         }),
         "frames": frames,
+        "grid_limit": limit.map(|l| grid_limit_json(&l, args.up)),
     });
     let text = serde_json::to_string_pretty(&meta).map_err(|e| CliError::Failure(e.to_string()))?;
     crate::output::write_atomic(&args.output.join("bake.json"), |w| w.write_all(text.as_bytes()))

@@ -371,7 +371,7 @@ mod tests {
         // The JSON carries the library's f64 value: a few roundings of pow and exp.
         const ROUNDING: f64 = 1e-12;
         // Monahan & O'Muircheartaigh 1986, W = 1.95×10⁻⁵ U^2.55 e^{0.0861 ΔT}, at ΔT = 12 − 20 =
-        // −8 °C: 1.95e-5 · 10^2.55 · e^{−0.6888} = 3.4746×10⁻³ (the documented example).
+        // −8 °C: 1.95e-5 · 10^2.55 · e^{−0.6888} = 3.4745×10⁻³ (the documented example).
         let v = foam("--u10 10 --t-water-c 12 --t-air-c 20 --json").unwrap();
         let expected = 1.95e-5 * 10f64.powf(2.55) * (0.0861 * -8.0f64).exp();
         assert_relative_eq!(v["coverage"].as_f64().unwrap(), expected, max_relative = ROUNDING);

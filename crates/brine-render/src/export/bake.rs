@@ -5,6 +5,8 @@ use std::path::{Path, PathBuf};
 use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
+use brine_waves::{BOX_WIDTH_PER_SIGMA, FrameSurface, SeaFrame};
+
 use crate::World;
 
 /// The up axis of the maps' vectors.
@@ -76,6 +78,25 @@ pub struct BakedFrame {
     pub time: f64,
     /// The maps.
     pub maps: BakeMaps,
+    /// What the grid could not carry ([`GridLimit`]): for a trochoid or Gerstner sea the waves
+    /// left out, for the FFT sea the slopes its filtered normals average away; `None` for the
+    /// sine sea, whose maps are point samples.
+    pub limit: Option<GridLimit>,
+}
+
+/// The waves a bake's grid leaves out: those shorter than two texels, which the grid would show
+/// as other, longer waves (brine-waves `grid_band`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GridLimit {
+    /// Waves shorter than this are left out (m): two texels.
+    pub shortest_wave_m: f64,
+    /// Waves faded (shorter than three texels), of which those under two are left out; `None`
+    /// for the FFT sea, whose normals are filtered instead.
+    pub faded_waves: Option<usize>,
+    /// Slope covariance `(⟨ζx²⟩, ⟨ζx ζz⟩, ⟨ζz²⟩)` (dimensionless, Brine's axes x east, z south)
+    /// of what the fade removed (for the FFT sea: what the normals' filter averaged away, the
+    /// mean over the texels): for a roughness added to the normal map's.
+    pub lost_slope_covariance: [f64; 3],
 }
 
 /// The baked maps (f32 per channel).
@@ -101,7 +122,12 @@ pub struct BakeMaps {
 ///
 /// Texel `(i, j)` is the rest position `u = (iL/N, jL/N)`: it goes to `x = u + D(u)` (brine-waves
 /// `SeaFrame::rest_displacement`), and the maps hold the traced surface there (`SeaFrame::sample`)
-/// and the renderer's white water at a footprint of one texel.
+/// and the renderer's white water at a footprint of one texel. A trochoid or Gerstner sea is
+/// baked band-limited to the grid: its waves shorter than two texels are left out, those up to
+/// three faded (brine-waves `Ocean::grid_band`), so that no wave shows in the maps as another
+/// (sampled on the grid, a wave beyond the grid's Nyquist wavenumber reads as a longer wave of
+/// another direction); [`BakedFrame::limit`] says what was left out. The white water is the
+/// whole sea's.
 ///
 /// # Arguments
 /// - `world`: the world on the lattice; `t`: time (s), finite; `options`: checked options.
@@ -109,30 +135,72 @@ pub struct BakeMaps {
 /// # Returns
 /// The [`BakedFrame`].
 pub fn bake_frame(world: &World, t: f64, options: &BakeOptions) -> BakedFrame {
-    world.with_sea_at(t, |frame| {
-        let n = options.size;
-        let texel = options.tile_m / n as f64;
-        let up = options.up;
-        let f3 = |v: DVec3| v.as_vec3().to_array();
-        let mut maps = BakeMaps {
-            displacement: vec![[0.0; 3]; n * n],
-            normal: vec![[0.0; 3]; n * n],
-            foam: vec![0.0; n * n],
-            whitecap: vec![0.0; n * n],
-            jacobian: vec![0.0; n * n],
-            spray: vec![[0.0; 3]; n * n],
-        };
-        // Row by row, each texel written in place in every map.
-        let rows = maps
-            .displacement
-            .par_chunks_mut(n)
-            .zip(maps.normal.par_chunks_mut(n))
-            .zip(maps.foam.par_chunks_mut(n))
-            .zip(maps.whitecap.par_chunks_mut(n))
-            .zip(maps.jacobian.par_chunks_mut(n))
-            .zip(maps.spray.par_chunks_mut(n))
-            .enumerate();
-        rows.for_each(|(j, (((((disp, nrm), foam), wcap), jac), spray))| {
+    let texel = options.tile_m / options.size as f64;
+    // A valid sea's faded Gerstner sum always builds (fading only lowers ΣQ); were it refused,
+    // the maps would be the point samples of the sine and FFT seas.
+    match world.ocean().grid_band(texel).ok().flatten() {
+        Some((ocean, band)) => {
+            let limit = Some(GridLimit {
+                shortest_wave_m: 2.0 * texel,
+                faded_waves: Some(band.faded),
+                lost_slope_covariance: band.lost_slope_covariance.to_array(),
+            });
+            let mut baked = if band.faded == 0 {
+                // Every wave fits: the world's own sea, unchanged.
+                bake_frame_of(world, t, options, None)
+            } else {
+                bake_frame_of(world, t, options, Some(&ocean.at_time(t)))
+            };
+            baked.limit = limit;
+            baked
+        }
+        None => bake_frame_of(world, t, options, None),
+    }
+}
+
+/// [`bake_frame`] on the world's sea at `t`, or on `frame` when given (the band-limited sea).
+fn bake_frame_of(world: &World, t: f64, options: &BakeOptions, frame: Option<&SeaFrame>) -> BakedFrame {
+    match frame {
+        Some(f) => bake_sea(world, f, t, options),
+        None => world.with_sea_at(t, |f| bake_sea(world, f, t, options)),
+    }
+}
+
+/// The maps of the sea `frame` at `t`, with `world`'s white water.
+fn bake_sea(world: &World, frame: &SeaFrame, t: f64, options: &BakeOptions) -> BakedFrame {
+    let n = options.size;
+    let texel = options.tile_m / n as f64;
+    let up = options.up;
+    let f3 = |v: DVec3| v.as_vec3().to_array();
+    let mut maps = BakeMaps {
+        displacement: vec![[0.0; 3]; n * n],
+        normal: vec![[0.0; 3]; n * n],
+        foam: vec![0.0; n * n],
+        whitecap: vec![0.0; n * n],
+        jacobian: vec![0.0; n * n],
+        spray: vec![[0.0; 3]; n * n],
+    };
+    // Row by row, each texel written in place in every map.
+    let rows = maps
+        .displacement
+        .par_chunks_mut(n)
+        .zip(maps.normal.par_chunks_mut(n))
+        .zip(maps.foam.par_chunks_mut(n))
+        .zip(maps.whitecap.par_chunks_mut(n))
+        .zip(maps.jacobian.par_chunks_mut(n))
+        .zip(maps.spray.par_chunks_mut(n))
+        .enumerate();
+    // The FFT sea's normals are read through its slope pyramids over a box of two texels (a
+    // Gaussian of the same spread), so that no cascade finer than the texels aliases into them;
+    // the slopes the box averages away are summed for `grid_limit`.
+    let lean = match frame.surface() {
+        FrameSurface::Fft(_) if frame.time().to_bits() == world.time().to_bits() => world.fft_slopes.as_ref(),
+        _ => None,
+    };
+    let nyquist_sigma = 2.0 * texel / BOX_WIDTH_PER_SIGMA;
+    let lost: Vec<DVec3> = rows
+        .map(|(j, (((((disp, nrm), foam), wcap), jac), spray))| {
+            let mut lost = DVec3::ZERO;
             for i in 0..n {
                 let u = DVec2::new(i as f64, j as f64) * texel;
                 let d = frame.rest_displacement(u);
@@ -143,7 +211,15 @@ pub fn bake_frame(world: &World, t: f64, options: &BakeOptions) -> BakedFrame {
                 let (mu, e) = s.minor_eigen();
                 let e3 = up.convert(DVec3::new(e.x, 0.0, e.y));
                 disp[i] = f3(up.convert(DVec3::new(d.x, s.height, d.y)));
-                nrm[i] = f3(up.convert(s.normal));
+                let normal = match lean {
+                    Some(l) => {
+                        let f = l.filtered(x.x, x.y, nyquist_sigma);
+                        lost += f.covariance;
+                        DVec3::new(-f.gradient.x, 1.0, -f.gradient.y).normalize()
+                    }
+                    None => s.normal,
+                };
+                nrm[i] = f3(up.convert(normal));
                 foam[i] = cover.foam as f32;
                 wcap[i] = cover.whitecap as f32;
                 jac[i] = s.jacobian as f32;
@@ -152,9 +228,14 @@ pub fn bake_frame(world: &World, t: f64, options: &BakeOptions) -> BakedFrame {
                     UpAxis::Z => [e3.x as f32, e3.y as f32, mu as f32],
                 };
             }
-        });
-        BakedFrame { size: n, time: t, maps }
-    })
+            lost
+        })
+        .collect();
+    let limit = lean.map(|_| {
+        let mean = lost.iter().fold(DVec3::ZERO, |a, &b| a + b) / (n * n) as f64;
+        GridLimit { shortest_wave_m: 2.0 * texel, faded_waves: None, lost_slope_covariance: mean.to_array() }
+    });
+    BakedFrame { size: n, time: t, maps, limit }
 }
 
 /// Encoding of the 16-bit PNG maps: `value = offset + scale × code/65535`.

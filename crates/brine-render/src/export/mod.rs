@@ -5,7 +5,7 @@ pub mod bake;
 pub mod mesh;
 mod query;
 
-pub use bake::{BakeMaps, BakeOptions, BakedFrame, UpAxis, bake_frame, write_bake_frame};
+pub use bake::{BakeMaps, BakeOptions, BakedFrame, GridLimit, UpAxis, bake_frame, write_bake_frame};
 pub use mesh::{Mesh, MeshFormat, MeshGrid, camera_mesh, camera_mesh_faded_supported, grid_mesh, write_mesh};
 pub use query::{QueryPoint, QueryResult, parse_points, query_points};
 

@@ -3,6 +3,8 @@
 
 use std::f64::consts::TAU;
 
+use glam::DVec3;
+
 use crate::{Trochoid, TrochoidSet, WaveError};
 
 /// A square tile of side `L` and, optionally, a loop period `T`, to which a wave set is snapped
@@ -93,6 +95,77 @@ impl TileLattice {
     }
 }
 
+/// The waves a square grid can carry, and the slopes it cannot: what [`grid_band`] returns.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GridBand {
+    /// The waves faded by their grid weights (the waves of weight 0 left out).
+    pub waves: TrochoidSet,
+    /// Slope covariance `(⟨ζx²⟩, ⟨ζx ζz⟩, ⟨ζz²⟩)` (dimensionless, world axes) of what the fade
+    /// removed: `Σ (⟨sᵢ²⟩ − ⟨s′ᵢ²⟩) (d̂x², d̂x d̂z, d̂z²)`, each wave's mean-square slope
+    /// ([`Trochoid::mean_square_slope`]) before and after.
+    pub lost_slope_covariance: DVec3,
+    /// Number of waves faded (weight below 1), of which some may be left out.
+    pub faded: usize,
+}
+
+/// The waves of `set` that a square grid of spacing `Δ` samples without aliasing: each wave of
+/// wavelength `λ` is kept with the weight
+///
+///     w(λ) = smoothstep(0, 1, 2 (λ/(2Δ) − 1))
+///
+/// (0 for `λ ≤ 2Δ`, 1 for `λ ≥ 3Δ`; the footprint fade of the renderer's primary rays, brine-core
+/// `footprint_weight`, with a footprint of two grid spacings), its amplitude and its steepness
+/// both multiplied by `w` (a smaller trochoid of the same wave vector, its particles on circles of
+/// `w` times the radius). A wave of `λ ≤ 2Δ` has a wave-vector component at or beyond the grid's
+/// Nyquist wavenumber `π/Δ`; sampled on the grid, it would read as another, longer wave (a
+/// grid of `N` points over a tile `L` = `NΔ` sees the lattice vector `(2π/L)(m, n)` as
+/// `(m mod N, n mod N)`). The fade leaves such waves out and eases the ones just above.
+///
+/// # Arguments
+/// - `set`: the waves.
+/// - `spacing_m`: grid spacing `Δ` (m), `> 0` and finite.
+///
+/// # Returns
+/// The [`GridBand`]: the kept waves (the same set when every wave is at least `3Δ` long) and the
+/// slopes the fade removed.
+///
+/// # References
+/// Shannon 1949 (sampling); Bruneton, Neyret & Holzschuch 2010, §4 (what the geometry cannot
+/// resolve goes to the shading: here, the lost covariance for the map's user).
+pub fn grid_band(set: &TrochoidSet, spacing_m: f64) -> GridBand {
+    debug_assert!(spacing_m > 0.0 && spacing_m.is_finite(), "spacing {spacing_m} m");
+    let mut waves = Vec::with_capacity(set.len());
+    let mut lost = DVec3::ZERO;
+    let mut faded = 0;
+    for w in set.waves() {
+        let weight = brine_core::footprint::footprint_weight(w.wavelength(), 2.0 * spacing_m);
+        if weight >= 1.0 {
+            waves.push(*w);
+            continue;
+        }
+        faded += 1;
+        let kept = (weight > 0.0)
+            .then(|| {
+                Trochoid::new(
+                    weight * w.amplitude(),
+                    w.wavenumber(),
+                    w.direction(),
+                    w.omega(),
+                    w.phase(),
+                    weight * w.steepness(),
+                )
+            })
+            .transpose()
+            .ok()
+            .flatten();
+        let d = w.direction_vector();
+        let removed = w.mean_square_slope() - kept.as_ref().map_or(0.0, Trochoid::mean_square_slope);
+        lost += removed * DVec3::new(d.x * d.x, d.x * d.y, d.y * d.y);
+        waves.extend(kept);
+    }
+    GridBand { waves: TrochoidSet::new(waves), lost_slope_covariance: lost, faded }
+}
+
 /// Wave `w` moved to the wave vector `(kx, kz)` (see [`TileLattice::snap`]).
 fn snapped(w: &Trochoid, kx: f64, kz: f64, loop_period_s: Option<f64>) -> Result<Trochoid, WaveError> {
     let k = kx.hypot(kz);
@@ -125,5 +198,55 @@ mod tests {
             assert!((b.sample(x, z).height - h).abs() < 1e-5, "loop");
         }
         assert!(TileLattice::new(0.0, None).is_err() && TileLattice::new(10.0, Some(-1.0)).is_err());
+    }
+
+    /// Sampled on a grid of `N` points over the tile, a snapped wave of `m` cycles along x reads
+    /// as one of `m − N` cycles once `m > N/2`: the grid band leaves such waves out, keeps the
+    /// waves of at least three spacings whole, and its lost covariance is what it took.
+    #[test]
+    fn the_grid_band_leaves_out_what_the_grid_would_alias() {
+        let (tile, n) = (64.0, 32usize);
+        let spacing = tile / n as f64;
+        let dk = TAU / tile;
+        // Waves of 24, 20, 17, 12 and 6 cycles over the tile along x: λ = 1.33, 1.6, 1.88, 2.67
+        // and 5.33 grid spacings.
+        let wave = |m: f64, a: f64| Trochoid::new(a, m * dk, 0.0, 1.0, 0.3, 0.2).unwrap();
+        let set = TrochoidSet::new(vec![
+            wave(24.0, 0.01),
+            wave(20.0, 0.01),
+            wave(17.0, 0.01),
+            wave(12.0, 0.02),
+            wave(6.0, 0.05),
+        ]);
+        // The aliasing itself: on the grid, 24 cycles are −8 cycles, a different wave.
+        let alias = Ocean::trochoids(TrochoidSet::new(vec![wave(24.0, 0.01)])).at_time(0.0);
+        let seen = Ocean::trochoids(TrochoidSet::new(vec![
+            Trochoid::new(0.01, 8.0 * dk, std::f64::consts::PI, 1.0, 0.3, 0.2).unwrap(),
+        ]))
+        .at_time(0.0);
+        for i in 0..n {
+            let x = i as f64 * spacing;
+            assert!((alias.height(x, 0.0) - seen.height(x, 0.0)).abs() < 1e-5, "texel {i}");
+        }
+        let band = grid_band(&set, spacing);
+        // λ ≤ 2Δ (24, 20 and 17 cycles: 1.33Δ, 1.6Δ, 1.88Δ) out; 12 cycles (2.67Δ) faded; 6 whole.
+        let kept: Vec<f64> = band.waves.waves().iter().map(|w| w.wavenumber() / dk).collect();
+        assert_eq!(kept.len(), 2, "{kept:?}");
+        assert!((kept[0] - 12.0).abs() < 1e-9 && (kept[1] - 6.0).abs() < 1e-9);
+        assert_eq!(band.faded, 4);
+        let w12 = brine_core::footprint::footprint_weight(TAU / (12.0 * dk), 2.0 * spacing);
+        assert!(w12 > 0.0 && w12 < 1.0);
+        assert!((band.waves.waves()[0].amplitude() - w12 * 0.02).abs() < 1e-15);
+        assert!((band.waves.waves()[0].steepness() - w12 * 0.2).abs() < 1e-15);
+        assert_eq!(band.waves.waves()[1], set.waves()[4]);
+        // Lost: three whole waves and part of a fourth, all along x.
+        let whole: f64 = set.waves()[..3].iter().map(Trochoid::mean_square_slope).sum();
+        let part = set.waves()[3].mean_square_slope() - band.waves.waves()[0].mean_square_slope();
+        assert!((band.lost_slope_covariance.x - (whole + part)).abs() < 1e-15 * whole);
+        assert!(band.lost_slope_covariance.y.abs() < 1e-18 && band.lost_slope_covariance.z.abs() < 1e-18);
+        // A grid fine enough for every wave keeps the set as it is.
+        let fine = grid_band(&set, spacing / 4.0);
+        assert_eq!(fine.waves, set);
+        assert_eq!((fine.faded, fine.lost_slope_covariance), (0, DVec3::ZERO));
     }
 }
