@@ -79,8 +79,9 @@ pub struct BakedFrame {
     /// The maps.
     pub maps: BakeMaps,
     /// What the grid could not carry ([`GridLimit`]): for a trochoid or Gerstner sea the waves
-    /// left out, for the FFT sea the slopes its filtered normals average away; `None` for the
-    /// sine sea, whose maps are point samples.
+    /// left out, for the FFT sea the slopes its filtered normals average away (baked at the
+    /// world's own time, whose slope pyramids the world holds; at another instant its maps are
+    /// point samples); `None` for the sine sea, whose maps are point samples.
     pub limit: Option<GridLimit>,
 }
 
