@@ -111,7 +111,9 @@ pub struct GridBand {
 /// The waves of `set` that a square grid of spacing `Δ` samples without aliasing: each wave of
 /// wavelength `λ` is kept with the weight
 ///
-///     w(λ) = smoothstep(0, 1, 2 (λ/(2Δ) − 1))
+/// ```text
+/// w(λ) = smoothstep(0, 1, 2 (λ/(2Δ) − 1))
+/// ```
 ///
 /// (0 for `λ ≤ 2Δ`, 1 for `λ ≥ 3Δ`; the footprint fade of the renderer's primary rays, brine-core
 /// `footprint_weight`, with a footprint of two grid spacings), its amplitude and its steepness
