@@ -236,9 +236,9 @@ mod tests {
         assert_eq!(kept.len(), 2, "{kept:?}");
         assert!((kept[0] - 12.0).abs() < 1e-9 && (kept[1] - 6.0).abs() < 1e-9);
         assert_eq!(band.faded, 4);
-        let w12 = brine_core::footprint::footprint_weight(TAU / (12.0 * dk), 2.0 * spacing);
-        assert!(w12 > 0.0 && w12 < 1.0);
-        assert!((band.waves.waves()[0].amplitude() - w12 * 0.02).abs() < 1e-15);
+        // 12 cycles: λ/(2Δ) = (64/12)/4 = 4/3, u = 2(4/3 − 1) = 2/3, w = u²(3 − 2u) = 20/27.
+        let w12 = 20.0 / 27.0;
+        assert!((band.waves.waves()[0].amplitude() - w12 * 0.02).abs() < 1e-15, "{:?}", band.waves.waves()[0]);
         assert!((band.waves.waves()[0].steepness() - w12 * 0.2).abs() < 1e-15);
         assert_eq!(band.waves.waves()[1], set.waves()[4]);
         // Lost: three whole waves and part of a fourth, all along x.
