@@ -2,7 +2,7 @@
 //! baked maps that tile and loop, meshes that the Khronos validator accepts.
 
 use brine_render::export::{
-    BakeOptions, MeshGrid, QueryPoint, UpAxis, bake_frame, grid_mesh, query_points, write_mesh,
+    BakeOptions, MeshGrid, QueryPoint, UpAxis, bake_frame, grid_mesh, grid_mesh_band_limited, query_points, write_mesh,
 };
 use brine_render::{RenderOptions, Scene, World, render_world};
 use glam::{DVec2, DVec3};
@@ -167,6 +167,47 @@ fn baked_maps_hold_no_wave_the_grid_cannot_carry() {
     let lost = cl.lost_slope_covariance[0] + cl.lost_slope_covariance[2];
     eprintln!("fine {f:.5}, coarse {c:.5} + lost {lost:.5} = {:.5}", c + lost);
     assert!(lost > 0.2 * f, "the coarse grid lost only {lost} of {f}");
+    assert!(((c + lost) / f - 1.0).abs() < SLOPE_BUDGET_REL, "coarse {c} + lost {lost} against fine {f}");
+}
+
+/// `brine mesh --band-limit`: a grid of vertices `Δ` apart leaves out the waves shorter than
+/// `2Δ` (which its vertices would show as other, longer waves), like a bake. Its vertices lie on
+/// the band-limited sea, not on the full one; its normals' slopes plus the ones it says it left
+/// out are the slopes of a grid fine enough for every wave; and on such a grid it is the plain
+/// mesh, byte for byte.
+#[test]
+fn a_band_limited_mesh_holds_no_wave_its_grid_cannot_carry() {
+    /// As in `baked_maps_hold_no_wave_the_grid_cannot_carry`, which samples the same points
+    /// (the vertices of one tile of the lattice sea, its far row and column left out).
+    const SLOPE_BUDGET_REL: f64 = 0.05;
+    let scene = Scene::default_scene();
+    let tile = 64.0;
+    let world = World::on_lattice(&scene, Some(&brine_waves_lattice(tile, None))).unwrap();
+    let t = scene.sea.time_s;
+    let grid = |spacing_m| MeshGrid { center: DVec2::splat(0.5 * tile), size_m: tile, spacing_m };
+    let one_tile = |m: &brine_render::export::Mesh, spacing: f64| {
+        let n = (tile / spacing) as usize + 1;
+        (0..(n - 1) * (n - 1)).map(|k| m.normals[(k / (n - 1)) * n + k % (n - 1)]).collect::<Vec<_>>()
+    };
+    let (fine, fine_limit) = grid_mesh_band_limited(&world, t, &grid(0.125)).unwrap();
+    assert_eq!(fine_limit.faded_waves, Some(0));
+    assert!(fine == grid_mesh(&world, t, &grid(0.125)), "a grid that carries every wave changed the mesh");
+    let (coarse, limit) = grid_mesh_band_limited(&world, t, &grid(2.0)).unwrap();
+    assert!(limit.faded_waves.unwrap() > 10, "{limit:?}");
+    // The vertices are on the band-limited sea, and the short waves are really gone from them.
+    let (band_sea, _) = world.ocean().grid_band(2.0).unwrap().unwrap();
+    let band_frame = band_sea.at_time(t);
+    let mut off_full = 0.0_f64;
+    for p in coarse.positions.iter().step_by(7) {
+        let (x, y, z) = (f64::from(p[0]), f64::from(p[1]), f64::from(p[2]));
+        assert!((band_frame.height(x, z) - y).abs() < 1e-5, "vertex off the band-limited surface");
+        off_full = off_full.max((world.sea().height(x, z) - y).abs());
+    }
+    assert!(off_full > 1e-3, "the coarse mesh is the full surface (off by at most {off_full} m)");
+    let f = map_mean_square_slope(&one_tile(&fine, 0.125));
+    let c = map_mean_square_slope(&one_tile(&coarse, 2.0));
+    let lost = limit.lost_slope_covariance[0] + limit.lost_slope_covariance[2];
+    eprintln!("fine {f:.5}, coarse {c:.5} + lost {lost:.5} = {:.5}", c + lost);
     assert!(((c + lost) / f - 1.0).abs() < SLOPE_BUDGET_REL, "coarse {c} + lost {lost} against fine {f}");
 }
 

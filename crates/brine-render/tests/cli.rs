@@ -226,3 +226,29 @@ fn a_bake_says_what_its_grid_left_out() {
     assert_eq!((c(&y, "xx") + c(&y, "yy")).to_bits(), y["lost_mean_square_slope"].as_f64().unwrap().to_bits());
     assert_eq!((fine["faded_waves"].as_u64(), fine["lost_mean_square_slope"].as_f64()), (Some(0), Some(0.0)));
 }
+
+/// `brine mesh` says when its grid aliases waves and, with `--band-limit`, what it left out; the
+/// FFT sea, whose cascades are grids of their own, is refused with a message and nothing written.
+#[test]
+fn a_mesh_says_which_waves_its_grid_cannot_carry() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = |args: &[&str]| {
+        let out = brine(args, dir.path());
+        (out.status.code(), String::from_utf8_lossy(&out.stderr).into_owned())
+    };
+    let coarse = ["mesh", "-o", "sea.ply", "--size-m", "20", "--spacing-m", "2"];
+    let (code, err) = run(&coarse);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(err.contains("shorter than two spacings (4.000 m): the grid aliases them"), "{err}");
+    let (code, err) = run(&[&coarse[..], &["--band-limit"]].concat());
+    assert_eq!(code, Some(0), "{err}");
+    assert!(err.contains("those under 4.000 m left out") && err.contains("mean-square slope 0.0"), "{err}");
+    let (code, err) = run(&["mesh", "-o", "fine.ply", "--size-m", "4", "--spacing-m", "0.1", "--band-limit"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(err.contains("nothing left out") && !err.contains("note:"), "{err}");
+    std::fs::write(dir.path().join("fft.toml"), "[sea]\nsurface = \"fft\"\n").unwrap();
+    let (code, err) = run(&["mesh", "fft.toml", "-o", "fft.ply", "--band-limit"]);
+    assert_eq!(code, Some(2));
+    assert!(err.starts_with("error: --band-limit: only the trochoid and Gerstner seas"), "{err}");
+    assert!(!dir.path().join("fft.ply").exists());
+}

@@ -153,6 +153,12 @@ pub struct MeshArgs {
     /// pixel footprint (the trochoid sea); without, every wave everywhere.
     #[arg(long, requires = "camera")]
     pub faded: bool,
+    /// With the regular grid: leave out the waves shorter than two spacings, which the grid would
+    /// show as other, longer waves, and fade those up to three (the trochoid and Gerstner seas);
+    /// the slope covariance left out is printed, for a roughness on the mesh's material. Without,
+    /// every vertex lies on the rendered surface, short waves included.
+    #[arg(long, conflicts_with = "camera")]
+    pub band_limit: bool,
     /// Time of the surface (s); overrides `sea.time_s`.
     #[arg(long, value_parser = super::finite)]
     pub time: Option<f64>,
@@ -176,6 +182,7 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
     crate::output::remove_temporaries_on_signal().map_err(CliError::Failure)?;
     let started = std::time::Instant::now();
     let world = world_of(&scene, None)?;
+    let mut limit = None;
     let mesh = if args.camera {
         let (_, _, n) = crate::export::mesh::camera_layout(&world, args.pixels);
         crate::export::check_memory(&format!("a camera mesh of {n} vertices"), n * 112).map_err(CliError::Input)?;
@@ -185,6 +192,11 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
             ));
         }
         crate::export::camera_mesh(&world, scene.sea.time_s, args.pixels, args.faded)
+    } else if args.band_limit {
+        let (mesh, l) =
+            crate::export::grid_mesh_band_limited(&world, scene.sea.time_s, &grid).map_err(CliError::Input)?;
+        limit = Some(l);
+        mesh
     } else {
         crate::export::grid_mesh(&world, scene.sea.time_s, &grid)
     };
@@ -197,8 +209,54 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
             mesh.indices.len() / 3,
             started.elapsed().as_secs_f64()
         );
+        for line in mesh_band_summary(&world, &grid, args.camera, limit.as_ref()) {
+            eprintln!("{line}");
+        }
     }
     Ok(())
+}
+
+/// What `brine mesh` says about the waves its regular grid cannot carry: with `--band-limit`,
+/// what it left out; without, how many waves alias into the vertices (the trochoid and Gerstner
+/// seas; nothing for a camera mesh, whose spacing follows the pixels).
+fn mesh_band_summary(
+    world: &World,
+    grid: &MeshGrid,
+    camera: bool,
+    limit: Option<&crate::export::GridLimit>,
+) -> Vec<String> {
+    if let Some(l) = limit {
+        let c = l.lost_slope_covariance;
+        return match l.faded_waves {
+            Some(0) | None => vec!["every wave is at least three spacings long: nothing left out".to_owned()],
+            Some(n) => vec![format!(
+                "{n} waves shorter than {:.3} m (three spacings) faded, those under {:.3} m left out; slope covariance left out (⟨ζx²⟩, ⟨ζxζz⟩, ⟨ζz²⟩) = ({:.5}, {:.5}, {:.5}), mean-square slope {:.5}",
+                1.5 * l.shortest_wave_m,
+                l.shortest_wave_m,
+                c[0],
+                c[1],
+                c[2],
+                c[0] + c[2]
+            )],
+        };
+    }
+    if camera {
+        return Vec::new();
+    }
+    match world.ocean().grid_band(grid.spacing_m) {
+        Ok(Some((_, band))) => {
+            let all = world.ocean().waves().map_or(0, brine_waves::TrochoidSet::len);
+            if band.waves.len() == all {
+                return Vec::new();
+            }
+            vec![format!(
+                "note: {} of the sea's {all} waves are shorter than two spacings ({:.3} m): the grid aliases them (its vertices show them as longer waves in other directions); --band-limit leaves them out",
+                all - band.waves.len(),
+                2.0 * grid.spacing_m
+            )]
+        }
+        _ => Vec::new(),
+    }
 }
 
 /// Arguments of `brine bake`.

@@ -6,6 +6,7 @@ use std::path::Path;
 use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
+use super::GridLimit;
 use crate::World;
 
 /// A triangle mesh of the sea: positions (m, y up), unit normals, foam and whitecap cover per
@@ -122,20 +123,55 @@ fn grid_of(rows: usize, cols: usize, vertices: Vec<([f32; 3], [f32; 3], f32, f32
 /// # Returns
 /// The [`Mesh`].
 pub fn grid_mesh(world: &World, t: f64, grid: &MeshGrid) -> Mesh {
-    world.with_sea_at(t, |frame| {
-        let n = grid.count() as usize;
-        let origin = grid.center - DVec2::splat(0.5 * (n - 1) as f64 * grid.spacing_m);
-        let vertices: Vec<_> = (0..n * n)
-            .into_par_iter()
-            .with_min_len(1024)
-            .map(|k| {
-                let u = origin + DVec2::new((k % n) as f64, (k / n) as f64) * grid.spacing_m;
-                let x = u + frame.rest_displacement(u);
-                vertex(world, frame, x, grid.spacing_m)
-            })
-            .collect();
-        grid_of(n, n, vertices)
-    })
+    world.with_sea_at(t, |frame| grid_mesh_of(world, frame, grid))
+}
+
+/// The sea a grid can carry: [`grid_mesh`] of the waves at least two spacings long, those up to
+/// three faded (brine-waves `grid_band`, the band a bake keeps). A grid samples a wave shorter
+/// than two spacings as another, longer wave in another direction; the vertices of this mesh
+/// hold none, and the slope covariance left out is returned for a roughness on its material.
+/// Every vertex lies on the band-limited surface, not on the rendered one (which differs from
+/// it by the short waves' heights, millimetres to centimetres).
+///
+/// # Arguments
+/// - `world`, `t`, `grid`: as [`grid_mesh`].
+///
+/// # Returns
+/// The [`Mesh`] and what the grid left out ([`GridLimit`]); a sea whose waves all fit gives the
+/// mesh of [`grid_mesh`], byte for byte.
+///
+/// # Errors
+/// A message for the sine and FFT seas, which have no band-limited sum of waves (the FFT sea's
+/// cascades are grids of their own; the sine sea's short waves are normals).
+pub fn grid_mesh_band_limited(world: &World, t: f64, grid: &MeshGrid) -> Result<(Mesh, GridLimit), String> {
+    let unsupported = || {
+        "--band-limit: only the trochoid and Gerstner seas (sea.surface = \"trochoids\" or \"gerstner\") are sums of waves a grid can leave out (the FFT sea: `brine bake` filters its normal map)".to_owned()
+    };
+    // A valid sea's faded Gerstner sum always builds (fading only lowers ΣQ).
+    let (ocean, band) = world.ocean().grid_band(grid.spacing_m).map_err(|e| e.to_string())?.ok_or_else(unsupported)?;
+    let limit = GridLimit {
+        shortest_wave_m: 2.0 * grid.spacing_m,
+        faded_waves: Some(band.faded),
+        lost_slope_covariance: band.lost_slope_covariance.to_array(),
+    };
+    let mesh = if band.faded == 0 { grid_mesh(world, t, grid) } else { grid_mesh_of(world, &ocean.at_time(t), grid) };
+    Ok((mesh, limit))
+}
+
+/// [`grid_mesh`] on the sea `frame`.
+fn grid_mesh_of(world: &World, frame: &brine_waves::SeaFrame, grid: &MeshGrid) -> Mesh {
+    let n = grid.count() as usize;
+    let origin = grid.center - DVec2::splat(0.5 * (n - 1) as f64 * grid.spacing_m);
+    let vertices: Vec<_> = (0..n * n)
+        .into_par_iter()
+        .with_min_len(1024)
+        .map(|k| {
+            let u = origin + DVec2::new((k % n) as f64, (k / n) as f64) * grid.spacing_m;
+            let x = u + frame.rest_displacement(u);
+            vertex(world, frame, x, grid.spacing_m)
+        })
+        .collect();
+    grid_of(n, n, vertices)
 }
 
 /// The sea of `world` at time `t` as the camera sees it: a polar grid around the camera's foot,
