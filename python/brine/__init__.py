@@ -231,7 +231,7 @@ def whitecap_report(**params: Any) -> Any:
 
 
 class Scene:
-    """A scene of the ``brine render`` format (docs/scene.md): render it, query it, bake it.
+    """A scene of the ``brine render`` format (docs/scene.md): render it, query it, mesh it, bake it.
 
     ``Scene()`` is the embedded default scene; ``Scene(toml_text)`` parses TOML text;
     :meth:`from_dict` takes the same tables as a dict; :meth:`load` reads a file. The checks and
@@ -293,6 +293,43 @@ class Scene:
         (``(size, size, 3)``, m), ``normal``, ``foam``, ``whitecap``, ``jacobian``, ``spray``,
         ``tile_m``, ``time_s``. ``up``: ``"y"`` (Brine, glTF, Houdini) or ``"z"`` (Blender)."""
         return self._scene.bake(size, tile_m, t, up)
+
+    def mesh(
+        self,
+        size_m: Optional[float] = None,
+        spacing_m: Optional[float] = None,
+        center: Optional[tuple] = None,
+        t: Optional[float] = None,
+        band_limit: bool = False,
+        camera: bool = False,
+        pixels: Optional[float] = None,
+        faded: bool = False,
+    ) -> dict:
+        """The rendered sea as a triangle mesh, as ``brine mesh``: ``positions`` (float32
+        ``(n, 3)``, m, y up), ``normals``, ``foam``, ``whitecap`` (``(n,)``), ``indices`` (uint32
+        ``(m, 3)``, counter-clockwise from above), ``time_s``, ``grid_limit``.
+
+        A regular grid of rest positions ``spacing_m`` apart (default 0.5 m) over a square of
+        side ``size_m`` (default 100 m) around ``center`` ``(x, z)`` (m); with ``band_limit``,
+        without the waves shorter than two spacings (trochoid and Gerstner seas; ``grid_limit``
+        then says what was left out). ``camera=True``: the camera-adaptive grid instead, edges
+        ``pixels`` pixel footprints long (default 2, [0.125, 64]); ``faded``: the surface the
+        camera's rays draw (trochoid sea). ``t``: time (s; the scene's if ``None``)."""
+        if not camera and (pixels is not None or faded):
+            raise BrineError("pixels and faded apply to the camera mesh: pass camera=True")
+        kwargs: dict = {
+            "size_m": size_m,
+            "spacing_m": spacing_m,
+            "time": t,
+            "band_limit": band_limit,
+            "camera": camera,
+            "pixels": pixels,
+            "faded": faded,
+        }
+        if center is not None:
+            x, z = (float(c) for c in center)
+            kwargs["center"] = f"{x!r},{z!r}"
+        return self._scene.mesh(**{k: v for k, v in kwargs.items() if v is not None})
 
     def __repr__(self) -> str:
         w, h = self.size

@@ -69,3 +69,5 @@ class Scene:
         """The surface at points (m) and times (s), as ``brine query``."""
     def bake(self, size: int = 512, tile_m: Optional[float] = None, t: Optional[float] = None, up: str = "y") -> dict[str, Any]:
         """Tileable float32 maps, as ``brine bake``."""
+    def mesh(self, **kwargs: Any) -> dict[str, Any]:
+        """The sea as a triangle mesh, as ``brine mesh``."""

@@ -1,9 +1,13 @@
-//! `brine.Scene`: a scene from TOML text or a dict, rendered to arrays, queried at points and
-//! baked to maps — the same code as `brine render`, `brine query` and `brine bake`.
+//! `brine.Scene`: a scene from TOML text or a dict, rendered to arrays, queried at points, meshed
+//! and baked to maps — the same code as `brine render`, `brine query`, `brine mesh` and
+//! `brine bake`.
 
 use std::sync::OnceLock;
 
-use brine_render::export::{BakeOptions, QueryPoint, UpAxis, bake_frame, query_points};
+use brine_render::export::{
+    BakeOptions, MeshGrid, QueryPoint, UpAxis, bake_frame, camera_mesh, check_camera_mesh, grid_mesh,
+    grid_mesh_band_limited, query_points,
+};
 use brine_render::{RenderOptions, World};
 use numpy::{IntoPyArray, PyArrayMethods, PyReadonlyArray1};
 use pyo3::prelude::*;
@@ -240,6 +244,72 @@ impl Scene {
         d.set_item("spray", grid3(m.spray)?)?;
         d.set_item("tile_m", tile_m)?;
         d.set_item("time_s", frame.time)?;
+        d.set_item("grid_limit", pythonize::pythonize(py, &limit)?)?;
+        Ok(d)
+    }
+
+    /// The rendered sea as a triangle mesh, as `brine mesh`, from the command's own keywords
+    /// (`size_m`, `spacing_m`, `center` as `"x,z"`, `time`, `band_limit`, `camera`, `pixels`,
+    /// `faded`), checked by its parser.
+    ///
+    /// Returns a dict: `positions` (float32 `(n, 3)`, m, y up), `normals` (`(n, 3)`), `foam`,
+    /// `whitecap` (`(n,)`), `indices` (uint32 `(m, 3)`, counter-clockwise seen from above),
+    /// `time_s`, and `grid_limit` (as `brine bake`'s, with `band_limit`; else `None`).
+    #[pyo3(signature = (**kwargs))]
+    fn mesh<'py>(&self, py: Python<'py>, kwargs: Option<&Bound<'py, PyDict>>) -> PyResult<Bound<'py, PyDict>> {
+        // The output is the command's, not written: the parser wants one.
+        let args = match crate::parse_cli(&["mesh"], &[("output", "mesh.ply".to_owned())], kwargs)? {
+            brine_render::cli::Command::Mesh(args) => args,
+            _ => return Err(bad("the mesh command's parser returned another command")),
+        };
+        let renamed = |m: String| {
+            bad(m
+                .replace("--size-m", "size_m")
+                .replace("--spacing-m", "spacing_m")
+                .replace("--pixels", "pixels")
+                .replace("--faded", "faded")
+                .replace("--band-limit", "band_limit"))
+        };
+        let grid = MeshGrid { center: args.center, size_m: args.size_m, spacing_m: args.spacing_m };
+        if !args.camera {
+            grid.check().map_err(renamed)?;
+        }
+        let (camera, pixels, faded, band_limit) = (args.camera, args.pixels, args.faded, args.band_limit);
+        let t0 = self.scene.sea.time_s;
+        let t = args.time.unwrap_or(t0);
+        // As `brine mesh --time`: the world of the scene at `t` (the FFT sea's white water
+        // belongs to its frame), the scene's own world when `t` is its time.
+        let other;
+        let world = if t.to_bits() == t0.to_bits() {
+            self.world(py)?
+        } else {
+            let mut scene = self.scene.clone();
+            scene.sea.time_s = t;
+            other = py.detach(|| World::new(&scene)).map_err(scene_err)?;
+            &other
+        };
+        let (mesh, limit) = if camera {
+            check_camera_mesh(world, pixels, faded).map_err(renamed)?;
+            (py.detach(|| camera_mesh(world, t, pixels, faded)), None)
+        } else if band_limit {
+            let (m, l) = py.detach(|| grid_mesh_band_limited(world, t, &grid)).map_err(renamed)?;
+            (m, Some(l))
+        } else {
+            (py.detach(|| grid_mesh(world, t, &grid)), None)
+        };
+        let n = mesh.positions.len();
+        let rows3 = |v: Vec<[f32; 3]>| -> PyResult<Bound<'py, PyAny>> {
+            Ok(v.into_iter().flatten().collect::<Vec<f32>>().into_pyarray(py).reshape([n, 3])?.into_any())
+        };
+        let triangles = mesh.indices.len() / 3;
+        let d = PyDict::new(py);
+        d.set_item("positions", rows3(mesh.positions)?)?;
+        d.set_item("normals", rows3(mesh.normals)?)?;
+        d.set_item("foam", mesh.foam.into_pyarray(py))?;
+        d.set_item("whitecap", mesh.whitecap.into_pyarray(py))?;
+        d.set_item("indices", mesh.indices.into_pyarray(py).reshape([triangles, 3])?)?;
+        d.set_item("time_s", t)?;
+        let limit = limit.map(|l| brine_render::cli::export::grid_limit_json(&l, UpAxis::Y));
         d.set_item("grid_limit", pythonize::pythonize(py, &limit)?)?;
         Ok(d)
     }

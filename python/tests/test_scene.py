@@ -1,5 +1,5 @@
-"""Scenes from Python: rendered, queried and baked by the same code as `brine render`, `query`
-and `bake`."""
+"""Scenes from Python: rendered, queried, meshed and baked by the same code as `brine render`,
+`query`, `mesh` and `bake`."""
 
 import numpy as np
 import pytest
@@ -93,6 +93,48 @@ def test_a_bake_samples_one_surface_at_any_size(scene):
     assert coarse["lost_mean_square_slope"] > 0.0
 
 
+def _read_ply(path):
+    """Vertices `(n, 8)` (x y z nx ny nz foam whitecap) and triangles `(m, 3)` of a `brine mesh`
+    PLY file."""
+    data = path.read_bytes()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode()
+    n = int(header.split("element vertex ")[1].split()[0])
+    m = int(header.split("element face ")[1].split()[0])
+    vertices = np.frombuffer(data, dtype="<f4", count=8 * n, offset=end).reshape(n, 8)
+    faces = np.frombuffer(data[end + 32 * n :], dtype=np.dtype([("k", "u1"), ("i", "<u4", (3,))]), count=m)
+    assert (faces["k"] == 3).all()
+    return vertices, faces["i"]
+
+
+def test_a_mesh_is_the_cli_mesh(scene, brine_cli, tmp_path):
+    import subprocess
+
+    toml = tmp_path / "scene.toml"
+    toml.write_text("[camera]\nwidth = 48\nheight = 27\n[sea]\nwind_speed_m_s = 12.0\n")
+    for flags, kwargs in [([], {}), (["--band-limit"], {"band_limit": True})]:
+        ply = tmp_path / "sea.ply"
+        args = ["mesh", str(toml), "-o", str(ply), "-q", "--size-m", "12", "--spacing-m", "1.5", "--center", "3,-2"]
+        subprocess.run([str(brine_cli.path), *args, *flags], check=True)
+        cli_v, cli_f = _read_ply(ply)
+        m = scene.mesh(size_m=12.0, spacing_m=1.5, center=(3.0, -2.0), **kwargs)
+        assert m["positions"].shape == (81, 3) and m["positions"].dtype == np.float32
+        assert m["indices"].shape == (128, 3) and m["indices"].dtype == np.uint32
+        np.testing.assert_array_equal(m["positions"], cli_v[:, 0:3])
+        np.testing.assert_array_equal(m["normals"], cli_v[:, 3:6])
+        np.testing.assert_array_equal(m["foam"], cli_v[:, 6])
+        np.testing.assert_array_equal(m["indices"], cli_f)
+    # 1.5 m apart the grid cannot carry the waves under 3 m: the band-limited mesh leaves them
+    # out (its vertices differ from the plain mesh's) and says which slopes it lost.
+    plain, band = scene.mesh(size_m=12.0, spacing_m=1.5), scene.mesh(size_m=12.0, spacing_m=1.5, band_limit=True)
+    assert plain["grid_limit"] is None
+    assert band["grid_limit"]["shortest_wave_m"] == 3.0 and band["grid_limit"]["faded_waves"] > 0
+    assert np.abs(band["positions"][:, 1] - plain["positions"][:, 1]).max() > 1e-3
+    cam = scene.mesh(camera=True, pixels=1.0, faded=True)
+    assert cam["positions"].shape[0] > 100 and cam["indices"].max() < cam["positions"].shape[0]
+    np.testing.assert_allclose(np.linalg.norm(cam["normals"], axis=-1), 1.0, atol=1e-5)
+
+
 def test_bad_scenes_and_arguments_raise():
     with pytest.raises(brine.BrineError, match=r"my\.toml line 2: sea\.wind_speed_m_s = 900"):
         brine.Scene("[sea]\nwind_speed_m_s = 900\n", "my.toml")
@@ -104,3 +146,11 @@ def test_bad_scenes_and_arguments_raise():
         brine.Scene.from_dict(SMALL).query([np.nan], [0.0])
     with pytest.raises(brine.BrineError, match="up"):
         brine.Scene.from_dict(SMALL).bake(size=8, up="x")
+    with pytest.raises(brine.BrineError, match=r"spacing_m = 0 is out of range"):
+        brine.Scene.from_dict(SMALL).mesh(spacing_m=0.0)
+    with pytest.raises(brine.BrineError, match=r"band_limit: only the trochoid and Gerstner seas"):
+        brine.Scene.from_dict({"sea": {"surface": "fft"}}).mesh(size_m=4.0, band_limit=True)
+    with pytest.raises(brine.BrineError, match=r"pixels.*0.01 is out of range"):
+        brine.Scene.from_dict(SMALL).mesh(camera=True, pixels=0.01)
+    with pytest.raises(brine.BrineError, match=r"pass camera=True"):
+        brine.Scene.from_dict(SMALL).mesh(pixels=4.0)

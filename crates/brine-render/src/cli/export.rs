@@ -184,13 +184,7 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
     let world = world_of(&scene, None)?;
     let mut limit = None;
     let mesh = if args.camera {
-        let (_, _, n) = crate::export::mesh::camera_layout(&world, args.pixels);
-        crate::export::check_memory(&format!("a camera mesh of {n} vertices"), n * 112).map_err(CliError::Input)?;
-        if args.faded && !crate::export::mesh::camera_mesh_faded_supported(&world) {
-            return Err(CliError::Input(
-                "--faded: only the trochoid sea (sea.surface = \"trochoids\") has a faded height".to_owned(),
-            ));
-        }
+        crate::export::check_camera_mesh(&world, args.pixels, args.faded).map_err(CliError::Input)?;
         crate::export::camera_mesh(&world, scene.sea.time_s, args.pixels, args.faded)
     } else if args.band_limit {
         let (mesh, l) =

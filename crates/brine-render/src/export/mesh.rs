@@ -244,6 +244,24 @@ fn faded_vertex(
     (p.as_vec3().to_array(), n.as_vec3().to_array(), cover.foam as f32, cover.whitecap as f32)
 }
 
+/// Checks a [`camera_mesh`] request before any work: `pixels` in `[0.125, 64]`, memory the
+/// machine has, and a faded height where `faded` asks for one.
+///
+/// # Errors
+/// A message naming the flag and its range, the memory estimate, or the sea without a faded
+/// height.
+pub fn check_camera_mesh(world: &World, pixels: f64, faded: bool) -> Result<(), String> {
+    if !(0.125..=64.0).contains(&pixels) {
+        return Err(format!("--pixels = {pixels} is out of range: expected [0.125, 64]"));
+    }
+    let (_, _, n) = camera_layout(world, pixels);
+    super::check_memory(&format!("a camera mesh of {n} vertices"), n.saturating_mul(112))?;
+    if faded && !camera_mesh_faded_supported(world) {
+        return Err("--faded: only the trochoid sea (sea.surface = \"trochoids\") has a faded height".to_owned());
+    }
+    Ok(())
+}
+
 /// The radii and azimuths (atan2 in the x–z plane) of [`camera_mesh`] and its vertex count.
 pub fn camera_layout(world: &World, pixels: f64) -> (Vec<f64>, Vec<f64>, u64) {
     let cam = &world.camera;
