@@ -252,3 +252,28 @@ fn a_mesh_says_which_waves_its_grid_cannot_carry() {
     assert!(err.starts_with("error: --band-limit: only the trochoid and Gerstner seas"), "{err}");
     assert!(!dir.path().join("fft.ply").exists());
 }
+
+/// `brine mesh --frames`: frame `f` of a sequence is the mesh `--time sea.time_s + f/fps` makes
+/// alone, byte for byte (each frame's world is the one its instant alone builds); a path without
+/// `#` is refused before anything is written.
+#[test]
+fn a_mesh_sequence_is_its_frames_made_alone() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = |args: &[&str]| {
+        let out = brine(args, dir.path());
+        assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    };
+    let grid = ["--size-m", "8", "--spacing-m", "0.5", "--band-limit", "-q"];
+    run(&[&["mesh", "-o", "sea_##.ply", "--frames", "2..4", "--time", "5"][..], &grid].concat());
+    // 5 + 3/24, written as Rust writes the f64 (the shortest text that reads back the same).
+    let t3 = format!("{}", 5.0 + 3.0 / 24.0);
+    run(&[&["mesh", "-o", "alone.ply", "--time", &t3][..], &grid].concat());
+    let read = |name: &str| std::fs::read(dir.path().join(name)).unwrap();
+    assert!(read("sea_03.ply") == read("alone.ply"), "frame 3 of the sequence differs from the mesh made alone");
+    assert!(read("sea_02.ply") != read("sea_03.ply"), "the sea did not move between frames");
+    assert!(!dir.path().join("sea_04.ply").exists() && !dir.path().join("sea_01.ply").exists());
+    let out = brine(&["mesh", "-o", "plain.ply", "--frames", "2"], dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("needs a run of # in the file name"));
+    assert!(!dir.path().join("plain.ply").exists());
+}

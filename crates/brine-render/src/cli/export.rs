@@ -162,6 +162,11 @@ pub struct MeshArgs {
     /// Time of the surface (s); overrides `sea.time_s`.
     #[arg(long, value_parser = super::finite)]
     pub time: Option<f64>,
+    /// A mesh sequence: frames `A..B` (B excluded) or a count `N` (= `0..N`), frame `f` at
+    /// `sea.time_s + f/fps` (`--time` for `sea.time_s`); the output path must hold a run of `#`
+    /// replaced by the zero-padded frame number.
+    #[arg(long, value_parser = super::render::parse_frames)]
+    pub frames: Option<(u32, u32)>,
     /// No summary.
     #[arg(short, long)]
     pub quiet: bool,
@@ -173,7 +178,12 @@ pub struct MeshArgs {
 /// [`CliError::Input`] for bad input (nothing is written), [`CliError::Failure`] for I/O.
 pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
     MeshFormat::from_path(&args.output).map_err(CliError::Input)?;
-    crate::output::check_writable(&args.output).map_err(CliError::Input)?;
+    let (first, last) = args.frames.unwrap_or((0, 1));
+    let path_of = |f: u32| match args.frames {
+        Some(_) => super::render::frame_path(&args.output, f),
+        None => Ok(args.output.clone()),
+    };
+    crate::output::check_writable(&path_of(first).map_err(CliError::Input)?).map_err(CliError::Input)?;
     let scene = load(args.scene.as_ref(), args.time)?;
     let grid = MeshGrid { center: args.center, size_m: args.size_m, spacing_m: args.spacing_m };
     if !args.camera {
@@ -182,27 +192,70 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
     crate::output::remove_temporaries_on_signal().map_err(CliError::Failure)?;
     let started = std::time::Instant::now();
     let world = world_of(&scene, None)?;
-    let mut limit = None;
-    let mesh = if args.camera {
+    if args.camera {
         crate::export::check_camera_mesh(&world, args.pixels, args.faded).map_err(CliError::Input)?;
-        crate::export::camera_mesh(&world, scene.sea.time_s, args.pixels, args.faded)
-    } else if args.band_limit {
-        let (mesh, l) =
-            crate::export::grid_mesh_band_limited(&world, scene.sea.time_s, &grid).map_err(CliError::Input)?;
-        limit = Some(l);
-        mesh
-    } else {
-        crate::export::grid_mesh(&world, scene.sea.time_s, &grid)
+    }
+    let time_of =
+        |f: u32| if f == 0 { scene.sea.time_s } else { scene.sea.time_s + f64::from(f) / scene.animation.fps };
+    // Each frame of a sequence has the world `brine mesh --time` builds for it alone (the white
+    // water's state belongs to its instant), from the parts that do not change built once.
+    let timeless = match args.frames {
+        Some(_) => Some(crate::world::Timeless::new(&scene, None).map_err(|e| CliError::Input(e.to_string()))?),
+        None => None,
     };
-    crate::export::write_mesh(&args.output, &mesh).map_err(CliError::Failure)?;
-    if !args.quiet {
-        eprintln!(
-            "{}: {} vertices, {} triangles in {:.2} s",
-            args.output.display(),
-            mesh.positions.len(),
-            mesh.indices.len() / 3,
-            started.elapsed().as_secs_f64()
+    let bar = if args.quiet || args.frames.is_none() || !std::io::stderr().is_terminal() {
+        ProgressBar::hidden()
+    } else {
+        let b = ProgressBar::with_draw_target(Some(u64::from(last - first)), ProgressDrawTarget::stderr());
+        b.set_style(
+            ProgressStyle::with_template("meshing {bar:40} {pos}/{len} frames, {eta} left")
+                .unwrap_or_else(|_| ProgressStyle::default_bar()),
         );
+        b
+    };
+    let mut limit = None;
+    let mut last_mesh = (0, 0);
+    for f in first..last {
+        let t = time_of(f);
+        let own;
+        let world = match &timeless {
+            Some(timeless) => {
+                let mut s = scene.clone();
+                s.sea.time_s = t;
+                own = World::at_instant(&s, timeless).map_err(|e| CliError::Input(e.to_string()))?;
+                &own
+            }
+            None => &world,
+        };
+        let mesh = if args.camera {
+            crate::export::camera_mesh(world, t, args.pixels, args.faded)
+        } else if args.band_limit {
+            let (mesh, l) = crate::export::grid_mesh_band_limited(world, t, &grid).map_err(CliError::Input)?;
+            limit = Some(l);
+            mesh
+        } else {
+            crate::export::grid_mesh(world, t, &grid)
+        };
+        let path = path_of(f).map_err(CliError::Input)?;
+        crate::export::write_mesh(&path, &mesh).map_err(CliError::Failure)?;
+        last_mesh = (mesh.positions.len(), mesh.indices.len() / 3);
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    if !args.quiet {
+        let (vertices, triangles) = last_mesh;
+        let seconds = started.elapsed().as_secs_f64();
+        match args.frames {
+            None => {
+                eprintln!("{}: {vertices} vertices, {triangles} triangles in {seconds:.2} s", args.output.display())
+            }
+            Some(_) => eprintln!(
+                "{}: {} frames of {vertices} vertices, {triangles} triangles, {:.2} s a frame",
+                args.output.display(),
+                last - first,
+                seconds / f64::from(last - first)
+            ),
+        }
         for line in mesh_band_summary(&world, &grid, args.camera, limit.as_ref()) {
             eprintln!("{line}");
         }
