@@ -270,11 +270,16 @@ class Scene:
         """The scene's time (s)."""
         return self._scene.time_s
 
-    def render(self, threads: Optional[int] = None, reference: bool = False) -> dict:
+    def render(self, threads: Optional[int] = None, reference: bool = False, frame: Optional[int] = None) -> dict:
         """Renders as ``brine render``: ``rgb`` (float32, ``(height, width, 3)``, linear sRGB,
         kcd m⁻²) and the AOVs ``depth`` (m), ``normal``, ``foam``, ``whitecap``, ``glint``, and
-        ``exposure_ev``. The image does not depend on ``threads``."""
-        return self._scene.render(threads, reference)
+        ``exposure_ev``. The image does not depend on ``threads``. ``frame``: frame ``f`` of the
+        scene's animation, as ``brine render --frames`` renders it (the waves at
+        ``sea.time_s + f/fps``, the sun at ``place.time_utc + f/fps``); what does not change
+        between frames is built once for the scene."""
+        if frame is not None and not (isinstance(frame, int) and 0 <= frame < 2**32):
+            raise BrineError(f"frame = {frame!r} is out of range: expected an integer in [0, 2³²)")
+        return self._scene.render(threads, reference, frame)
 
     def query(self, x: Any, z: Any, t: Any = None) -> dict:
         """The rendered surface at points ``(x, z)`` (m, east and south) and times ``t`` (s; the

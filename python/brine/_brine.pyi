@@ -63,7 +63,7 @@ class Scene:
     def size(self) -> tuple[int, int]: ...
     @property
     def time_s(self) -> float: ...
-    def render(self, threads: Optional[int] = None, reference: bool = False) -> dict[str, Any]:
+    def render(self, threads: Optional[int] = None, reference: bool = False, frame: Optional[int] = None) -> dict[str, Any]:
         """``rgb`` (float32 ``(h, w, 3)``, kcd m⁻²), ``depth`` (m), ``normal``, ``foam``, ``whitecap``, ``glint``, ``exposure_ev``."""
     def query(self, x: Array, z: Array, t: Optional[Array] = None) -> dict[str, Array]:
         """The surface at points (m) and times (s), as ``brine query``."""

@@ -21,6 +21,8 @@ pub(crate) struct Scene {
     scene: brine_render::Scene,
     toml: String,
     world: OnceLock<World>,
+    /// What does not change between the frames of an animation, built on the first frame.
+    timeless: OnceLock<brine_render::Timeless>,
 }
 
 /// A scene error as a Python exception: file, line and key, as the command line prints it.
@@ -30,7 +32,7 @@ fn scene_err(e: impl std::fmt::Display) -> PyErr {
 
 impl Scene {
     fn new(scene: brine_render::Scene, toml: String) -> Self {
-        Self { scene, toml, world: OnceLock::new() }
+        Self { scene, toml, world: OnceLock::new(), timeless: OnceLock::new() }
     }
 
     /// The world of the scene at its own time, built once.
@@ -106,20 +108,47 @@ impl Scene {
     /// Renders the scene as `brine render` does, with Python's lock released.
     ///
     /// `threads`: worker threads (`None`: every core; the image does not depend on it);
-    /// `reference`: the reference rendering (nothing filtered by the pixel footprint).
+    /// `reference`: the reference rendering (nothing filtered by the pixel footprint); `frame`:
+    /// frame `f ≥ 0` of the scene's animation, as `brine render --frames` renders it (the waves
+    /// at `sea.time_s + f/fps`, the sun and moon at `place.time_utc + f/fps`), the parts that do
+    /// not change between frames built once for the scene; `None`: the still.
     ///
     /// Returns a dict: `rgb` (float32, `(height, width, 3)`, linear sRGB radiance in kcd m⁻²),
     /// `depth` (m, infinite for the sky), `normal` (`(height, width, 3)`), `foam`, `whitecap`,
     /// `glint` (sr⁻¹), and `exposure_ev`, the exposure the command line would display it with.
-    #[pyo3(signature = (threads = None, reference = false))]
-    fn render<'py>(&self, py: Python<'py>, threads: Option<usize>, reference: bool) -> PyResult<Bound<'py, PyDict>> {
+    #[pyo3(signature = (threads = None, reference = false, frame = None))]
+    fn render<'py>(
+        &self,
+        py: Python<'py>,
+        threads: Option<usize>,
+        reference: bool,
+        frame: Option<u32>,
+    ) -> PyResult<Bound<'py, PyDict>> {
         if threads == Some(0) {
             return Err(bad("threads = 0 is out of range: expected at least 1 (or None for every core)"));
         }
         let options = RenderOptions { threads, profile: false, reference };
-        let frame = py
-            .detach(|| brine_render::render(&self.scene, &options, &|| {}))
-            .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
+        let failed = |e: brine_render::RenderError| pyo3::exceptions::PyRuntimeError::new_err(e.to_string());
+        let frame = match frame {
+            None => py.detach(|| brine_render::render(&self.scene, &options, &|| {})).map_err(failed)?,
+            Some(f) => {
+                let s = brine_render::cli::render::scene_at_frame(&self.scene, f, (0, f.saturating_add(1)), None)
+                    .map_err(crate::py_err)?;
+                let timeless = match self.timeless.get() {
+                    Some(t) => t,
+                    None => {
+                        let built = py.detach(|| brine_render::Timeless::new(&self.scene, None)).map_err(scene_err)?;
+                        self.timeless.get_or_init(|| built)
+                    }
+                };
+                py.detach(|| {
+                    let mut world = World::at_instant(&s, timeless)?;
+                    world.set_reference(reference);
+                    brine_render::render_world(&s, &world, &options, &|| {})
+                })
+                .map_err(failed)?
+            }
+        };
         let (w, h) = (frame.width as usize, frame.height as usize);
         let d = PyDict::new(py);
         let rgb: Vec<f32> = frame.pixels.iter().flat_map(|p| p.as_vec3().to_array()).collect();

@@ -44,6 +44,24 @@ def test_renders_are_the_same_at_any_thread_count_and_from_toml(scene, frame):
     np.testing.assert_array_equal(from_text.render()["rgb"], frame["rgb"])
 
 
+def test_animation_frames_are_the_cli_frames(scene, frame, brine_cli, tmp_path):
+    openexr = pytest.importorskip("OpenEXR")
+    import subprocess
+
+    toml = tmp_path / "scene.toml"
+    toml.write_text("[camera]\nwidth = 48\nheight = 27\n[sea]\nwind_speed_m_s = 12.0\n")
+    subprocess.run([str(brine_cli.path), "render", str(toml), "-o", str(tmp_path / "f_#.exr"), "-q", "--frames", "2..4"], check=True)
+    channels = openexr.File(str(tmp_path / "f_3.exr")).channels()
+    cli = channels["RGB"].pixels if "RGB" in channels else np.stack([channels[c].pixels for c in "RGB"], axis=-1)
+    f3 = scene.render(frame=3)
+    np.testing.assert_array_equal(f3["rgb"], cli)
+    assert not np.array_equal(f3["rgb"], frame["rgb"]), "the waves did not move"
+    # Frame 0 is the still.
+    np.testing.assert_array_equal(scene.render(frame=0)["rgb"], frame["rgb"])
+    with pytest.raises(brine.BrineError, match="frame"):
+        scene.render(frame=-1)
+
+
 def test_the_aovs_describe_sea_and_sky(frame):
     depth = frame["depth"]
     assert np.isinf(depth[0]).all(), "the top row is sky"
