@@ -233,6 +233,28 @@ mod tests {
         }
     }
 
+    /// A sea with no waves is the plane `y = 0`: every method finds it from above and from below
+    /// (where the one point of the clipped span has `F` of either sign by rounding), at the
+    /// distance to the plane, and a ray along it misses.
+    #[test]
+    fn a_flat_sea_is_hit_from_above_and_below() {
+        let s = Sine { a: 0.0, k: 1.0 };
+        for (y0, dy) in [(-3.0_f64, 0.8_f64), (-0.37, 0.013), (10.0, -0.2), (1e3, -0.999)] {
+            let d = DVec3::new((1.0 - dy * dy).sqrt(), dy, 0.0);
+            let ray = Ray::new(DVec3::new(0.3, y0, -2.0), d).unwrap();
+            let expected = -y0 / ray.direction().y;
+            for method in Method::ALL {
+                let options = TraceOptions { method, t_max: 1e6, ..TraceOptions::default() };
+                let hit = trace(&s, &ray, &options, &mut TraceStats::default());
+                let hit = hit.unwrap_or_else(|| panic!("{method:?}: the ray from y = {y0} missed the plane"));
+                assert!((hit.t - expected).abs() <= 1e-12 * expected, "{method:?}: t = {} vs {expected}", hit.t);
+                assert_eq!((hit.point.y, hit.entering), (0.0, dy < 0.0), "{method:?}");
+            }
+        }
+        let along = Ray::new(DVec3::new(0.0, 0.5, 0.0), DVec3::X).unwrap();
+        assert!(trace(&s, &along, &TraceOptions::default(), &mut TraceStats::default()).is_none());
+    }
+
     #[test]
     fn a_ray_skimming_above_a_crest_is_not_a_hit() {
         let s = Sine { a: 1.0, k: 1.0 };

@@ -53,6 +53,27 @@ pub fn trace_logged<S: LipschitzSum + ?Sized>(
     trace_impl(surface, ray, options, stats, Some(log))
 }
 
+/// The crossing of a flat zero set: bounds that are the plane `y = c` (a slab of no thickness,
+/// as a height field `F = y − h` with no waves has) hold a zero set that is that plane, which a
+/// ray not parallel to it crosses where it meets it. The sign test of the methods cannot see
+/// it: at the one point of the clipped span, `F` is the rounding of the ray's height, of either
+/// sign.
+fn plane_crossing(bounds: &crate::Aabb, ray: &Ray, t0: f64, t1: f64, stats: &mut TraceStats) -> Option<Hit> {
+    let flat = bounds.min.y == bounds.max.y
+        && bounds.min.x == f64::NEG_INFINITY
+        && bounds.min.z == f64::NEG_INFINITY
+        && bounds.max.x == f64::INFINITY
+        && bounds.max.z == f64::INFINITY;
+    let d = ray.direction();
+    if !(flat && t0 == t1 && d.y != 0.0) {
+        return None;
+    }
+    stats.hits += 1;
+    let mut point = ray.at(t0);
+    point.y = bounds.min.y;
+    Some(Hit { t: t0, point, entering: d.y < 0.0, steps: 0 })
+}
+
 fn trace_impl<S: LipschitzSum + ?Sized>(
     surface: &S,
     ray: &Ray,
@@ -62,10 +83,14 @@ fn trace_impl<S: LipschitzSum + ?Sized>(
 ) -> Option<Hit> {
     debug_assert!(options.validate().is_ok(), "invalid trace options {options:?}");
     stats.rays += 1;
-    let Some((t0, t1)) = surface.zero_set_bounds().clip(ray, options.t_min, options.t_max) else {
+    let bounds = surface.zero_set_bounds();
+    let Some((t0, t1)) = bounds.clip(ray, options.t_min, options.t_max) else {
         stats.culled += 1;
         return None;
     };
+    if let Some(hit) = plane_crossing(&bounds, ray, t0, t1, stats) {
+        return Some(hit);
+    }
     let along = Along { surface, ray, n: surface.component_count() as u64 };
     let d = ray.direction();
     match options.method {
