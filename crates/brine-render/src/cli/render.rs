@@ -156,7 +156,8 @@ pub fn scene_of(args: &RenderArgs) -> Result<Scene, CliError> {
 
 /// The scene of animation frame `frame` of the run `first..last`: the waves at
 /// `sea.time_s + frame/fps`; the sun and moon at `place.time_utc + frame/fps`, or, in a time-lapse
-/// `START..END`, at START for frame `first` and END for frame `last − 1`, linearly between.
+/// `START..END`, at START for frame 0 and END for frame `last − 1`, linearly between (whatever
+/// `first` is).
 ///
 /// # Errors
 /// [`CliError::Input`] if the time-lapse instant cannot be represented.
@@ -172,7 +173,9 @@ pub fn scene_at_frame(
     match (time_lapse, s.place.as_mut()) {
         (Some((start, end)), Some(place)) => {
             let span = (end.as_nanosecond() - start.as_nanosecond()) as f64 * 1e-9;
-            let share = if last - first > 1 { f64::from(frame - first) / f64::from(last - first - 1) } else { 0.0 };
+            // Frame 0 at START and the run's last frame at END, whatever frame the run starts
+            // at: the tail of a run (`--frames 100..240` after a crash) is the same frames.
+            let share = if last > 1 { f64::from(frame) / f64::from(last - 1) } else { 0.0 };
             let at = start
                 .checked_add(jiff::SignedDuration::from_secs_f64(span * share))
                 .map_err(|e| CliError::Input(format!("--time-lapse: {e}")))?;
@@ -306,10 +309,15 @@ mod tests {
         assert_eq!((s.sea.time_s, s.elapsed_s), (4.0, 2.0));
         assert_eq!(s.place, scene.place);
         let lapse = parse_time_lapse("2024-06-21T04:00Z..2024-06-21T22:00Z").unwrap();
-        let s = scene_at_frame(&scene, 10, (10, 19), Some(lapse)).unwrap();
+        let s = scene_at_frame(&scene, 0, (0, 19), Some(lapse)).unwrap();
         assert_eq!((s.place.as_ref().unwrap().time_utc.as_str(), s.elapsed_s), ("2024-06-21T04:00:00Z", 0.0));
         let s = scene_at_frame(&scene, 18, (10, 19), Some(lapse)).unwrap();
         assert_eq!(s.place.unwrap().time_utc, "2024-06-21T22:00:00Z");
+        // Frame 9 of 18 intervals is half-way, 13:00, in the whole run and in its tail alike.
+        for range in [(0, 19), (9, 19)] {
+            let s = scene_at_frame(&scene, 9, range, Some(lapse)).unwrap();
+            assert_eq!(s.place.unwrap().time_utc, "2024-06-21T13:00:00Z", "{range:?}");
+        }
     }
 
     #[test]
