@@ -240,18 +240,25 @@ impl Drop for InProgress {
 /// (an existing output is never touched: it is replaced only by a complete file's rename).
 /// SIGKILL cannot be caught; `--resume` removes what it leaves ([`remove_stale_temporaries`]).
 ///
+/// The handler is installed once per process; later calls return the first one's result.
+///
 /// # Errors
-/// A message if a handler cannot be installed (one is already installed, for instance).
+/// A message if a handler cannot be installed (another one is already installed, for instance).
 pub fn remove_temporaries_on_signal() -> Result<(), String> {
-    ctrlc::set_handler(|| {
-        let list = IN_PROGRESS.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-        for p in list.iter() {
-            remove_stale_temporaries(p);
-        }
-        eprintln!("\ninterrupted: no partial output was left");
-        std::process::exit(130);
-    })
-    .map_err(|e| format!("cannot install the signal handler: {e}"))
+    static INSTALLED: std::sync::OnceLock<Result<(), String>> = std::sync::OnceLock::new();
+    INSTALLED
+        .get_or_init(|| {
+            ctrlc::set_handler(|| {
+                let list = IN_PROGRESS.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+                for p in list.iter() {
+                    remove_stale_temporaries(p);
+                }
+                eprintln!("\ninterrupted: no partial output was left");
+                std::process::exit(130);
+            })
+            .map_err(|e| format!("cannot install the signal handler: {e}"))
+        })
+        .clone()
 }
 
 /// Checks, before a long render, that `path` can be written: not a folder, in an existing folder

@@ -164,7 +164,7 @@ pub fn scene_of(args: &RenderArgs) -> Result<Scene, CliError> {
 pub fn scene_at_frame(
     scene: &Scene,
     frame: u32,
-    (first, last): (u32, u32),
+    (_first, last): (u32, u32),
     time_lapse: Option<(brine_ephem::Timestamp, brine_ephem::Timestamp)>,
 ) -> Result<Scene, CliError> {
     let mut s = scene.clone();
@@ -193,34 +193,26 @@ pub fn scene_at_frame(
 pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     let scene = scene_of(args)?;
     let pattern = scene.output.path.clone();
-    let frames: Vec<(u32, PathBuf)> = match args.frames {
-        None => vec![(0, pattern.clone())],
-        Some((a, b)) => (a..b)
-            .map(|f| frame_path(&pattern, f).map(|p| (f, p)))
-            .collect::<Result<_, _>>()
-            .map_err(CliError::Input)?,
+    // An interrupted render leaves no temporary file behind.
+    let _ = crate::output::remove_temporaries_on_signal();
+    // Frame paths are made one at a time (a run of 10⁸ frames holds no list of them); the first
+    // is checked now.
+    let (first, last) = args.frames.unwrap_or((0, 1));
+    let path_of = |f: u32| match args.frames {
+        Some(_) => frame_path(&pattern, f).map_err(CliError::Input),
+        None => Ok(pattern.clone()),
     };
     // Fail before a long render if the destination cannot be written (a missing folder, a folder
     // given as the file, a read-only place such as /proc).
-    crate::output::check_writable(&frames[0].1).map_err(CliError::Input)?;
-    // An interrupted render leaves no temporary file behind.
-    let _ = crate::output::remove_temporaries_on_signal();
-    if args.resume {
-        for (_, p) in &frames {
-            crate::output::remove_stale_temporaries(p);
-        }
-    }
-    // `--resume` skips the frames already written in full; a truncated or empty frame is made
-    // again.
-    let todo: Vec<&(u32, PathBuf)> =
-        frames.iter().filter(|(_, p)| !(args.resume && crate::output::decodes_completely(p))).collect();
+    crate::output::check_writable(&path_of(first)?).map_err(CliError::Input)?;
+    let count = u64::from(last - first);
     let (w, h, spp) = (scene.camera.width, scene.camera.height, scene.camera.spp);
     let show = !args.quiet && std::io::stderr().is_terminal();
     let bar = ProgressBar::with_draw_target(
-        Some(u64::from(h) * todo.len() as u64),
+        Some(u64::from(h) * count),
         if show { ProgressDrawTarget::stderr() } else { ProgressDrawTarget::hidden() },
     );
-    let what = if args.frames.is_some() { format!("{} frames", todo.len()) } else { "rendering".to_owned() };
+    let what = if args.frames.is_some() { format!("{count} frames") } else { "rendering".to_owned() };
     bar.set_style(
         ProgressStyle::with_template(&format!(
             "{{spinner}} {what} {{bar:40.cyan/blue}} {{percent}}%  {{msg}}  ETA {{eta}}"
@@ -248,8 +240,20 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     // What does not change between frames (the fit, the ocean's amplitudes, the detail band,
     // the white water's calibration) is built once for the run.
     let mut timeless: Option<Timeless> = None;
-    for (frame, path) in &todo {
-        let s = scene_at_frame(&scene, *frame, (first, last), args.time_lapse)?;
+    let (mut done, mut skipped) = (0u64, 0u64);
+    for frame in first..last {
+        let path = &path_of(frame)?;
+        // `--resume` skips the frames already written in full (after removing what a killed
+        // run left); a truncated or empty frame is made again.
+        if args.resume {
+            crate::output::remove_stale_temporaries(path);
+            if crate::output::decodes_completely(path) {
+                skipped += 1;
+                bar.inc(u64::from(h));
+                continue;
+            }
+        }
+        let s = scene_at_frame(&scene, frame, (first, last), args.time_lapse)?;
         let parts = match timeless.take() {
             Some(t) if t.fits(&s) => t,
             _ => Timeless::new(&s, None).map_err(input)?,
@@ -264,6 +268,7 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
         write_frame(path, &frame, frame.exposure_ev, scene.output.aovs)
             .map_err(|e| CliError::Failure(e.to_string()))?;
         evaluations += frame.stats.evaluations_per_ray();
+        done += 1;
         if !show && !args.quiet && args.frames.is_some() {
             eprintln!("wrote {}", path.display());
         }
@@ -271,15 +276,15 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     bar.finish_and_clear();
     if !args.quiet {
         let secs = start.elapsed().as_secs_f64();
-        let n = todo.len().max(1) as f64;
+        let n = done.max(1) as f64;
         let target = if args.frames.is_some() {
-            format!("{} frames ({} skipped)", todo.len(), frames.len() - todo.len())
+            format!("{done} frames ({skipped} skipped)")
         } else {
             pattern.display().to_string()
         };
         eprintln!(
             "wrote {target} ({w}×{h}, {spp} spp) in {secs:.2} s: {:.2} Mrays/s, {:.1} evaluations per ray",
-            rays_per_row * f64::from(h) * todo.len() as f64 / secs / 1e6,
+            rays_per_row * f64::from(h) * done as f64 / secs / 1e6,
             evaluations / n
         );
     }

@@ -136,6 +136,8 @@ pub fn run_sky(args: &SkyArgs) -> Result<(), CliError> {
     if let Some(path) = &args.out {
         crate::output::OutputFormat::from_path(path).map_err(|m| input(m.replacen("output.path", "--out", 1)))?;
         crate::output::check_writable(path).map_err(|m| input(format!("--out: {m}")))?;
+        // An interrupted run leaves no temporary file behind.
+        crate::output::remove_temporaries_on_signal().map_err(CliError::Failure)?;
     }
     let sky = sky_of(args)?;
 

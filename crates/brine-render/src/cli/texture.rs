@@ -60,8 +60,8 @@ pub struct TextureArgs {
     /// Output image; with --frames, a path with a run of # for the frame number.
     #[arg(short, long)]
     pub output: PathBuf,
-    /// Render an animation: frames A..B (B excluded), frame f at time f/fps.
-    #[arg(long, value_parser = parse_range)]
+    /// Render an animation: frames A..B (B excluded) or a count N (= 0..N), frame f at time f/fps.
+    #[arg(long, value_parser = super::render::parse_frames)]
     pub frames: Option<(u32, u32)>,
     /// Seed of every random choice (synthesis and the transition walk).
     #[arg(long, default_value_t = 1)]
@@ -111,8 +111,8 @@ pub struct TextureArgs {
     /// Wind speed for the sun's highlight in trace mode (m/s), [0, 60].
     #[arg(long, default_value_t = 6.0, value_parser = super::finite)]
     pub wind_m_s: f64,
-    /// Exposure EV100 in trace mode; automatic (metered on the first frame) when absent.
-    #[arg(long, allow_hyphen_values = true, value_parser = super::finite)]
+    /// Exposure EV100 in trace mode, [-10, 30]; automatic (metered on the first frame) when absent.
+    #[arg(long, allow_hyphen_values = true, value_parser = super::within(-10.0, 30.0))]
     pub exposure_ev: Option<f64>,
     /// No progress bar and no summary.
     #[arg(short, long)]
@@ -171,17 +171,6 @@ pub struct TextureTuning {
     /// Form of the relighting factor (Eq. 9).
     #[arg(long, value_enum, default_value = "paper")]
     pub relight: RelightArg,
-}
-
-/// Parses `A..B` with `A < B`.
-fn parse_range(s: &str) -> Result<(u32, u32), String> {
-    let (a, b) = s.split_once("..").ok_or_else(|| format!("expected A..B (e.g. 0..120), got {s:?}"))?;
-    let num = |t: &str| t.trim().parse::<u32>().map_err(|_| format!("expected a frame number, got {t:?}"));
-    let (a, b) = (num(a)?, num(b)?);
-    if a >= b {
-        return Err(format!("the range {a}..{b} is empty (the end is excluded)"));
-    }
-    Ok((a, b))
 }
 
 /// Parses `n` comma-separated finite numbers.
@@ -324,21 +313,17 @@ pub fn run_texture(args: &TextureArgs) -> Result<(), CliError> {
             pattern.display()
         )));
     }
-    if let Some(dir) = pattern.parent().filter(|p| !p.as_os_str().is_empty())
-        && !dir.is_dir()
-    {
-        return Err(CliError::Input(format!(
-            "cannot write {}: folder {} does not exist",
-            pattern.display(),
-            dir.display()
-        )));
-    }
-    let frames: Vec<(u32, PathBuf)> = match args.frames {
-        None => vec![(0, pattern.clone())],
-        Some((a, b)) => {
-            (a..b).map(|f| frame_path(pattern, f).map(|p| (f, p))).collect::<Result<_, _>>().map_err(CliError::Input)?
-        }
+    // Frame paths are made one at a time (a run of 10⁸ frames holds no list of them); the
+    // first is checked now: a `#` for the frame number, a folder where a file can be written.
+    let (first, last) = args.frames.unwrap_or((0, 1));
+    let count = last - first;
+    let path_of = |f: u32| match args.frames {
+        Some(_) => frame_path(pattern, f).map_err(CliError::Input),
+        None => Ok(pattern.clone()),
     };
+    crate::output::check_writable(&path_of(first)?).map_err(CliError::Input)?;
+    // An interrupted run leaves no temporary file behind.
+    crate::output::remove_temporaries_on_signal().map_err(CliError::Failure)?;
     let camera =
         Pinhole::from_angles(args.position, args.yaw_deg, args.pitch_deg, args.fov_deg, args.width, args.height)
             .map_err(input)?;
@@ -389,8 +374,8 @@ pub fn run_texture(args: &TextureArgs) -> Result<(), CliError> {
 
     // Frames.
     let bar = ProgressBar::with_draw_target(
-        Some(frames.len() as u64),
-        if show && frames.len() > 1 { ProgressDrawTarget::stderr() } else { ProgressDrawTarget::hidden() },
+        Some(u64::from(count)),
+        if show && count > 1 { ProgressDrawTarget::stderr() } else { ProgressDrawTarget::hidden() },
     );
     bar.set_style(
         ProgressStyle::with_template("{spinner} frames {bar:40.cyan/blue} {pos}/{len}  ETA {eta}")
@@ -400,9 +385,9 @@ pub fn run_texture(args: &TextureArgs) -> Result<(), CliError> {
     match args.mode {
         TextureMode::Project => {
             let view = ProjectionView::new(&camera, &sky);
-            for (f, path) in &frames {
-                let img = render_projection(&ocean.frame(u64::from(*f)), &view, &projection);
-                write_png(path, &img)?;
+            for f in first..last {
+                let img = render_projection(&ocean.frame(u64::from(f)), &view, &projection);
+                write_png(&path_of(f)?, &img)?;
                 bar.inc(1);
             }
         }
@@ -419,12 +404,13 @@ pub fn run_texture(args: &TextureArgs) -> Result<(), CliError> {
             let illuminance_lx =
                 (scene.sky.horizontal_irradiance_rgb().y + s.irradiance_rgb.y * s.direction.y.max(0.0)) * 1000.0;
             let mut exposure = args.exposure_ev;
-            for (f, path) in &frames {
-                let img = render_traced(&ocean.frame(u64::from(*f)), &camera, &scene).map_err(input)?;
+            for f in first..last {
+                let path = path_of(f)?;
+                let img = render_traced(&ocean.frame(u64::from(f)), &camera, &scene).map_err(input)?;
                 let ev = *exposure.get_or_insert_with(|| {
                     crate::auto_exposure_ev(crate::world::log_average_luminance_cd_m2(&img.pixels), illuminance_lx)
                 });
-                crate::write_image(path, img.width, img.height, &img.pixels, ev)
+                crate::write_image(&path, img.width, img.height, &img.pixels, ev)
                     .map_err(|e| CliError::Failure(e.to_string()))?;
                 bar.inc(1);
             }
@@ -432,9 +418,8 @@ pub fn run_texture(args: &TextureArgs) -> Result<(), CliError> {
     }
     bar.finish_and_clear();
     if !args.quiet {
-        let n = frames.len() as f64;
-        let target =
-            if args.frames.is_some() { format!("{} frames", frames.len()) } else { pattern.display().to_string() };
+        let n = f64::from(count);
+        let target = if args.frames.is_some() { format!("{count} frames") } else { pattern.display().to_string() };
         eprintln!(
             "wrote {target} ({}×{}, {:?} mode): preprocessing {preprocess_s:.2} s, {:.1} ms per frame",
             args.width,
