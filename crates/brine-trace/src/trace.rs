@@ -59,18 +59,19 @@ pub fn trace_logged<S: LipschitzSum + ?Sized>(
 /// it: at the one point of the clipped span, `F` is the rounding of the ray's height, of either
 /// sign.
 fn plane_crossing(bounds: &crate::Aabb, ray: &Ray, t0: f64, t1: f64, stats: &mut TraceStats) -> Option<Hit> {
-    let flat = bounds.min.y == bounds.max.y
+    // Exact: the slab of a sea with no waves is `[−0, 0]`, and the clipped span one point.
+    let flat = bounds.max.y - bounds.min.y == 0.0
         && bounds.min.x == f64::NEG_INFINITY
         && bounds.min.z == f64::NEG_INFINITY
         && bounds.max.x == f64::INFINITY
         && bounds.max.z == f64::INFINITY;
     let d = ray.direction();
-    if !(flat && t0 == t1 && d.y != 0.0) {
+    if !(flat && t1 - t0 == 0.0 && d.y != 0.0) {
         return None;
     }
     stats.hits += 1;
     let mut point = ray.at(t0);
-    point.y = bounds.min.y;
+    point.y = bounds.max.y;
     Some(Hit { t: t0, point, entering: d.y < 0.0, steps: 0 })
 }
 
