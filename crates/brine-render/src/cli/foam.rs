@@ -166,11 +166,12 @@ pub struct SprayArgs {
     #[arg(long, value_parser = super::finite)]
     pub wavelength_nm: Option<f64>,
     /// Friction velocity u* for the spume layer (m/s, (0, 5]); default: Elfouhaily et al.'s for
-    /// a fully developed sea at U10.
+    /// a fully developed sea at U10, held within [0.001, 5] as the renderer holds it.
     #[arg(long, value_parser = super::finite)]
     pub u_star_m_s: Option<f64>,
     /// Height at which spume is torn off, the significant wave amplitude, half the significant height (m, (0, 30]);
-    /// default: half the Pierson–Moskowitz significant height at U10.
+    /// default: half the Pierson–Moskowitz significant height at U10, held within [0.001, 30] m as
+    /// the renderer holds it.
     #[arg(long, value_parser = super::finite)]
     pub source_height_m: Option<f64>,
     /// Print JSON.
@@ -284,13 +285,21 @@ fn spume_layer(args: &SprayArgs) -> Result<Option<SpumeLayer>, CliError> {
     if !(args.u10 > 0.0 && args.u10 <= 60.0) {
         return Ok(None);
     }
+    // The defaults are the renderer's (brine-render's spray): held within the spume model's
+    // ranges, which the fully developed sea leaves near calm (u* → 0) and in a hurricane (half
+    // the Pierson–Moskowitz H_s passes 30 m from U10 ≈ 52 m/s).
+    let within = |v: f64, lo: f64, hi: f64| if v.is_finite() { v.clamp(lo, hi) } else { lo };
     let u_star = match args.u_star_m_s {
         Some(u) => u,
-        None => Elfouhaily::new(args.u10, 0.84).map_err(|e| input(&e))?.u_star(),
+        None => within(Elfouhaily::new(args.u10, 0.84).map_err(|e| input(&e))?.u_star(), 1e-3, 5.0),
     };
     let source_height_m = match args.source_height_m {
         Some(z) => z,
-        None => 0.5 * PiersonMoskowitz::from_u10(args.u10).map_err(|e| input(&e))?.significant_wave_height(),
+        None => within(
+            0.5 * PiersonMoskowitz::from_u10(args.u10).map_err(|e| input(&e))?.significant_wave_height(),
+            1e-3,
+            30.0,
+        ),
     };
     SpumeLayer::new(&SpumeParams { u10: args.u10, friction_velocity_m_s: u_star, source_height_m })
         .map(Some)
@@ -381,6 +390,20 @@ mod tests {
         assert_relative_eq!(v["coverage"].as_f64().unwrap(), 3.84e-6 * 10f64.powf(3.41), max_relative = ROUNDING);
         let v = foam("--u10 3 --json").unwrap();
         assert!(v["coverage"].as_f64().unwrap().abs() < 1e-300);
+    }
+
+    /// Over the whole documented wind range the spume's defaults stay within the model's ranges
+    /// (as the renderer holds them): a hurricane's half `H_s` passes 30 m from 52 m/s, and a
+    /// near calm has `u* → 0`.
+    #[test]
+    fn spray_answers_at_every_documented_wind() {
+        for u in ["1e-300", "0.01", "1", "10", "51", "55", "60"] {
+            let v = spray(&format!("--u10 {u} --json")).unwrap_or_else(|e| panic!("--u10 {u}: {e}"));
+            let z = v["spume"]["source_height_m"].as_f64().unwrap();
+            assert!(z > 0.0 && z <= 30.0, "--u10 {u}: source height {z}");
+        }
+        let v = spray("--u10 60 --json").unwrap();
+        assert_eq!(v["spume"]["source_height_m"].as_f64(), Some(30.0));
     }
 
     #[test]
