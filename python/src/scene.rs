@@ -188,9 +188,10 @@ impl Scene {
         let mut points = Vec::with_capacity(xs.len());
         for i in 0..xs.len() {
             let p = QueryPoint { x: xs[i], z: zs[i], t: ts.map_or(t0, |t| t[i]) };
-            if !(p.x.is_finite() && p.z.is_finite() && p.t.is_finite()) {
+            let ok = |v: f64| v.is_finite() && v.abs() <= 1e9;
+            if !(ok(p.x) && ok(p.z) && ok(p.t)) {
                 return Err(bad(format!(
-                    "point {i} = ({}, {}, {}): expected finite x, z (m) and t (s)",
+                    "point {i} = ({}, {}, {}): expected x, z (m) and t (s) finite, in [-1e9, 1e9]",
                     p.x, p.z, p.t
                 )));
             }
@@ -245,8 +246,8 @@ impl Scene {
         let options = BakeOptions { size, tile_m, up };
         options.check().map_err(|m| bad(m.replace("--size", "size").replace("--tile-m", "tile_m")))?;
         let t = t.unwrap_or(self.scene.sea.time_s);
-        if !t.is_finite() {
-            return Err(bad(format!("t = {t}: expected a finite time (s)")));
+        if !(t.is_finite() && t.abs() <= 1e9) {
+            return Err(bad(format!("t = {t}: expected a finite time in [-1e9, 1e9] s")));
         }
         let lattice = brine_waves::TileLattice::new(tile_m, None).map_err(scene_err)?;
         let mut scene = self.scene.clone();

@@ -50,8 +50,8 @@ pub struct QueryArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t)]
     pub format: QueryFormat,
-    /// Time of the points that give none (s); overrides `sea.time_s`.
-    #[arg(long, value_parser = super::finite)]
+    /// Time of the points that give none (s, [-1e9, 1e9], as a point's own); overrides `sea.time_s`.
+    #[arg(long, allow_hyphen_values = true, value_parser = super::within(-1e9, 1e9))]
     pub time: Option<f64>,
 }
 
@@ -119,10 +119,11 @@ pub fn run_query(args: &QueryArgs) -> Result<(), CliError> {
     }
 }
 
-/// Parses `x,z`.
+/// Parses `x,z`, each in [-1e9, 1e9] m (as a queried point's).
 fn parse_xz(s: &str) -> Result<DVec2, String> {
     let (a, b) = s.split_once(',').ok_or_else(|| format!("expected x,z (metres), got {s:?}"))?;
-    Ok(DVec2::new(super::finite(a)?, super::finite(b)?))
+    let within = super::within(-1e9, 1e9);
+    Ok(DVec2::new(within(a.trim())?, within(b.trim())?))
 }
 
 /// Arguments of `brine mesh`.
@@ -159,8 +160,8 @@ pub struct MeshArgs {
     /// every vertex lies on the rendered surface, short waves included.
     #[arg(long, conflicts_with = "camera")]
     pub band_limit: bool,
-    /// Time of the surface (s); overrides `sea.time_s`.
-    #[arg(long, value_parser = super::finite)]
+    /// Time of the surface (s, [-1e9, 1e9]); overrides `sea.time_s`.
+    #[arg(long, allow_hyphen_values = true, value_parser = super::within(-1e9, 1e9))]
     pub time: Option<f64>,
     /// A mesh sequence: frames `A..B` (B excluded) or a count `N` (= `0..N`), frame `f` at
     /// `sea.time_s + f/fps` (`--time` for `sea.time_s`); the output path must hold a run of `#`

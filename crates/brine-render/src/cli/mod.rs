@@ -39,8 +39,18 @@ pub(crate) fn finite(s: &str) -> Result<f64, String> {
 pub(crate) fn within(lo: f64, hi: f64) -> impl Fn(&str) -> Result<f64, String> + Clone + Send + Sync + 'static {
     move |s: &str| {
         let x = finite(s)?;
-        if (lo..=hi).contains(&x) { Ok(x) } else { Err(format!("{} is out of range: expected [{lo}, {hi}]", s.trim())) }
+        if (lo..=hi).contains(&x) {
+            Ok(x)
+        } else {
+            Err(format!("{} is out of range: expected [{}, {}]", s.trim(), num(lo), num(hi)))
+        }
     }
+}
+
+/// A number for a message: as Rust writes it, with an exponent from a million up and below a
+/// thousandth (`1e9`, not `1000000000`; `1e-100`, not a hundred zeros).
+pub(crate) fn num(x: f64) -> String {
+    if x != 0.0 && x.is_finite() && !(1e-3..1e6).contains(&x.abs()) { format!("{x:e}") } else { format!("{x}") }
 }
 
 /// Rewrites a model's message so that it names the flags the user typed: a parameter name that

@@ -154,13 +154,18 @@ pub fn scene_of(args: &RenderArgs) -> Result<Scene, CliError> {
     Ok(scene)
 }
 
+/// Largest time of an animation frame, after `sea.time_s` or the sky's clock (s): the models'
+/// phases hold their precision to about here.
+pub const MAX_FRAME_TIME_S: f64 = 1e9;
+
 /// The scene of animation frame `frame` of the run `first..last`: the waves at
 /// `sea.time_s + frame/fps`; the sun and moon at `place.time_utc + frame/fps`, or, in a time-lapse
 /// `START..END`, at START for frame 0 and END for frame `last − 1`, linearly between (whatever
 /// `first` is).
 ///
 /// # Errors
-/// [`CliError::Input`] if the time-lapse instant cannot be represented.
+/// [`CliError::Input`] if the frame's time passes [`MAX_FRAME_TIME_S`] or the time-lapse
+/// instant cannot be represented.
 pub fn scene_at_frame(
     scene: &Scene,
     frame: u32,
@@ -170,6 +175,17 @@ pub fn scene_at_frame(
     let mut s = scene.clone();
     let elapsed = f64::from(frame) / scene.animation.fps;
     s.sea.time_s += elapsed;
+    // The models hold their precision for times within 10⁹ s (32 years); a frame beyond (a
+    // huge frame number at a tiny `fps`) would render NaN.
+    if !(s.sea.time_s.abs() <= MAX_FRAME_TIME_S && (scene.elapsed_s + elapsed).abs() <= MAX_FRAME_TIME_S) {
+        return Err(CliError::Input(format!(
+            "frame {frame} is {} s after frame 0 (animation.fps = {}): the waves' time would be {} s, beyond the {} s the models are accurate to",
+            super::num(elapsed),
+            super::num(scene.animation.fps),
+            super::num(s.sea.time_s),
+            super::num(MAX_FRAME_TIME_S)
+        )));
+    }
     match (time_lapse, s.place.as_mut()) {
         (Some((start, end)), Some(place)) => {
             let span = (end.as_nanosecond() - start.as_nanosecond()) as f64 * 1e-9;

@@ -44,8 +44,8 @@ pub struct SkyArgs {
     /// Cloud seed.
     #[arg(long, default_value_t = 1)]
     pub cloud_seed: u64,
-    /// Time (s) at which the clouds are drawn.
-    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = super::finite)]
+    /// Time (s, [-1e9, 1e9]) at which the clouds are drawn.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = super::within(-1e9, 1e9))]
     pub time_s: f64,
     /// View elevation (degrees) for --json, [-90, 90].
     #[arg(long, default_value_t = 90.0, allow_hyphen_values = true, value_parser = super::within(-90.0, 90.0))]

@@ -61,8 +61,11 @@ impl BakeOptions {
         if !(2..=MAX_BAKE_SIZE).contains(&self.size) {
             return Err(format!("--size = {} is out of range: expected [2, {MAX_BAKE_SIZE}] texels", self.size));
         }
-        if !(self.tile_m > 0.0 && self.tile_m <= 1e6) {
-            return Err(format!("--tile-m = {} is out of range: expected (0, 1e6] m", self.tile_m));
+        if !(1e-3..=1e6).contains(&self.tile_m) {
+            return Err(format!(
+                "--tile-m = {} is out of range: expected [0.001, 1e6] m",
+                crate::cli::num(self.tile_m)
+            ));
         }
         super::check_memory(&format!("a {0} × {0} bake", self.size), self.memory_estimate())
     }

@@ -546,7 +546,7 @@ pub const KEYS: &[KeySpec] = &[
         left_open(0.0, 1000.0),
         "1/s",
         "24",
-        "frame `f` is at `sea.time_s + f/fps` and `place.time_utc + f/fps` (with `--time-lapse`, the place's time runs from START to END instead)",
+        "frame `f` is at `sea.time_s + f/fps` and `place.time_utc + f/fps` (with `--time-lapse`, the place's time runs from START at frame 0 to END at the run's last frame instead, so the tail of a run, `--frames 100..240`, is the same frames as the whole run's)",
     ),
 ];
 

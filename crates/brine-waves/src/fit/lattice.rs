@@ -16,16 +16,17 @@ pub struct TileLattice {
 }
 
 impl TileLattice {
-    /// A tile of side `tile_m` (m, `(0, 10⁶]`) and an optional loop period (s, `(0, 10⁶]`).
+    /// A tile of side `tile_m` (m, `[10⁻³, 10⁶]`) and an optional loop period (s, `(0, 10⁶]`).
+    ///
+    /// A tile shorter than a millimetre would pull every wave onto lattice vectors whose slopes
+    /// overflow (a wave of amplitude `A` snapped to `k = 2π/L`); no sea has waves that short.
     ///
     /// # Errors
     /// [`WaveError::OutOfRange`] naming the parameter out of its range.
     pub fn new(tile_m: f64, loop_period_s: Option<f64>) -> Result<Self, WaveError> {
-        let range = |name, v: f64| crate::error::check(name, v, v > 0.0 && v <= 1e6, "(0, 1e6]");
-        Ok(Self {
-            tile_m: range("tile_m", tile_m)?,
-            loop_period_s: loop_period_s.map(|t| range("loop_s", t)).transpose()?,
-        })
+        let tile = crate::error::check("tile_m", tile_m, (1e-3..=1e6).contains(&tile_m), "[1e-3, 1e6]")?;
+        let period = |v: f64| crate::error::check("loop_s", v, v > 0.0 && v <= 1e6, "(0, 1e6]");
+        Ok(Self { tile_m: tile, loop_period_s: loop_period_s.map(period).transpose()? })
     }
 
     /// The tile's side (m).
@@ -200,6 +201,7 @@ mod tests {
             assert!((b.sample(x, z).height - h).abs() < 1e-5, "loop");
         }
         assert!(TileLattice::new(0.0, None).is_err() && TileLattice::new(10.0, Some(-1.0)).is_err());
+        assert!(TileLattice::new(1e-100, None).is_err() && TileLattice::new(1e-3, None).is_ok());
     }
 
     /// Sampled on a grid of `N` points over the tile, a snapped wave of `m` cycles along x reads
