@@ -277,3 +277,15 @@ fn a_mesh_sequence_is_its_frames_made_alone() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("needs a run of # in the file name"));
     assert!(!dir.path().join("plain.ply").exists());
 }
+
+/// A key left at its default that another key's value puts out of range (a floor 0.5 m deep
+/// holds trochoids of at most 0.25 m, the default amplitude is 0.4 m): the message says the
+/// value is the default and points at the line of the key that set the bound.
+#[test]
+fn a_default_put_out_of_range_by_another_key_is_reported_at_that_key() {
+    let (dir, code, err) = render_scene("[camera]\nwidth = 16\n\n[water.floor]\ndepth_m = 0.5\n");
+    assert_eq!(code, Some(2));
+    assert!(err.starts_with("error: scene.toml line 5: water.floor.amplitude_m = 0.4 is out of range"), "{err}");
+    assert!(err.contains("is not in the file: that is its default"), "{err}");
+    assert_nothing_written(dir.path());
+}

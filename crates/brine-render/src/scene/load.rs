@@ -89,7 +89,19 @@ impl Scene {
             let inner = e.into_inner();
             error(inner.span().map(|s| s.start), explain(&path, inner.message()))
         })?;
-        scene.validate().map_err(|(path, message)| error(doc.offset_of(path), message))?;
+        scene.validate().map_err(|(path, message)| match doc.offset_of(path) {
+            Some(at) => error(Some(at), message),
+            // The key holds its default: the message says so, at the line of the key that set
+            // the bound it breaks.
+            None => {
+                let bound = BOUND_BY.iter().find(|(k, _)| *k == path).map(|(_, b)| *b);
+                let hint = match bound {
+                    Some(b) => format!(" ({path} is not in the file: that is its default, out of range for the {b} given; set {path})"),
+                    None => format!(" ({path} is not in the file: that is its default)"),
+                };
+                error(bound.and_then(|b| doc.offset_of(b)), format!("{message}{hint}"))
+            }
+        })?;
         Ok(scene)
     }
 
@@ -211,6 +223,10 @@ impl Scene {
         Ok(())
     }
 }
+
+/// Keys whose range another key sets: a default out of the range that key gives is reported
+/// at that key's line.
+const BOUND_BY: [(&str, &str); 1] = [("water.floor.amplitude_m", "water.floor.depth_m")];
 
 /// Widest water–air temperature difference of Monahan & Ó Muircheartaigh 1986's stability fit (°C).
 pub(super) const MAX_STABILITY_DIFFERENCE_C: f64 = 30.0;
