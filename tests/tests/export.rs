@@ -2,7 +2,8 @@
 //! baked maps that tile and loop, meshes that the Khronos validator accepts.
 
 use brine_render::export::{
-    BakeOptions, MeshGrid, QueryPoint, UpAxis, bake_frame, grid_mesh, grid_mesh_band_limited, query_points, write_mesh,
+    BakeOptions, MeshGrid, QueryPoint, UpAxis, bake_frame, camera_mesh, check_camera_mesh, grid_mesh,
+    grid_mesh_band_limited, query_points, write_mesh,
 };
 use brine_render::{RenderOptions, Scene, World, render_world};
 use glam::{DVec2, DVec3};
@@ -209,6 +210,44 @@ fn a_band_limited_mesh_holds_no_wave_its_grid_cannot_carry() {
     let lost = limit.lost_slope_covariance[0] + limit.lost_slope_covariance[2];
     eprintln!("fine {f:.5}, coarse {c:.5} + lost {lost:.5} = {:.5}", c + lost);
     assert!(((c + lost) / f - 1.0).abs() < SLOPE_BUDGET_REL, "coarse {c} + lost {lost} against fine {f}");
+}
+
+/// A camera mesh covers the sea its camera sees, however steep the view: every point where one
+/// of the image's rays meets the mean sea has a vertex within a few footprints (looking 60° down,
+/// where the lower corners reach wider than the field of view and the nearest sea is under half
+/// the eye's height away, and straight down, where the image holds the camera's foot); a camera
+/// that sees no sea is refused.
+#[test]
+fn a_camera_mesh_covers_what_the_camera_sees() {
+    for pitch in [-60.0, -90.0] {
+        let mut scene = Scene::default_scene();
+        (scene.camera.width, scene.camera.height, scene.camera.pitch_deg) = (64, 36, Some(pitch));
+        let world = World::new(&scene).unwrap();
+        check_camera_mesh(&world, 2.0, false).unwrap();
+        let mesh = camera_mesh(&world, scene.sea.time_s, 2.0, false);
+        let cam = world.camera();
+        let footprint = cam.pixel_angle() * 2.0;
+        for j in 0..=12 {
+            for i in 0..=12 {
+                let d = cam.direction(f64::from(i) / 12.0 * 64.0, f64::from(j) / 12.0 * 36.0);
+                let g = cam.position + d * (cam.position.y / -d.y);
+                let gap = mesh
+                    .positions
+                    .iter()
+                    .map(|p| (f64::from(p[0]) - g.x).hypot(f64::from(p[2]) - g.z))
+                    .fold(f64::INFINITY, f64::min);
+                // A vertex within two edges (each `2` footprints long at the eye's distance),
+                // plus the water's own horizontal displacement (under a metre here).
+                let reach = 2.0 * footprint * (g - cam.position).length() + 1.0;
+                assert!(gap < reach, "pitch {pitch}: the sea at ({:.1}, {:.1}) is {gap:.2} m from the mesh", g.x, g.z);
+            }
+        }
+    }
+    let mut scene = Scene::default_scene();
+    scene.camera.pitch_deg = Some(90.0);
+    let world = World::new(&scene).unwrap();
+    let e = check_camera_mesh(&world, 2.0, false).unwrap_err();
+    assert!(e.contains("sees no sea"), "{e}");
 }
 
 fn brine_waves_lattice(tile: f64, period: Option<f64>) -> brine_waves::TileLattice {

@@ -107,7 +107,10 @@ pub fn rough_of(a: &RoughArgs) -> Result<RoughOut, CliError> {
         )));
     }
     if !(a.sigma >= 1e-6 && a.sigma <= RoughReflectance::MAX_SIGMA) {
-        return Err(CliError::Input(format!("--sigma = {} is out of range: expected [1e-6, 0.6]", super::num(a.sigma))));
+        return Err(CliError::Input(format!(
+            "--sigma = {} is out of range: expected [1e-6, 0.6]",
+            super::num(a.sigma)
+        )));
     }
     if !(a.n_water > 1.0 && a.n_water <= 2.0) {
         return Err(CliError::Input(format!("--n-water = {} is out of range: expected (1, 2]", a.n_water)));

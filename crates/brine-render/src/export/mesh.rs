@@ -255,6 +255,9 @@ pub fn check_camera_mesh(world: &World, pixels: f64, faded: bool) -> Result<(), 
         return Err(format!("--pixels = {pixels} is out of range: expected [0.125, 64]"));
     }
     let (_, _, n) = camera_layout(world, pixels);
+    if n == 0 {
+        return Err("--camera: the camera sees no sea (every ray of its image points above the horizon)".to_owned());
+    }
     super::check_memory(&format!("a camera mesh of {n} vertices"), n.saturating_mul(112))?;
     if faded && !camera_mesh_faded_supported(world) {
         return Err("--faded: only the trochoid sea (sea.surface = \"trochoids\") has a faded height".to_owned());
@@ -262,7 +265,15 @@ pub fn check_camera_mesh(world: &World, pixels: f64, faded: bool) -> Result<(), 
     Ok(())
 }
 
-/// The radii and azimuths (atan2 in the x–z plane) of [`camera_mesh`] and its vertex count.
+/// The radii and azimuths (atan2 in the x–z plane) of [`camera_mesh`] and its vertex count; no
+/// ring when the camera sees no sea (every ray of its image above the horizon).
+///
+/// The azimuths span the image's (its horizontal field of view and a tenth each side, or the
+/// azimuths of its border rays and a tenth more, for a view steep enough that its lower corners
+/// reach wider), the whole circle when the image holds the nadir (a view straight down, whose
+/// polar grid then starts one pixel footprint from the camera's foot). The radii end at the trace
+/// distance, or nearer for an image wholly below the horizon, a fifth beyond where its farthest
+/// border ray meets the troughs.
 pub fn camera_layout(world: &World, pixels: f64) -> (Vec<f64>, Vec<f64>, u64) {
     let cam = &world.camera;
     let alpha = cam.pixel_angle() * pixels.max(0.125);
@@ -270,24 +281,68 @@ pub fn camera_layout(world: &World, pixels: f64) -> (Vec<f64>, Vec<f64>, u64) {
     let aspect = f64::from(cam.width) / f64::from(cam.height);
     let half_h = (cam.tan_half_fov * aspect).atan();
     let yaw = cam.forward.z.atan2(cam.forward.x);
-    let half = 1.2 * half_h;
+    // The image's border rays, and whether the nadir is inside the image.
+    let (w, hgt) = (f64::from(cam.width), f64::from(cam.height));
+    let border: Vec<DVec3> = (0..=32)
+        .flat_map(|i| {
+            let u = f64::from(i) / 32.0;
+            [
+                cam.direction(u * w, 0.0),
+                cam.direction(u * w, hgt),
+                cam.direction(0.0, u * hgt),
+                cam.direction(w, u * hgt),
+            ]
+        })
+        .collect();
+    let down = DVec3::NEG_Y;
+    let (f, x, y) = (down.dot(cam.forward), down.dot(cam.right), down.dot(cam.up));
+    let nadir_inside = f > 0.0 && x.abs() <= f * cam.tan_half_fov * aspect && y.abs() <= f * cam.tan_half_fov;
+    if !nadir_inside && border.iter().all(|d| d.y >= 0.0) {
+        return (Vec::new(), Vec::new(), 0);
+    }
+    let half = if nadir_inside {
+        std::f64::consts::PI
+    } else {
+        let spread = border.iter().map(|d| wrap_angle(d.z.atan2(d.x) - yaw).abs()).fold(0.0, f64::max);
+        (1.2 * half_h).max(1.1 * spread).min(std::f64::consts::PI)
+    };
     let count = (2.0 * half / alpha).ceil().max(1.0) as usize;
     let angles: Vec<f64> = (0..=count).map(|i| yaw - half + 2.0 * half * i as f64 / count as f64).collect();
-    // From where the lowest ray meets the sea (at least half the eye's height) to the trace distance.
+    // From where the lowest ray meets the crests (and a fifth nearer), one footprint from the
+    // foot when the image holds the nadir.
     let pitch = cam.forward.y.asin();
     let lowest = pitch - cam.tan_half_fov.atan();
-    let r_min = if lowest < -1e-3 { (h / (-lowest).tan()).max(0.5 * h) } else { 0.5 * h } * 0.8;
-    let r_max = world.trace.t_max.max(r_min * 1.01);
+    let r_min = if nadir_inside {
+        alpha * h
+    } else if lowest < -1e-3 {
+        0.8 * h / (-lowest).tan()
+    } else {
+        0.5 * h * 0.8
+    };
+    // To the trace distance; for an image wholly below the horizon, to where its farthest border
+    // ray meets the troughs (and a fifth more).
+    let h_trough = (cam.position.y - world.sea.height_bounds().0).max(h);
+    let farthest = border.iter().map(|d| if d.y < 0.0 { h_trough * d.x.hypot(d.z) / -d.y } else { f64::INFINITY });
+    let r_max = world.trace.t_max.min(1.2 * farthest.fold(0.0, f64::max)).max(r_min * 1.01);
     let mut rings = vec![r_min];
     while let Some(&r) = rings.last() {
         if r >= r_max || rings.len() > 1 << 22 {
             break;
         }
+        // A footprint along the view, `α r/sin γ`, no finer than at a third of the eye's height
+        // (near the foot of a view straight down, `α r` would crowd the rings far below a pixel).
         let sin_grazing = h / r.hypot(h);
-        rings.push((r + alpha * r / sin_grazing).min(r_max));
+        rings.push((r + alpha * r.max(h / 3.0) / sin_grazing).min(r_max));
     }
     let n = (rings.len() * angles.len()) as u64;
     (rings, angles, n)
+}
+
+/// `a` wrapped to `(−π, π]` (rad).
+fn wrap_angle(a: f64) -> f64 {
+    let t = std::f64::consts::TAU;
+    let w = a - t * (a / t).round();
+    if w <= -std::f64::consts::PI { w + t } else { w }
 }
 
 /// Mesh file formats, chosen by the extension.

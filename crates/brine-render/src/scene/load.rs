@@ -96,7 +96,9 @@ impl Scene {
             None => {
                 let bound = BOUND_BY.iter().find(|(k, _)| *k == path).map(|(_, b)| *b);
                 let hint = match bound {
-                    Some(b) => format!(" ({path} is not in the file: that is its default, out of range for the {b} given; set {path})"),
+                    Some(b) => format!(
+                        " ({path} is not in the file: that is its default, out of range for the {b} given; set {path})"
+                    ),
                     None => format!(" ({path} is not in the file: that is its default)"),
                 };
                 error(bound.and_then(|b| doc.offset_of(b)), format!("{message}{hint}"))
