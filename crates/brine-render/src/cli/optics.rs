@@ -319,7 +319,9 @@ fn parse_wavelengths(spec: &str) -> Result<Vec<f64>, CliError> {
 pub fn water_body(a: &WaterArgs) -> Result<(WaterBody, String), CliError> {
     Ok(match (&a.water_type, a.chlorophyll_mg_m3) {
         (Some(t), None) => {
-            let t: JerlovType = t.parse().map_err(input)?;
+            let t: JerlovType = t.parse().map_err(|e: brine_optics::OpticsError| {
+                CliError::Input(e.to_string().replacen("jerlov_type", "--type", 1))
+            })?;
             (WaterBody::jerlov(t), format!("Jerlov {t}"))
         }
         (None, Some(c)) => (WaterBody::case1(c).map_err(input)?, format!("Case-1, C = {c} mg/m3")),

@@ -69,8 +69,23 @@ impl SpectrumParams {
         if self.fetch_m.is_some() && !matches!(self.model, M::Jonswap | M::Tma | M::Elfouhaily) {
             return Err(only("fetch-m", "jonswap, tma and elfouhaily"));
         }
+        // A parameter the fetch laws derive (the peak frequency, Phillips' α) out of its range is
+        // said with the fetch and wind that gave it.
+        let fetch = self.fetch_m.unwrap_or(DEFAULT_FETCH_M);
+        let from_fetch = |e: brine_waves::WaveError| {
+            let m = e.to_string();
+            if m.starts_with("u10") || m.starts_with("fetch") {
+                CliError::Input(m)
+            } else {
+                CliError::Input(format!(
+                    "--fetch-m = {} with --u10 = {}: the fetch laws give {m}; a longer fetch or a lighter wind is within the model",
+                    super::num(fetch),
+                    super::num(self.u10)
+                ))
+            }
+        };
         let jonswap = || -> Result<Jonswap, CliError> {
-            let j = Jonswap::from_fetch(self.u10, self.fetch_m.unwrap_or(DEFAULT_FETCH_M)).map_err(input)?;
+            let j = Jonswap::from_fetch(self.u10, fetch).map_err(from_fetch)?;
             match self.gamma {
                 Some(g) => j.with_peak_shape(g, Jonswap::SIGMA_A, Jonswap::SIGMA_B).map_err(input),
                 None => Ok(j),
@@ -85,7 +100,7 @@ impl SpectrumParams {
                 Box::new(Tma::new(jonswap()?, depth).map_err(input)?)
             }
             M::Elfouhaily => Box::new(match self.fetch_m {
-                Some(x) => Elfouhaily::from_fetch(self.u10, x).map_err(input)?,
+                Some(x) => Elfouhaily::from_fetch(self.u10, x).map_err(from_fetch)?,
                 None => Elfouhaily::fully_developed(self.u10).map_err(input)?,
             }),
         })
@@ -109,10 +124,10 @@ pub struct SpectrumArgs {
     /// The spectrum.
     #[command(flatten)]
     pub spectrum: SpectrumParams,
-    /// Lowest angular frequency (rad/s), > 0 (default 0.3 ωₚ).
+    /// Lowest angular frequency (rad/s), [1e-4, 1e4) (default 0.3 ωₚ).
     #[arg(long, value_parser = super::finite)]
     pub omega_min: Option<f64>,
-    /// Highest angular frequency (rad/s), > omega-min (default 10 ωₚ).
+    /// Highest angular frequency (rad/s), (omega-min, 1e4] (default 10 ωₚ).
     #[arg(long, value_parser = super::finite)]
     pub omega_max: Option<f64>,
     /// Number of samples, [2, 100000].
@@ -132,11 +147,18 @@ fn spectrum_json(args: &SpectrumArgs) -> Result<serde_json::Value, CliError> {
     let wp = s.peak_omega();
     let lo = args.omega_min.unwrap_or(0.3 * wp);
     let hi = args.omega_max.unwrap_or(10.0 * wp);
-    if !(lo > 0.0 && lo.is_finite()) {
-        return Err(CliError::Input(format!("--omega-min = {lo} is out of range: expected (0, ∞) rad/s")));
+    // Ocean waves, from swell of hours to capillary ripples (a millimetre: 2×10³ rad/s), with room.
+    if !(1e-4..1e4).contains(&lo) {
+        return Err(CliError::Input(format!(
+            "--omega-min = {} is out of range: expected [1e-4, 1e4) rad/s",
+            super::num(lo)
+        )));
     }
-    if !(hi > lo && hi.is_finite()) {
-        return Err(CliError::Input(format!("--omega-max = {hi} is out of range: expected (omega-min, ∞) rad/s")));
+    if !(hi > lo && hi <= 1e4) {
+        return Err(CliError::Input(format!(
+            "--omega-max = {} is out of range: expected (omega-min, 1e4] rad/s",
+            super::num(hi)
+        )));
     }
     if !(2..=100_000).contains(&args.samples) {
         return Err(CliError::Input(format!("--samples = {} is out of range: expected [2, 100000]", args.samples)));
@@ -249,10 +271,10 @@ pub struct FitArgs {
     /// Cap on Σ Q, (0, 0.99]; steeper sets are scaled down together.
     #[arg(long, default_value_t = 0.9, value_parser = super::finite)]
     pub max_total_steepness: f64,
-    /// Lower band edge as a multiple of ωₚ.
+    /// Lower band edge as a multiple of ωₚ, (0, omega-max-factor).
     #[arg(long, default_value_t = 0.5, value_parser = super::finite)]
     pub omega_min_factor: f64,
-    /// Upper band edge as a multiple of ωₚ.
+    /// Upper band edge as a multiple of ωₚ, (0, 1000].
     #[arg(long, default_value_t = 12.0, value_parser = super::finite)]
     pub omega_max_factor: f64,
     /// Amplification of the high-frequency waves (Darles et al.'s capillary waves), [1, 100].
@@ -288,6 +310,9 @@ pub fn spreading_of(args: &FitArgs, wp: f64) -> Result<Box<dyn Spreading>, CliEr
     })
 }
 
+/// Widest band of a fit, in multiples of the peak frequency.
+const MAX_OMEGA_FACTOR: f64 = 1000.0;
+
 /// Fits the set described by `args`.
 ///
 /// # Errors
@@ -300,6 +325,22 @@ pub fn fit_set(args: &FitArgs) -> Result<(Box<dyn Spectrum>, TrochoidSet), CliEr
         return Err(CliError::Input(format!(
             "--wind-direction-deg = {} is out of range: expected a finite angle in degrees",
             args.wind_direction_deg
+        )));
+    }
+    if !(1..=10_000).contains(&args.waves) {
+        return Err(CliError::Input(format!("--waves = {} is out of range: expected [1, 10000]", args.waves)));
+    }
+    // The band in multiples of ωₚ: a wave at 1000 ωₚ is a millimetre long for the lightest wind.
+    if !(args.omega_max_factor > 0.0 && args.omega_max_factor <= MAX_OMEGA_FACTOR) {
+        return Err(CliError::Input(format!(
+            "--omega-max-factor = {} is out of range: expected (0, {MAX_OMEGA_FACTOR}]",
+            super::num(args.omega_max_factor)
+        )));
+    }
+    if !(args.omega_min_factor > 0.0 && args.omega_min_factor < args.omega_max_factor) {
+        return Err(CliError::Input(format!(
+            "--omega-min-factor = {} is out of range: expected (0, --omega-max-factor)",
+            super::num(args.omega_min_factor)
         )));
     }
     let options = FitOptions {
@@ -460,15 +501,27 @@ mod tests {
             vec!["--model", "tma"],
             vec!["--model", "pm", "--omega-min", "0"],
             vec!["--model", "pm", "--samples", "1"],
+            // Log spacing over 600 decades gave NaN frequencies.
+            vec!["--model", "pm", "--omega-min", "1e-300", "--omega-max", "1e300", "--log"],
         ] {
             match spectrum_json(&spectrum_args(&argv)) {
                 Err(CliError::Input(msg)) => assert!(!msg.is_empty()),
                 other => panic!("{argv:?}: {other:?}"),
             }
         }
-        match fit_json(&fit_args(&["--waves", "0"])) {
-            Err(CliError::Input(msg)) => assert!(msg.contains("n_waves"), "{msg}"),
-            other => panic!("{other:?}"),
+        // The flags are named as typed, with their ranges (not the fit's internal names).
+        for (argv, said) in [
+            (vec!["--waves", "0"], "--waves = 0 is out of range: expected [1, 10000]"),
+            (vec!["--omega-max-factor", "1e300"], "--omega-max-factor = 1e300 is out of range"),
+            (
+                vec!["--model", "jonswap", "--fetch-m", "1e-9"],
+                "--fetch-m = 1e-9 with --u10 = 10: the fetch laws give alpha",
+            ),
+        ] {
+            match fit_json(&fit_args(&argv)) {
+                Err(CliError::Input(msg)) => assert!(msg.starts_with(said), "{msg}"),
+                other => panic!("{argv:?}: {other:?}"),
+            }
         }
     }
 

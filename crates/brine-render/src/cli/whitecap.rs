@@ -245,7 +245,9 @@ pub fn whitecap_json(args: &WhitecapArgs) -> Result<Value, CliError> {
                 return Err(CliError::Input(format!("--sigma {sigma} is out of range: expected [0, ∞)")));
             }
             let w = whitecap_coverage(Moments { mu, sigma2: sigma * sigma }, alpha, erf);
-            Ok(json!({ "mu": mu, "sigma": sigma, "alpha": alpha, "erf": format!("{erf:?}"), "coverage": w }))
+            Ok(
+                json!({ "mu": mu, "sigma": sigma, "alpha": alpha, "erf": clap::ValueEnum::to_possible_value(&args.erf).map(|v| v.get_name().to_owned()), "coverage": w }),
+            )
         }
         _ => Err(CliError::Input("give --mu M --sigma S --alpha A, or --u10 U with --calibrate or --alpha A".into())),
     }
