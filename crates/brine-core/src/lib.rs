@@ -111,7 +111,13 @@ pub struct OutOfRange {
 
 impl std::fmt::Display for OutOfRange {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{} = {} is out of range: expected {}", self.name, self.value, self.range)
+        // Huge and tiny values with an exponent (`1e300`, not three hundred digits).
+        let v = self.value;
+        if v != 0.0 && v.is_finite() && !(1e-6..1e15).contains(&v.abs()) {
+            write!(f, "{} = {v:e} is out of range: expected {}", self.name, self.range)
+        } else {
+            write!(f, "{} = {v} is out of range: expected {}", self.name, self.range)
+        }
     }
 }
 
@@ -205,6 +211,15 @@ mod tests {
         assert_eq!(
             check("u10_m_s", 70.0, false, "[0, 60] m/s").unwrap_err().to_string(),
             "u10_m_s = 70 is out of range: expected [0, 60] m/s"
+        );
+        // Huge and tiny values with an exponent.
+        assert_eq!(
+            check("height_m", 1e300, false, "[-500, 9000] m").unwrap_err().to_string(),
+            "height_m = 1e300 is out of range: expected [-500, 9000] m"
+        );
+        assert_eq!(
+            check("sigma", 2.5e-300, false, "(0, 0.6]").unwrap_err().to_string(),
+            "sigma = 2.5e-300 is out of range: expected (0, 0.6]"
         );
         assert_eq!(require(true, "t_max", f64::INFINITY, "(t_min, ∞] m"), Ok(f64::INFINITY));
         assert!(check("t_max", f64::INFINITY, true, "(t_min, ∞] m").is_err());
