@@ -24,6 +24,7 @@ See docs/python.md.
 from __future__ import annotations
 
 import datetime as _dt
+import operator
 from typing import Any, Mapping, Optional
 
 import numpy as _np
@@ -277,8 +278,14 @@ class Scene:
         scene's animation, as ``brine render --frames`` renders it (the waves at
         ``sea.time_s + f/fps``, the sun at ``place.time_utc + f/fps``); what does not change
         between frames is built once for the scene."""
-        if frame is not None and not (isinstance(frame, int) and 0 <= frame < 2**32):
-            raise BrineError(f"frame = {frame!r} is out of range: expected an integer in [0, 2³²)")
+        if frame is not None:
+            try:
+                f = None if isinstance(frame, bool) else operator.index(frame)  # numpy integers too
+            except TypeError:
+                f = None
+            if f is None or not 0 <= f < 2**32:
+                raise BrineError(f"frame = {frame!r} is out of range: expected an integer in [0, 2³²)")
+            frame = f
         return self._scene.render(threads, reference, frame)
 
     def query(self, x: Any, z: Any, t: Any = None) -> dict:
@@ -334,7 +341,11 @@ class Scene:
         if center is not None:
             x, z = (float(c) for c in center)
             kwargs["center"] = f"{x!r},{z!r}"
-        return self._scene.mesh(**{k: v for k, v in kwargs.items() if v is not None})
+        try:
+            return self._scene.mesh(**{k: v for k, v in kwargs.items() if v is not None})
+        except BrineError as e:
+            # The command's keyword for the time is this method's `t`.
+            raise BrineError(str(e).replace("'time'", "'t'")) from None
 
     def __repr__(self) -> str:
         w, h = self.size

@@ -60,6 +60,10 @@ def test_animation_frames_are_the_cli_frames(scene, frame, brine_cli, tmp_path):
     np.testing.assert_array_equal(scene.render(frame=0)["rgb"], frame["rgb"])
     with pytest.raises(brine.BrineError, match="frame"):
         scene.render(frame=-1)
+    with pytest.raises(brine.BrineError, match="frame"):
+        scene.render(frame=True)
+    # A numpy integer is a frame number.
+    np.testing.assert_array_equal(scene.render(frame=np.int64(3))["rgb"], cli)
 
 
 def test_the_aovs_describe_sea_and_sky(frame):
@@ -170,5 +174,7 @@ def test_bad_scenes_and_arguments_raise():
         brine.Scene.from_dict({"sea": {"surface": "fft"}}).mesh(size_m=4.0, band_limit=True)
     with pytest.raises(brine.BrineError, match=r"pixels.*0.01 is out of range"):
         brine.Scene.from_dict(SMALL).mesh(camera=True, pixels=0.01)
+    with pytest.raises(brine.BrineError, match=r"'t'"):
+        brine.Scene.from_dict(SMALL).mesh(size_m=4.0, t=1e17)
     with pytest.raises(brine.BrineError, match=r"pass camera=True"):
         brine.Scene.from_dict(SMALL).mesh(pixels=4.0)

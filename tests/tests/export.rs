@@ -217,7 +217,7 @@ fn a_band_limited_mesh_holds_no_wave_its_grid_cannot_carry() {
 }
 
 /// A camera mesh covers the sea its camera sees, however steep the view: every point where one
-/// of the image's rays meets the mean sea has a vertex within a few footprints (looking 60° down,
+/// of the image's rays meets the mean sea has a vertex within two edges (looking 60° down,
 /// where the lower corners reach wider than the field of view and the nearest sea is under half
 /// the eye's height away, and straight down, where the image holds the camera's foot); a camera
 /// that sees no sea is refused.
@@ -240,9 +240,10 @@ fn a_camera_mesh_covers_what_the_camera_sees() {
                     .iter()
                     .map(|p| (f64::from(p[0]) - g.x).hypot(f64::from(p[2]) - g.z))
                     .fold(f64::INFINITY, f64::min);
-                // A vertex within two edges (each `2` footprints long at the eye's distance),
-                // plus the water's own horizontal displacement (under a metre here).
-                let reach = 2.0 * footprint * (g - cam.position).length() + 1.0;
+                // A vertex within two edges: the vertices stand above their grid points (no
+                // horizontal displacement), whose edges are 2 footprints long across the view
+                // and 2/sin γ along it (γ the grazing angle, `−d_y`).
+                let reach = 2.0 * footprint * (g - cam.position).length() / -d.y;
                 assert!(gap < reach, "pitch {pitch}: the sea at ({:.1}, {:.1}) is {gap:.2} m from the mesh", g.x, g.z);
             }
         }

@@ -113,7 +113,7 @@ impl std::fmt::Display for OutOfRange {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         // Huge and tiny values with an exponent (`1e300`, not three hundred digits).
         let v = self.value;
-        if v != 0.0 && v.is_finite() && !(1e-6..1e15).contains(&v.abs()) {
+        if v != 0.0 && v.is_finite() && !(1e-3..1e6).contains(&v.abs()) {
             write!(f, "{} = {v:e} is out of range: expected {}", self.name, self.range)
         } else {
             write!(f, "{} = {v} is out of range: expected {}", self.name, self.range)

@@ -269,7 +269,7 @@ pub fn remove_temporaries_on_signal() -> Result<(), String> {
 pub fn check_writable(path: &Path) -> Result<(), String> {
     let shown = path.display();
     if path.is_dir() {
-        return Err(format!("cannot write {shown}: it is a folder (give a file name ending in .png or .exr)"));
+        return Err(format!("cannot write {shown}: it is a folder (give a file name)"));
     }
     let dir = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,

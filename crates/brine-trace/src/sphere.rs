@@ -253,6 +253,18 @@ mod tests {
         }
         let along = Ray::new(DVec3::new(0.0, 0.5, 0.0), DVec3::X).unwrap();
         assert!(trace(&s, &along, &TraceOptions::default(), &mut TraceStats::default()).is_none());
+        // Waves thinner than the ray's rounding (10⁻²⁰ m at 3 m) are the same plane to the ray;
+        // a trace that ends where the ray enters the slab does not reach it.
+        let thin = Sine { a: 1e-20, k: 1.0 };
+        let up = Ray::new(DVec3::new(0.3, -3.0, 0.0), DVec3::new(0.6, 0.8, 0.0)).unwrap();
+        for method in Method::ALL {
+            let options = TraceOptions { method, ..TraceOptions::default() };
+            let hit = trace(&thin, &up, &options, &mut TraceStats::default());
+            assert!(hit.is_some_and(|h| (h.t - 3.75).abs() < 1e-12), "{method:?}: {hit:?}");
+        }
+        let thick = Sine { a: 0.5, k: 1.0 };
+        let short = TraceOptions { t_max: 3.125, ..TraceOptions::default() };
+        assert!(trace(&thick, &up, &short, &mut TraceStats::default()).is_none());
     }
 
     #[test]

@@ -53,25 +53,29 @@ pub fn trace_logged<S: LipschitzSum + ?Sized>(
     trace_impl(surface, ray, options, stats, Some(log))
 }
 
-/// The crossing of a flat zero set: bounds that are the plane `y = c` (a slab of no thickness,
-/// as a height field `F = y − h` with no waves has) hold a zero set that is that plane, which a
-/// ray not parallel to it crosses where it meets it. The sign test of the methods cannot see
-/// it: at the one point of the clipped span, `F` is the rounding of the ray's height, of either
-/// sign.
+/// The crossing of a flat zero set: bounds that are a horizontal slab too thin for the ray to
+/// resolve (a height field `F = y − h` with no waves, `y = c`, or waves thinner than the ray's
+/// rounding) are crossed where the ray meets them. A ray that crosses the slab crosses its zero
+/// set there (below the slab `F < 0`, above it `F > 0`), but the methods' sign test cannot see
+/// it: at the one point of the span, `F` is the rounding of the ray's height, of either sign.
 fn plane_crossing(bounds: &crate::Aabb, ray: &Ray, t0: f64, t1: f64, stats: &mut TraceStats) -> Option<Hit> {
-    // Exact: the slab of a sea with no waves is `[−0, 0]`, and the clipped span one point.
-    let flat = bounds.max.y - bounds.min.y == 0.0
-        && bounds.min.x == f64::NEG_INFINITY
+    let horizontal = bounds.min.x == f64::NEG_INFINITY
         && bounds.min.z == f64::NEG_INFINITY
         && bounds.max.x == f64::INFINITY
         && bounds.max.z == f64::INFINITY;
     let d = ray.direction();
-    if !(flat && t1 - t0 == 0.0 && d.y != 0.0) {
+    // Exact: the clipped span is one point, and the slab alone (not cut by `t_min` or `t_max`,
+    // which would leave the zero set beyond) spans that one point too.
+    if !(horizontal && d.y != 0.0 && t1 - t0 == 0.0) {
+        return None;
+    }
+    let (a, b) = bounds.clip(ray, f64::NEG_INFINITY, f64::INFINITY)?;
+    if b - a != 0.0 {
         return None;
     }
     stats.hits += 1;
     let mut point = ray.at(t0);
-    point.y = bounds.max.y;
+    point.y = point.y.clamp(bounds.min.y, bounds.max.y);
     Some(Hit { t: t0, point, entering: d.y < 0.0, steps: 0 })
 }
 

@@ -198,6 +198,7 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
     }
     let time_of =
         |f: u32| if f == 0 { scene.sea.time_s } else { scene.sea.time_s + f64::from(f) / scene.animation.fps };
+    check_last_frame(last - 1, time_of(last - 1))?;
     // Each frame of a sequence has the world `brine mesh --time` builds for it alone (the white
     // water's state belongs to its instant), from the parts that do not change built once.
     let timeless = match args.frames {
@@ -262,6 +263,20 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
         }
     }
     Ok(())
+}
+
+/// Refuses a run whose last (latest) frame, at `t` (s), is beyond the times the models hold, as
+/// `brine render` does, before anything is written.
+fn check_last_frame(frame: u32, t: f64) -> Result<(), CliError> {
+    let limit = super::render::MAX_FRAME_TIME_S;
+    if t.abs() <= limit {
+        return Ok(());
+    }
+    Err(CliError::Input(format!(
+        "frame {frame} would be at t = {} s, beyond the {} s the models are accurate to",
+        super::num(t),
+        super::num(limit)
+    )))
 }
 
 /// What `brine mesh` says about the waves its regular grid cannot carry: with `--band-limit`,
@@ -386,6 +401,9 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
     options.check().map_err(CliError::Input)?;
     let lattice = brine_waves::TileLattice::new(tile_m, args.loop_s)
         .map_err(|e| CliError::Input(e.to_string().replace("tile_m", "--tile-m").replace("loop_s", "--loop-s")))?;
+    if let Some((_, last)) = args.frames {
+        check_last_frame(last - 1, scene.sea.time_s + f64::from(last - 1) / scene.animation.fps)?;
+    }
     if args.output.exists() && !args.output.is_dir() {
         return Err(CliError::Input(format!("--output {}: not a folder", args.output.display())));
     }

@@ -251,6 +251,9 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
         ));
     }
     let (first, last) = args.frames.unwrap_or((0, 1));
+    // The last frame is the latest: if its time is within the models', every frame's is, and a
+    // run that cannot end is refused before it writes anything.
+    scene_at_frame(&scene, last - 1, (first, last), args.time_lapse)?;
     let mut evaluations = 0.0;
     let input = |w: WorldError| CliError::Input(format!("{}: {w}", scene_name(args)));
     // What does not change between frames (the fit, the ocean's amplitudes, the detail band,
@@ -264,8 +267,10 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
         if args.resume {
             crate::output::remove_stale_temporaries(path);
             if crate::output::decodes_completely(path) {
+                // Out of the bar's length, not counted as progress: the rate and the time left
+                // are those of the frames rendered.
                 skipped += 1;
-                bar.inc(u64::from(h));
+                bar.set_length(bar.length().unwrap_or(0).saturating_sub(u64::from(h)));
                 continue;
             }
         }

@@ -193,10 +193,38 @@ fn parse_vec2(s: &str) -> Result<[f64; 2], String> {
     parse_numbers(s, 2).map(|v| [v[0], v[1]])
 }
 
-/// A bad input: the message of a brine-texture error.
+/// A bad input: the message of a brine-texture error, naming the flag of the parameter it names
+/// (`links_per_frame = 9` is `--links = 9`).
 fn input(e: TextureError) -> CliError {
-    CliError::Input(e.to_string())
+    let m = e.to_string();
+    for (param, flag) in PARAMETER_FLAGS {
+        if let Some(rest) = m.strip_prefix(param).filter(|r| r.starts_with(" =")) {
+            return CliError::Input(format!("{flag}{rest}"));
+        }
+    }
+    CliError::Input(m)
 }
+
+/// brine-texture's parameter names and the flags that set them.
+const PARAMETER_FLAGS: [(&str, &str); 17] = [
+    ("links_per_frame", "--links"),
+    ("boundary_width", "--boundary"),
+    ("patch_size", "--patch"),
+    ("height_factor_small_m", "--hf-small-m"),
+    ("height_factor_main_m", "--hf-main-m"),
+    ("small_velocity_m_s", "--small-velocity-m-s"),
+    ("main_velocity_m_s", "--main-velocity-m-s"),
+    ("velocity_m_s", "--small-velocity-m-s or --main-velocity-m-s"),
+    ("wind_speed_m_s", "--wind-m-s"),
+    ("frames", "--basis-frames"),
+    ("morph_steps", "--morph-steps"),
+    ("small_size", "--small-size"),
+    ("main_size", "--main-size"),
+    ("texel_m", "--texel-m"),
+    ("bed_texel_m", "--bed-texel-m"),
+    ("bed_depth_m", "--bed-depth-m"),
+    ("fps", "--fps"),
+];
 
 /// Writes a file atomically ([`crate::output::write_atomic`]: a temporary file in the destination
 /// folder, renamed over it once complete, removed on a signal).
@@ -514,6 +542,16 @@ mod tests {
         assert!(e.to_string().contains("PNG"), "{e}");
         let e = run_texture(&TextureArgs { position: DVec3::new(0.0, -1.0, 0.0), ..a }).unwrap_err();
         assert!(e.to_string().contains("above the sea"), "{e}");
+        // The model's parameters are named by the flags that set them.
+        let mut many_links = args(&["-o", out.to_str().unwrap()]);
+        many_links.tuning.links = 99;
+        let e = run_texture(&many_links).unwrap_err();
+        assert!(e.to_string().starts_with("--links = 99 is out of range"), "{e}");
+        // A folder given as the output is refused before the synthesis.
+        let folder = dir.path().join("d.png");
+        std::fs::create_dir(&folder).unwrap();
+        let e = run_texture(&args(&["-o", folder.to_str().unwrap()])).unwrap_err();
+        assert!(e.to_string().contains("it is a folder"), "{e}");
         assert!(!out.exists());
     }
 }

@@ -148,7 +148,9 @@ fn spectrum_json(args: &SpectrumArgs) -> Result<serde_json::Value, CliError> {
     let lo = args.omega_min.unwrap_or(0.3 * wp);
     let hi = args.omega_max.unwrap_or(10.0 * wp);
     // Ocean waves, from swell of hours to capillary ripples (a millimetre: 2×10³ rad/s), with room.
-    if (args.omega_min.is_none() || args.omega_max.is_none()) && !(lo >= 1e-4 && hi <= 1e4) {
+    let default_out =
+        (args.omega_min.is_none() && !(1e-4..1e4).contains(&lo)) || (args.omega_max.is_none() && hi > 1e4);
+    if default_out {
         return Err(CliError::Input(format!(
             "the default band 0.3–10 ωₚ (ωₚ = {} rad/s for --u10 = {}) leaves [1e-4, 1e4] rad/s: give --omega-min and --omega-max",
             super::num(wp),

@@ -297,13 +297,18 @@ pub fn camera_layout(world: &World, pixels: f64) -> (Vec<f64>, Vec<f64>, u64) {
     let down = DVec3::NEG_Y;
     let (f, x, y) = (down.dot(cam.forward), down.dot(cam.right), down.dot(cam.up));
     let nadir_inside = f > 0.0 && x.abs() <= f * cam.tan_half_fov * aspect && y.abs() <= f * cam.tan_half_fov;
-    if !nadir_inside && border.iter().all(|d| d.y >= 0.0) {
+    // A camera above the crests sees no sea when every ray of its image points above the
+    // horizon (one under the surface sees its underside whichever way it looks).
+    let above = cam.position.y > world.sea.height_bounds().1;
+    if above && !nadir_inside && border.iter().all(|d| d.y >= 0.0) {
         return (Vec::new(), Vec::new(), 0);
     }
     let half = if nadir_inside {
         std::f64::consts::PI
     } else {
-        let spread = border.iter().map(|d| wrap_angle(d.z.atan2(d.x) - yaw).abs()).fold(0.0, f64::max);
+        // The azimuths of the border rays that meet the sea (those above the horizon do not).
+        let spread =
+            border.iter().filter(|d| d.y < 0.0).map(|d| wrap_angle(d.z.atan2(d.x) - yaw).abs()).fold(0.0, f64::max);
         (1.2 * half_h).max(1.1 * spread).min(std::f64::consts::PI)
     };
     let count = (2.0 * half / alpha).ceil().max(1.0) as usize;

@@ -127,7 +127,7 @@ impl GerstnerSurface {
 
     /// The surface frozen at time `t` (s).
     ///
-    /// Each wave's phase offset `φ₀ − ωt` is reduced to `[0, 2π)` once here: unreduced, at
+    /// Each wave's phase offset `φ₀ − ωt` is reduced to `[0, 2π]` once here: unreduced, at
     /// `t = 10⁶ s` it is 10⁷ rad, and every sine of the sum pays a slow argument reduction (a
     /// frame took 7 times as long as at `t = 0`).
     pub fn at_time(&self, t: f64) -> GerstnerField<'_> {
@@ -593,7 +593,7 @@ mod tests {
         }
     }
 
-    /// A day of 10⁶ s later: the phase offsets are reduced to `[0, 2π)` (unreduced, every sine
+    /// Eleven days (10⁶ s) later: the phase offsets are reduced to `[0, 2π]` (unreduced, every sine
     /// paid a slow argument reduction), and the surface is still the single trochoid's, whose
     /// phase `ωt` is taken whole (10⁷ rad: its f64 rounding, ~10⁻⁹ rad, times `A` and the
     /// slope, is the tolerance's scale).
@@ -605,7 +605,7 @@ mod tests {
         let g = GerstnerSurface::new(&set).unwrap();
         let t = TrochoidSum::new(&set);
         let late = 1.0e6 + 0.37;
-        assert!(g.at_time(late).offset.iter().all(|o| (0.0..std::f64::consts::TAU).contains(o)));
+        assert!(g.at_time(late).offset.iter().all(|o| (0.0..=std::f64::consts::TAU).contains(o)));
         for j in 0..50 {
             let (x, z) = (j as f64 * 0.37 - 9.0, j as f64 * 0.11);
             assert!((g.height(x, z, late) - t.height(x, z, late)).abs() < LATE_HEIGHT_ABS);
