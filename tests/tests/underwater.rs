@@ -36,3 +36,20 @@ fn a_flat_calm_shows_snells_window_from_below() {
     let (centre, corner) = snells_window(0.0, 8);
     assert!(centre > 10.0 * corner, "centre {centre} vs corners {corner}");
 }
+
+/// A wind so light that even the longest waves the fit would draw are under a millimetre is a
+/// calm: no wind sea is drawn, and the view up from under it is the calm's, pixel for pixel
+/// within the BRDF's roughness change. (At 10⁻⁷–10⁻⁹ m/s the fit once drew waves nanometres long,
+/// numerically meaningless: the window dissolved into noise or a grey field.)
+#[test]
+fn a_wind_too_light_for_any_wave_is_a_calm() {
+    // Cox & Munk's variance at 10⁻⁷ m/s differs from the calm's by 5×10⁻¹⁰ (of 0.003).
+    const CALM_ROUGHNESS_REL: f64 = 1e-6;
+    let calm = snells_window(0.0, 8);
+    for wind in [1e-9, 1e-8, 1e-7] {
+        let (centre, corner) = snells_window(wind, 8);
+        assert!(centre > 10.0 * corner, "{wind} m/s: centre {centre} vs corners {corner}");
+        assert!((centre - calm.0).abs() <= CALM_ROUGHNESS_REL * calm.0, "{wind} m/s: centre {centre}, calm {}", calm.0);
+        assert!((corner - calm.1).abs() <= CALM_ROUGHNESS_REL * calm.1, "{wind} m/s: corner {corner}, calm {}", calm.1);
+    }
+}

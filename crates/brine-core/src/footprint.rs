@@ -50,6 +50,35 @@ pub fn footprint_weight_slope(fade_distance: f64, t: f64) -> f64 {
     -12.0 * u * (1.0 - u) * x / t
 }
 
+/// Smallest `|d_y|` by which a pixel footprint is stretched along the view: the footprint on the
+/// sea is `αt` across the view and `αt/max(|d_y|, 0.05)` along it (a ray of unit direction `d`,
+/// `y` up; beyond 87° from the vertical the stretch stops at 20).
+///
+/// On the mean plane a pixel at `t` covers `αt/|d_y|` along the view, which grows without bound
+/// toward the horizon and is infinite for a ray that never meets the plane (a level or rising
+/// ray, which can still meet a crest above the eye). Such a ray meets the faces of the waves,
+/// not the mean plane: their slopes (Cox & Munk's root-mean-square slope is 0.1 in a light air, 0.3 in a gale),
+/// not the ray's, set how much of the sea the pixel spans. A fade by the unbounded stretch flattens every wave
+/// along a level ray, so that it passes through the crests a camera below them must see (the
+/// reference rendering, which fades nothing, sees them). Shared by the tracer's fades and the
+/// shading's footprint, so that the waves a ray fades are those the shading hands to the BRDF.
+pub const MIN_FOOTPRINT_GRAZING: f64 = 0.05;
+
+/// `1/max(|d_y|, MIN_FOOTPRINT_GRAZING)²`: the squared stretch of a pixel footprint along the
+/// view, for the fade distance `T = 2π/(α √(k² + σ² · this))` of a wave of wavenumber `k` whose
+/// wave vector has the component `σ = k·d̂_xz` along the view.
+///
+/// # Arguments
+/// - `d_y`: vertical component of the ray's unit direction, `[-1, 1]`.
+///
+/// # Returns
+/// The squared stretch, `[1, 400]`.
+#[inline]
+pub fn footprint_stretch_squared(d_y: f64) -> f64 {
+    let g = d_y.abs().max(MIN_FOOTPRINT_GRAZING);
+    1.0 / (g * g)
+}
+
 /// `√12`: a box of width `w` has the standard deviation `w/√12`, so a Gaussian footprint of
 /// standard deviation `s` reads the pyramid level of texel width `√12 s` (same spread).
 pub const BOX_WIDTH_PER_SIGMA: f64 = 3.464_101_615_137_754_6;

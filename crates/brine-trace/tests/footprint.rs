@@ -31,14 +31,15 @@ fn direction(dy: f64, azimuth: f64) -> DVec3 {
 }
 
 /// The documented rule, written out from the wave parameters alone: the pixel footprint `αt`
-/// across the view is stretched by `1/|d_y|` along it, so along the wave direction `k̂` it spans
-/// `αt·√(1 + (k̂·d̂_xz)²/d_y²)`; with `x = λ/(that span)`, the weight is 0 for `x ≤ 1`, 1 for
+/// across the view is stretched by `1/max(|d_y|, 0.05)` along it, so along the wave direction
+/// `k̂` it spans `αt·√(1 + (k̂·d̂_xz)²/max(|d_y|, 0.05)²)`; with `x = λ/(that span)`, the weight is 0 for `x ≤ 1`, 1 for
 /// `x ≥ 1.5` and `3u² − 2u³`, `u = 2(x − 1)`, between (equations.md §1 "Antialiasing").
 fn expected_weight(set: &TrochoidSet, wave: usize, d: DVec3, alpha: f64, t: f64) -> f64 {
     let w = &set.waves()[wave];
     let k_hat = w.direction_vector();
     let along = k_hat.x * d.x + k_hat.y * d.z;
-    let span = alpha * t * (1.0 + along * along / (d.y * d.y)).sqrt();
+    let grazing = d.y.abs().max(0.05);
+    let span = alpha * t * (1.0 + along * along / (grazing * grazing)).sqrt();
     let x = w.wavelength() / span;
     if x <= 1.0 {
         0.0
@@ -61,7 +62,7 @@ proptest! {
     fn weights_follow_the_documented_rule_and_only_decrease(
         n in 1usize..60,
         seed in 0u64..10_000,
-        dy in -0.999f64..-0.01,
+        dy in -0.999f64..0.3,
         azimuth in 0.0f64..TAU,
         alpha in 1e-4f64..1e-2,
         t in 0.1f64..3000.0,
@@ -216,5 +217,37 @@ fn weight_matches_the_smoothstep_at_exact_points() {
     for (x, expected) in [(1.1f64, 0.104f64), (1.25, 0.5), (1.4, 0.896)] {
         // u = 2(x − 1) = 0.2, 0.5, 0.8: 3u² − 2u³ = 0.104, 0.5, 0.896.
         assert!((footprint_weight(x * 10.0, 10.0) - expected).abs() <= WEIGHT_ROUNDING, "x = {x}");
+    }
+}
+
+/// A level or rising ray from an eye below the crests meets them with the footprint fade on, where
+/// it meets them without it: along the view the footprint is stretched by at most
+/// `1/0.05`, so the long wave that makes the crests is not faded. (Stretched by `1/|d_y|`, the
+/// wave faded at once along a level ray, which passed through every crest to the horizon.)
+#[test]
+fn a_level_ray_from_below_the_crests_meets_them() {
+    // One wave 100 m long, 2 m high, running along x; the eye 0.5 m above the mean sea.
+    let k = TAU / 100.0;
+    let wave = brine_waves::Trochoid::new(2.0, k, 0.0, (9.81 * k).sqrt(), 0.0, 0.5).unwrap();
+    let set = TrochoidSet::new(vec![wave]);
+    let sea = TracedTrochoids::new(&set, 0.0);
+    // A pixel of 1 mrad: with the stretch capped, the wave fades from `2π·0.05/(αk)` = 5 km.
+    let faded = TraceOptions {
+        method: Method::Tiered,
+        footprint_angle: 1e-3,
+        t_max: 3000.0,
+        tolerance: 1e-6,
+        tolerance_relative: 0.0,
+        ..TraceOptions::default()
+    };
+    let whole = TraceOptions { footprint_angle: 0.0, ..faded };
+    for (dy, azimuth) in [(0.0, 0.0), (0.0, 0.5), (0.005, 0.0), (-0.002, 3.0)] {
+        let ray = Ray::new(DVec3::new(30.0, 0.5, 0.0), direction(dy, azimuth)).unwrap();
+        let unfaded = trace(&sea, &ray, &whole, &mut TraceStats::default()).expect("the crest is in the way");
+        let hit = trace(&sea, &ray, &faded, &mut TraceStats::default());
+        let hit = hit.unwrap_or_else(|| {
+            panic!("d_y = {dy}, azimuth {azimuth}: the faded ray passed through the crest at {}", unfaded.t)
+        });
+        assert!((hit.t - unfaded.t).abs() <= 1e-3, "d_y = {dy}: met at {} m, unfaded {} m", hit.t, unfaded.t);
     }
 }

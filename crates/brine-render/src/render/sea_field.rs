@@ -4,8 +4,8 @@ use super::*;
 use brine_waves::EllipticalFootprint;
 use glam::DVec2;
 
-/// Smallest `|d_y|` of the pixel footprint's stretch `1/√|d_y|` on the sea (the FFT fading's).
-pub(super) const MIN_FOOTPRINT_GRAZING: f64 = 0.05;
+/// Smallest `|d_y|` of the pixel footprint's stretch on the sea (the tracer's fades').
+pub(super) use brine_core::footprint::MIN_FOOTPRINT_GRAZING;
 
 /// The sea of a frame ready to trace (brine-waves `TracedSea`), with the renderer's choices of
 /// options: primary rays by the tiered method with the waves fading with the pixel footprint,
@@ -71,7 +71,7 @@ impl<'a> SeaField<'a> {
     /// read through the pixel's footprint, and the slopes the footprint hides join the BRDF's.
     pub(super) fn hit_geometry(&self, p: DVec3, d: DVec3, t: f64, world: &World) -> (DVec3, SlopeVariance) {
         let angle = world.filtering_angle();
-        // The pixel on the sea: `αt` across the view, `αt/|d_y|` along it, as Gaussians of the
+        // The pixel on the sea: `αt` across the view, `αt/max(|d_y|, 0.05)` along it, as Gaussians of the
         // same spread as those boxes.
         let across = angle * t / brine_waves::BOX_WIDTH_PER_SIGMA;
         let along = across / d.y.abs().max(MIN_FOOTPRINT_GRAZING);

@@ -386,7 +386,7 @@ pub(super) fn white_water(
     // Sample footprint on the sea: the sample's angle at distance t across the view, stretched by
     // the grazing view along it.
     let across = t * world.sample_angle();
-    let along = across / d.y.abs().max(0.05);
+    let along = across / d.y.abs().max(MIN_FOOTPRINT_GRAZING);
     let sun = world.sky.sun();
     let cos_sun = n.dot(sun.direction);
     let e_sky = world.sky.horizontal_irradiance_rgb();

@@ -272,7 +272,14 @@ pub const KEYS: &[KeySpec] = &[
         "`\"trochoids\"`",
         "surface traced (see renderer.md); `fft` is Tessendorf's inverse-FFT sea of the same spectrum (see `[sea.fft]`)",
     ),
-    k("sea", "wind_speed_m_s", closed(0.0, 60.0), "m/s", "10", "U10, the wind 10 m above the sea; 0 is a flat calm"),
+    k(
+        "sea",
+        "wind_speed_m_s",
+        closed(0.0, 60.0),
+        "m/s",
+        "10",
+        "U10, the wind 10 m above the sea; 0 is a flat calm, as is a wind too light to raise waves a millimetre long (under about 0.02 m/s)",
+    ),
     k(
         "sea",
         "wind_direction_deg",

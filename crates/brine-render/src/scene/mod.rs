@@ -296,7 +296,8 @@ pub struct SeaConfig {
     pub spreading: SpreadingKind,
     /// Surface model traced.
     pub surface: SurfaceKind,
-    /// Wind speed 10 m above the sea, `U₁₀` (m s⁻¹, `[0, 60]`; 0 is a flat calm).
+    /// Wind speed 10 m above the sea, `U₁₀` (m s⁻¹, `[0, 60]`; 0 is a flat calm, as is a wind too light
+    /// to raise waves a millimetre long, under about 0.02 m/s).
     pub wind_speed_m_s: f64,
     /// Direction the wind blows toward (°, from +x (east) toward +z (south)).
     pub wind_direction_deg: f64,

@@ -57,6 +57,9 @@ pub(super) struct SeaSpectra {
     /// The wavenumber (rad m⁻¹) up to which the wind sea's spectrum holds Cox & Munk's total
     /// slope variance ([`slope_cutoff`]); infinite without a wind sea.
     pub(super) k_cox_munk: f64,
+    /// The first spectrum is the wind sea's (false: no wind, no wind waves, or a wind too light
+    /// to draw any).
+    pub(super) wind_sea: bool,
 }
 
 /// Shortest wave any surface draws when the spectrum holds less slope than Cox & Munk's total
@@ -87,8 +90,19 @@ pub(super) fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, 
     let mut spreadings: Vec<Box<dyn Spreading>> = Vec::new();
     let mut counts = Vec::new();
     let mut options = Vec::new();
-    if s.wind_speed_m_s > 0.0 && (any_count || s.waves > 0) {
+    let wind_sea = if s.wind_speed_m_s > 0.0 && (any_count || s.waves > 0) {
         let spectrum = sea_spectrum(s)?;
+        // A wind so light that even the fit's longest waves, at half the peak frequency, are
+        // shorter than the shortest wave any surface draws has no wind sea to draw: its waves
+        // would be capillary ripples under a micrometre high (Pierson–Moskowitz below 0.017 m/s),
+        // outside the gravity-wave spectra, and numerically meaningless toward nanometres. The
+        // sea is then a calm whose roughness is all in the BRDF, as at 0.
+        let k_lo = spectrum.dispersion().wavenumber(0.5 * spectrum.peak_omega());
+        (k_lo < std::f64::consts::TAU / SHORTEST_WAVE_M).then_some(spectrum)
+    } else {
+        None
+    };
+    if let Some(spectrum) = wind_sea {
         let wp = spectrum.peak_omega();
         k_cox_munk = slope_cutoff(spectrum.as_ref(), s.wind_speed_m_s)?;
         // The fitted band ends at 12 ω_p, or sooner where the spectrum reaches Cox & Munk's total.
@@ -112,6 +126,7 @@ pub(super) fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, 
         counts.push(s.waves as usize);
         options.push(sea_options);
     }
+    let drawn_wind_sea = !spectra.is_empty();
     if let Some(w) = &s.swell {
         let (spectrum, spreading) = swell_spectrum(w)?;
         spectra.push(Box::new(spectrum));
@@ -123,7 +138,7 @@ pub(super) fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, 
             ..sea_options
         });
     }
-    Ok(SeaSpectra { spectra, spreadings, counts, options, k_cox_munk })
+    Ok(SeaSpectra { spectra, spreadings, counts, options, k_cox_munk, wind_sea: drawn_wind_sea })
 }
 
 /// The wind sea (and swell) of `[sea]` as one trochoid set, fitted under one steepness cap
@@ -248,7 +263,10 @@ pub(super) fn detail_waves(
     if stats.flat || s.wind_speed_m_s <= 0.0 || s.waves == 0 {
         return Ok(None);
     }
-    let SeaSpectra { spectra, spreadings, options, .. } = sea_spectra(s, false)?;
+    let SeaSpectra { spectra, spreadings, options, wind_sea, .. } = sea_spectra(s, false)?;
+    if !wind_sea {
+        return Ok(None);
+    }
     let (spectrum, spreading, o) = (spectra[0].as_ref(), spreadings[0].as_ref(), options[0]);
     let k_lo = spectrum.dispersion().wavenumber(o.omega_max_factor * spectrum.peak_omega());
     let target = total.sigma_x2() + total.sigma_y2() - stats.slope_along - stats.slope_across;

@@ -13,9 +13,9 @@ use crate::fft::resample::resample;
 use crate::fft::spline::SplineGrid;
 use crate::{FftOcean, FftRestFields};
 
-/// Smallest `|d_y|` used to stretch a pixel footprint along a grazing view (as the renderer's
-/// footprint, `brine-render`): beyond 87° from the vertical the stretch stops at `1/√0.05`.
-const MIN_GRAZING: f64 = 0.05;
+/// Smallest `|d_y|` used to stretch a pixel footprint along a grazing view (the trochoid fades'
+/// and the renderer's footprint): beyond 87° from the vertical the stretch stops at `1/√0.05`.
+const MIN_GRAZING: f64 = brine_core::footprint::MIN_FOOTPRINT_GRAZING;
 
 /// One cascade of an [`FftFrame`]: an `N × N` periodic grid of spacing `Δ = L/N` over its tile;
 /// the traced height is the interpolating cubic B-spline of its grid heights, the shading

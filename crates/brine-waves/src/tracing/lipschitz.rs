@@ -46,16 +46,17 @@ impl LipschitzSum for TrochoidField<'_> {
         if i == 0 { f64::INFINITY } else { std::f64::consts::TAU / self.sum.wavenumber[i - 1] }
     }
 
-    /// `Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²))`, `σᵢ = kᵢ d̂ᵢ·d̂_xz`: the pixel footprint on the sea is `αt`
-    /// across the view and `αt/|d_y|` along it, so its extent along the wave direction `d̂ᵢ` is
-    /// `αt √(1 + (d̂ᵢ·d̂_xz)²/d_y²)` (the same rule as [`crate::TracedTrochoids`]).
+    /// `Tᵢ = 2π/(α √(kᵢ² + σᵢ²/max(|d_y|, 0.05)²))`, `σᵢ = kᵢ d̂ᵢ·d̂_xz`: the pixel footprint on the sea is `αt`
+    /// across the view and `αt/max(|d_y|, 0.05)` along it, so its extent along the wave direction `d̂ᵢ` is
+    /// `αt √(1 + (d̂ᵢ·d̂_xz)²/max(|d_y|, 0.05)²)` (the same rule as [`crate::TracedTrochoids`]).
     fn component_fade_distance(&self, i: usize, d: DVec3, footprint_angle: f64) -> f64 {
         if i == 0 {
             return f64::INFINITY;
         }
         let s = &self.sum;
         let (k, sigma) = (s.wavenumber[i - 1], s.kx[i - 1] * d.x + s.kz[i - 1] * d.z);
-        std::f64::consts::TAU / (footprint_angle * (k * k + sigma * sigma / (d.y * d.y).max(1e-300)).sqrt())
+        std::f64::consts::TAU
+            / (footprint_angle * (k * k + sigma * sigma * brine_core::footprint::footprint_stretch_squared(d.y)).sqrt())
     }
 
     #[inline]

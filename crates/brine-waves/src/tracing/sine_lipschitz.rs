@@ -75,7 +75,7 @@ impl LipschitzSum for SineField<'_> {
         }
     }
 
-    /// `Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²))`, `σᵢ = kᵢ·d̂_xz`: the rule of the trochoid tracer.
+    /// `Tᵢ = 2π/(α √(kᵢ² + σᵢ²/max(|d_y|, 0.05)²))`, `σᵢ = kᵢ·d̂_xz`: the rule of the trochoid tracer.
     fn component_fade_distance(&self, i: usize, d: DVec3, footprint_angle: f64) -> f64 {
         if i == 0 {
             return f64::INFINITY;

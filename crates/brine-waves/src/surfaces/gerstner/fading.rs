@@ -42,8 +42,8 @@ impl FadedWaves {
 
 impl GerstnerField<'_> {
     /// Footprint fade distances `Tᵢ` of the waves for a ray of unit direction `d` and a pixel of
-    /// `footprint_angle` rad: `Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²))`, `σᵢ = kᵢ·d̂_xz` (the pixel footprint
-    /// is `αt` across the view and `αt/|d_y|` along it; the rule of the trochoid tracer).
+    /// `footprint_angle` rad: `Tᵢ = 2π/(α √(kᵢ² + σᵢ²/max(|d_y|, 0.05)²))`, `σᵢ = kᵢ·d̂_xz` (the pixel footprint
+    /// is `αt` across the view and `αt/max(|d_y|, 0.05)` along it; the rule of the trochoid tracer).
     ///
     /// # Arguments
     /// - `d`: unit ray direction.

@@ -136,8 +136,8 @@ pub struct TracedTrochoids {
 }
 
 impl TracedTrochoids {
-    /// `Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²))`: the pixel footprint on the sea is `αt` across the view and
-    /// `αt/|d_y|` along it; its extent along `k̂ᵢ` is `αt √(1 + (k̂ᵢ·d̂_xz)²/d_y²)`.
+    /// `Tᵢ = 2π/(α √(kᵢ² + σᵢ²/max(|d_y|, 0.05)²))`: the pixel footprint on the sea is `αt` across the view and
+    /// `αt/max(|d_y|, 0.05)` along it; its extent along `k̂ᵢ` is `αt √(1 + (k̂ᵢ·d̂_xz)²/max(|d_y|, 0.05)²)`.
     ///
     /// Component 0 is `y` (never fades, `∞`); component `i + 1` is wave `i`: the distance (m)
     /// along a ray of unit direction `d` at which wave `i` is faded out by a footprint of
@@ -149,7 +149,7 @@ impl TracedTrochoids {
         let w = &self.waves[i - 1].0;
         let k = w.wavenumber();
         let sigma = k * (w.direction_vector().x * d.x + w.direction_vector().y * d.z);
-        TAU / (footprint_angle * (k * k + sigma * sigma / (d.y * d.y).max(1e-300)).sqrt())
+        TAU / (footprint_angle * (k * k + sigma * sigma * brine_core::footprint::footprint_stretch_squared(d.y)).sqrt())
     }
 
     /// The surface of `set` at time `time` (s, finite: the scene's validated time).
@@ -503,7 +503,7 @@ fn rest_displacement_of(tiers: &[Tier], u: DVec2) -> DVec2 {
 }
 
 /// The fade of the waves along one ray: `wᵢ = smoothstep(1, 1.5, Tᵢ/t)` with
-/// `Tᵢ/t = (2π/(α t))/√(kᵢ² + σᵢ²/d_y²)` (`footprint_weight`, `component_fade_distance`), computed
+/// `Tᵢ/t = (2π/(α t))/√(kᵢ² + σᵢ²/max(|d_y|, 0.05)²)` (`footprint_weight`, `component_fade_distance`), computed
 /// by halves of 4 f64 lanes; padding lanes (k = 0) get `Tᵢ = ∞`, `w = 1` and no covariance.
 struct Fade {
     fading: bool,
@@ -518,7 +518,7 @@ impl Fade {
         let fading = footprint_angle > 0.0 && t > 0.0;
         Self {
             fading,
-            inv_dy2: f64x4::splat(1.0 / (direction.y * direction.y).max(1e-300)),
+            inv_dy2: f64x4::splat(brine_core::footprint::footprint_stretch_squared(direction.y)),
             reach: f64x4::splat(if fading { TAU / (footprint_angle * t) } else { 0.0 }),
             dx: f64x4::splat(direction.x),
             dz: f64x4::splat(direction.z),
@@ -540,7 +540,7 @@ impl Fade {
             let (tkx, tkz, k) = (v(&tier.kx), v(&tier.kz), v(&tier.wavenumber));
             let sigma = tkx * self.dx + tkz * self.dz;
             let resolution = k * k + sigma * sigma * self.inv_dy2;
-            // Tᵢ/t ≥ 1.5 on every lane, i.e. (2π/(αt))² ≥ 2.25 (kᵢ² + σᵢ²/d_y²): no wave of
+            // Tᵢ/t ≥ 1.5 on every lane, i.e. (2π/(αt))² ≥ 2.25 (kᵢ² + σᵢ²/max(|d_y|, 0.05)²): no wave of
             // these four has begun to fade (w = 1, nothing lost), without the square root
             // and division, which cost as much as the profile itself.
             if (self.reach * self.reach).simd_ge(f64x4::splat(2.25) * resolution).all() {

@@ -99,9 +99,9 @@ impl<'a> SeaTiers<'a> {
         footprint_angle: f64,
     ) -> f64 {
         let fading = footprint_angle > 0.0;
-        // Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²)): the footprint stretched by 1/|d_y| along the view.
+        // Tᵢ = 2π/(α √(kᵢ² + σᵢ²/max(|d_y|, 0.05)²)): the footprint stretched by 1/max(|d_y|, 0.05) along the view.
         let reach = f32x8::splat(if fading { (TAU / footprint_angle) as f32 } else { 0.0 });
-        let inv_dy2 = f32x8::splat(((1.0 / (d.y * d.y).max(1e-300)) as f32).min(f32::MAX));
+        let inv_dy2 = f32x8::splat(brine_core::footprint::footprint_stretch_squared(d.y) as f32);
         let mut slope_error = 0.0;
         for (j, t) in sea.tiers.iter().enumerate() {
             let (s0, sigma, lanes) = (&mut state.s0[j], &mut state.sigma[j], &mut state.lane_bounds[j]);
@@ -176,8 +176,8 @@ impl<'a> SeaTiers<'a> {
         footprint_angle: f64,
         cone: f64,
     ) -> f64 {
-        // In a cone, |σ/d_y| ≤ (|σ_axis| + kθ)/(|d_y| − θ).
-        let dy_cone = (d.y.abs() - cone).max(1e-12);
+        // In a cone, |σ|/max(|d_y|, g) ≤ (|σ_axis| + kθ)/max(|d_y| − θ, g), g the smallest grazing.
+        let dy_cone = (d.y.abs() - cone).max(brine_core::footprint::MIN_FOOTPRINT_GRAZING);
         let mut slope_error = 0.0;
         for (j, t) in sea.tiers.iter().enumerate() {
             let mut info = TierOnRay { fade_min: f64::INFINITY, fade_max: f64::INFINITY, ..TierOnRay::default() };
@@ -194,7 +194,7 @@ impl<'a> SeaTiers<'a> {
                 amp_sigma[l] = t.amplitude[l] * sg as f32;
                 let a = f64::from(t.amplitude[l]);
                 if footprint_angle > 0.0 && l < t.count as usize {
-                    // Tᵢ = 2π/(α √(kᵢ² + σᵢ²/d_y²)) at its smallest over the cone.
+                    // Tᵢ = 2π/(α √(kᵢ² + σᵢ²/max(|d_y|, 0.05)²)) at its smallest over the cone.
                     let k = t.wavenumber[l];
                     let ratio = (sg.abs() + k * cone) / dy_cone;
                     let big_t = TAU / (footprint_angle * (k * k + ratio * ratio).sqrt());
