@@ -292,3 +292,50 @@ fn a_default_put_out_of_range_by_another_key_is_reported_at_that_key() {
     assert!(err.contains("is not in the file: that is its default"), "{err}");
     assert_nothing_written(dir.path());
 }
+
+/// A 16-bit PNG bake holds the values of the EXR bake, read as PNG readers read it (big-endian
+/// samples) through `bake.json`'s encoding, within a quantisation step; and a sequence of the FFT
+/// sea encodes every frame on that one range. (The samples were once written byte-swapped; and
+/// the FFT sea's height bound changes from frame to frame, and the range was the running maximum
+/// of the bounds, so that the first frames were encoded on a smaller range than the one written.)
+#[test]
+fn a_png_bake_holds_the_exr_bake_on_one_encoding() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = "[sea]\nsurface = \"fft\"\n[sea.fft]\nresolution = 64\ncascades = 2\n[animation]\nfps = 1.0\n";
+    std::fs::write(dir.path().join("fft.toml"), scene).unwrap();
+    for (name, frames, png) in [("seq", "0..4", true), ("one", "0..1", true), ("exr", "0..1", false)] {
+        let mut args = vec!["bake", "fft.toml", "-q", "-o", name, "--size", "16", "--frames", frames];
+        args.extend(png.then_some("--png16"));
+        let out = brine(&args, dir.path());
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    }
+    let decode = |name: &str| -> (f64, Vec<f64>) {
+        let meta: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(dir.path().join(name).join("bake.json")).unwrap()).unwrap();
+        let e = &meta["png16_encodings"]["displacement"];
+        let (offset, scale) = (e["offset"].as_f64().unwrap(), e["scale"].as_f64().unwrap());
+        let map = image::open(dir.path().join(name).join("displacement_0000.png")).unwrap().into_rgb16();
+        (scale / 65535.0, map.as_raw().iter().map(|&c| offset + scale * f64::from(c) / 65535.0).collect())
+    };
+    let ((step_seq, seq), (step_one, one)) = (decode("seq"), decode("one"));
+    let image = exr::prelude::read_all_flat_layers_from_file(dir.path().join("exr/displacement_0000.exr")).unwrap();
+    let layer = &image.layer_data[0];
+    let channel = |name: &str| -> Vec<f32> {
+        let c = layer.channel_data.list.iter().find(|c| c.name.to_string() == name).expect(name);
+        match &c.sample_data {
+            exr::prelude::FlatSamples::F32(v) => v.clone(),
+            other => panic!("{name}: {other:?}"),
+        }
+    };
+    let (r, g, b) = (channel("R"), channel("G"), channel("B"));
+    let exact: Vec<f64> = (0..r.len()).flat_map(|k| [r[k], g[k], b[k]]).map(f64::from).collect();
+    assert_eq!(exact.len(), one.len());
+    // Half a step of rounding, and the f32 maps' rounding far below it.
+    for (k, (e, p)) in exact.iter().zip(&one).enumerate() {
+        assert!((e - p).abs() <= 0.5 * step_one + 1e-5, "sample {k}: EXR {e} m, PNG {p} m");
+    }
+    assert!(step_seq > step_one, "a later frame of the sequence reaches higher than frame 0");
+    for (e, p) in exact.iter().zip(&seq) {
+        assert!((e - p).abs() <= 0.5 * step_seq + 1e-5, "frame 0: EXR {e} m, the sequence's PNG {p} m");
+    }
+}

@@ -265,6 +265,12 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
     Ok(())
 }
 
+/// The range (m) of a 16-bit displacement map of a sea whose heights lie in `[lo, hi]` (m): half
+/// again the larger bound (horizontal displacements share the range), at least a millimetre.
+fn displacement_range(lo: f64, hi: f64) -> f64 {
+    (lo.abs().max(hi.abs()) * 1.5).max(1e-3)
+}
+
 /// Refuses a run whose last (latest) frame, at `t` (s), is beyond the times the models hold, as
 /// `brine render` does, before anything is written.
 fn check_last_frame(frame: u32, t: f64) -> Result<(), CliError> {
@@ -430,6 +436,20 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
     };
     let started = std::time::Instant::now();
     let mut range_m = 0.0f64;
+    // A PNG sequence encodes every frame's displacement on one range, so the range must hold the
+    // frame that reaches highest. The trochoid, Gerstner and sine seas' bound holds at any time;
+    // the FFT sea's is its frame's (on the default sea it grows by 13 % from frame 0 to frame
+    // 100), so a sequence reads every frame's bound before writing the first.
+    if args.png16 && fft && last - first > 1 {
+        let mut s = scene.clone();
+        s.sea.time_s = time_of(first);
+        if let brine_waves::Ocean::Fft { ocean } = world_of(&s, Some(&lattice))?.ocean() {
+            for f in first..last {
+                let (lo, hi) = ocean.at_time(time_of(f)).height_bounds();
+                range_m = range_m.max(displacement_range(lo, hi));
+            }
+        }
+    }
     let mut frames = Vec::new();
     let mut limit = None;
     for f in first..last {
@@ -448,7 +468,13 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
         limit = limit.or(frame.limit);
         // One displacement range for every frame of a PNG bake: the sea's height bound.
         let (lo, hi) = world.sea.height_bounds();
-        range_m = range_m.max(lo.abs().max(hi.abs()) * 1.5).max(1e-3);
+        if args.png16 && range_m > 0.0 && displacement_range(lo, hi) > range_m {
+            return Err(CliError::Failure(format!(
+                "frame {f}: the sea's height bound {:.3} m is beyond the 16-bit range {range_m:.3} m set for the sequence",
+                lo.abs().max(hi.abs())
+            )));
+        }
+        range_m = range_m.max(displacement_range(lo, hi));
         let png = args.png16.then_some(range_m);
         crate::export::write_bake_frame(&args.output, f, &frame, png).map_err(CliError::Failure)?;
         frames.push(serde_json::json!({ "index": f, "time_s": t }));

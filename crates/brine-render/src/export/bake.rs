@@ -314,7 +314,9 @@ pub fn write_bake_frame(
                     codes.push((v.clamp(0.0, 1.0) * 65535.0).round() as u16);
                 }
             }
-            let bytes: Vec<u8> = codes.iter().flat_map(|v| v.to_be_bytes()).collect();
+            // The encoder takes 16-bit samples in the machine's byte order (it writes them
+            // big-endian, as PNG stores them).
+            let bytes: Vec<u8> = codes.iter().flat_map(|v| v.to_ne_bytes()).collect();
             let colour = if c == 1 { image::ExtendedColorType::L16 } else { image::ExtendedColorType::Rgb16 };
             crate::output::write_atomic(&p, |w| {
                 use image::ImageEncoder as _;
