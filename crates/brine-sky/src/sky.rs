@@ -354,8 +354,9 @@ impl Sky {
     }
 
     /// Radiance of the sky without clouds, sun or moon discs (linear sRGB, kcd m⁻²):
-    /// `L = L_P(v; ŝ⁺) ⊙ r(v) + f_m L_P(v; m̂⁺) + L_night(v)`, where `L_P` is Preetham's sky with
-    /// the sun (or the Moon) clamped to the horizon, `r` the twilight ratio (1 by day),
+    /// `L = T(L_P(v; ŝ⁺)) + f_m L_P(v; m̂⁺) + L_night(v)`, where `L_P` is Preetham's sky with
+    /// the sun (or the Moon) clamped to the horizon, `T` the twilight (the identity by day,
+    /// [`TwilightRatio::apply`]),
     /// `f_m` the Moon-to-Sun illuminance ratio (faded below the horizon) and `L_night` the
     /// natural night glow (white).
     ///
@@ -367,7 +368,7 @@ impl Sky {
     /// Linear sRGB radiance (kcd m⁻²), finite and `≥ 0`.
     ///
     /// # References
-    /// Preetham et al. 1999; Nishita et al. 1993 (twilight ratio); Jensen et al. 2001 (moonlit
+    /// Preetham et al. 1999; Nishita et al. 1993 (twilight); Jensen et al. 2001 (moonlit
     /// sky); Krisciunas & Schaefer 1991 (night glow).
     pub fn clear_radiance_rgb(&self, view: DVec3) -> DVec3 {
         let v = view.normalize_or_zero();
@@ -377,7 +378,7 @@ impl Sky {
             let (sh, vh) = (DVec3::new(s.x, 0.0, s.z), DVec3::new(v.x, 0.0, v.z));
             let den = (sh.length_squared() * vh.length_squared()).sqrt();
             let phi = if den > 1e-24 { (sh.dot(vh) / den).clamp(-1.0, 1.0).acos() } else { 0.0 };
-            l *= tw.ratio(v.y.clamp(-1.0, 1.0).asin(), phi);
+            l = tw.apply(l, v.y.clamp(-1.0, 1.0).asin(), phi);
         }
         if let Some((ms, scale)) = &self.moon_sky {
             l += ms.radiance_rgb(v) * *scale;
@@ -631,6 +632,37 @@ mod tests {
         let above = Sky::new(&SkyParams::new(3.0, dir(1e-7, 270.0))).unwrap().radiance_rgb(v);
         let below = Sky::new(&SkyParams::new(3.0, dir(-1e-7, 270.0))).unwrap().radiance_rgb(v);
         assert!(((above - below) / above).abs().max_element() < SUNSET_CONTINUITY, "{above:?} {below:?}");
+    }
+
+    /// Twilight colours stay near the daylight locus: blue at the zenith, orange toward the sun,
+    /// pale between, as clear twilight skies are. Preetham's sunset sky toward the sun is greenish
+    /// yellow, 0.06 above the locus; a ratio per channel on it once made the glow lime, 0.12
+    /// above it at −3°. The single-scattering sky the twilight takes its colour from lies within
+    /// 0.025 of the locus over these directions (measured, 2 to 6° of depression).
+    #[test]
+    fn twilight_colours_stay_near_the_daylight_locus() {
+        /// The single-scattering sky's largest distance from the locus here, 0.025, with margin.
+        const TWILIGHT_LOCUS: f64 = 0.03;
+        for depression in [2.0, 3.0, 4.0, 6.0] {
+            let sky = Sky::new(&SkyParams::new(3.0, dir(-depression, 0.0))).unwrap();
+            for (elevation, azimuth) in [
+                (1.0, 0.0),
+                (5.0, 0.0),
+                (20.0, 0.0),
+                (60.0, 0.0),
+                (90.0, 0.0),
+                (5.0, 90.0),
+                (5.0, 180.0),
+                (30.0, 180.0),
+            ] {
+                let (x, y) = crate::chromaticity(sky.radiance_xyz(dir(elevation, azimuth))).unwrap();
+                let off = y - crate::daylight_locus_y(x);
+                assert!(
+                    off.abs() <= TWILIGHT_LOCUS,
+                    "sun −{depression}°, view ({elevation}°, {azimuth}°): xy ({x:.3}, {y:.3}), {off:+.3} from the locus"
+                );
+            }
+        }
     }
 
     #[test]

@@ -1,18 +1,24 @@
 //! Twilight: how the sky darkens and changes colour as the sun sinks below the horizon.
 //!
-//! Preetham's model stops at the horizon. Below it, Brine keeps Preetham's angular distribution
-//! of the sky at sunset (the sun at elevation 0 in its azimuth) and multiplies it, per channel and
-//! per view direction, by the ratio of two *single-scattering* radiances computed in a spherical
-//! atmosphere: with the sun at its true depression, and with the sun on the horizon,
+//! Preetham's model stops at the horizon. Below it, Brine keeps the luminance of Preetham's sky at
+//! sunset (the sun at elevation 0 in its azimuth) and scales it, per view direction, by the ratio
+//! of two *single-scattering* luminances computed in a spherical atmosphere: with the sun at its
+//! true depression, and with the sun on the horizon. The colour moves from Preetham's sunset
+//! colour to the single-scattering sky's own over the first 2° of depression,
 //!
-//! `L(v, e) = L_Preetham(v; e = 0) ⊙ L_ss(v; e)/L_ss(v; 0)`.
+//! `L(v, e) = Y_P(v; 0) · (Y_ss(v; e)/Y_ss(v; 0)) · ((1 − w) c_P(v; 0) + w c_ss(v; e))`,
+//!
+//! `c = L/Y` a colour of unit luminance, `w = smoothstep(0°, 2°, −e)`. (A ratio per channel on
+//! Preetham's sunset colour, an earlier form, kept that colour's faults and made them worse:
+//! toward the sun Preetham's sunset sky is greenish yellow with no blue, 0.06 above the daylight
+//! locus, and a ratio cannot add the blue it lacks; at −3° the glow was lime, 0.12 above.)
 //!
 //! The single-scattering model (Nishita et al. 1993 style) has Rayleigh and Mie scattering with
 //! the scale heights and sea-level coefficients of Hoffman & Preetham ([`crate::Scattering`]),
 //! Chappuis ozone absorption (Iqbal's `k_o`, 0.35 cm in a layer from 10 to 40 km peaking at
-//! 25 km), the Earth's shadow (a point sun), and no refraction. The ratio is exactly 1 at
-//! sunset, so the sky is continuous at `e = 0`. It is tabulated in the constructor over view
-//! elevation and azimuth relative to the sun and interpolated bilinearly.
+//! 25 km), the Earth's shadow (a point sun), and no refraction. The ratio is exactly 1 and `w`
+//! is 0 at sunset, so the sky is continuous at `e = 0`. Both radiances are tabulated in the
+//! constructor over view elevation and azimuth relative to the sun and interpolated bilinearly.
 //!
 //! **Approximation.** Single scattering is computed; the higher orders, which dominate the real
 //! sky below about −6° and light the Earth's shadow, are approximated by an isotropic term equal
@@ -32,7 +38,7 @@ use crate::cie::cmf;
 use crate::error::{SkyError, check};
 use crate::solar_tables::{K_OZONE, interpolate, solar_radiance};
 use crate::sun::OZONE_CM;
-use crate::{MIN_COS_VIEW, xyz_to_linear_srgb};
+use crate::{MIN_COS_VIEW, linear_srgb_to_xyz, xyz_to_linear_srgb};
 
 /// Mean Earth radius (m), brine-core's.
 pub use brine_core::EARTH_RADIUS_M;
@@ -52,6 +58,9 @@ const N_VIEW: usize = 40;
 const N_SUN: usize = 32;
 /// Isotropic higher-order scattering as a fraction of the dome-averaged single scattering.
 const MULTIPLE_SCATTERING: f64 = 0.5;
+/// Depression of the sun (rad) over which the sky's colour moves from Preetham's sunset colour to
+/// the single-scattering sky's: 2° (Brine's choice, about eight minutes at mid-latitudes).
+pub const TWILIGHT_COLOUR_DEPRESSION: f64 = 2.0 * PI / 180.0;
 /// Wavelengths of the spectral single scattering: 400, 420, …, 700 nm.
 const N_LAMBDA: usize = 16;
 
@@ -153,10 +162,17 @@ fn single_scattering(view: DVec3, sun: DVec3, sp: &Spectral) -> DVec3 {
     rgb.max(DVec3::splat(1e-3 * rgb.max_element().max(0.0)))
 }
 
-/// The tabulated ratio `L_ss(v; e)/L_ss(v; 0)` for one sun depression.
+/// The tabulated single-scattering skies (higher orders included as an isotropic term) with the
+/// sun at one depression `e` and on the horizon, which turn Preetham's sunset sky into the
+/// twilight sky.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TwilightRatio {
-    table: Vec<DVec3>,
+    /// `L_ss(v; e)` per cell (linear sRGB, relative units).
+    num: Vec<DVec3>,
+    /// `L_ss(v; 0)` per cell.
+    den: Vec<DVec3>,
+    /// `w`, the share of the single-scattering sky's colour.
+    colour_weight: f64,
 }
 
 impl TwilightRatio {
@@ -198,8 +214,55 @@ impl TwilightRatio {
         // radiance added everywhere (it lights the Earth's shadow, which single scattering leaves
         // black).
         let (ms_num, ms_den) = (dome_mean(&num) * MULTIPLE_SCATTERING, dome_mean(&den) * MULTIPLE_SCATTERING);
-        let table = num.iter().zip(&den).map(|(n, d)| ((*n + ms_num) / (*d + ms_den)).min(DVec3::ONE)).collect();
-        Ok(Self { table })
+        let u = (-e / TWILIGHT_COLOUR_DEPRESSION).clamp(0.0, 1.0);
+        Ok(Self {
+            num: num.iter().map(|n| *n + ms_num).collect(),
+            den: den.iter().map(|d| *d + ms_den).collect(),
+            colour_weight: u * u * (3.0 - 2.0 * u),
+        })
+    }
+
+    /// The twilight sky toward a view, from Preetham's sunset sky there:
+    /// `L = Y_P · (Y_ss(e)/Y_ss(0)) · ((1 − w) L_P/Y_P + w L_ss(e)/Y_ss(e))`.
+    ///
+    /// # Arguments
+    /// - `sunset`: `L_P(v; 0)`, Preetham's sky toward the view with the sun on the horizon in its
+    ///   azimuth (linear sRGB, kcd m⁻², `≥ 0`).
+    /// - `elevation`, `relative_azimuth`: the view, as for [`Self::ratio`] (rad).
+    ///
+    /// # Returns
+    /// The twilight radiance (linear sRGB, kcd m⁻², `≥ 0`); `sunset` itself when the sun is on
+    /// the horizon.
+    ///
+    /// # References
+    /// Preetham et al. 1999 (the sunset sky); Nishita et al. 1993 (single scattering).
+    pub fn apply(&self, sunset: DVec3, elevation: f64, relative_azimuth: f64) -> DVec3 {
+        let (num, den) = self.cells(elevation, relative_azimuth);
+        let (y_num, y_den, y_p) = (luminance(num), luminance(den), luminance(sunset));
+        if !(y_num > 0.0 && y_den > 0.0 && y_p > 0.0) {
+            return DVec3::ZERO;
+        }
+        let ratio = (y_num / y_den).min(1.0);
+        let w = self.colour_weight;
+        let colour = sunset / y_p * (1.0 - w) + num / y_num * w;
+        (colour * (y_p * ratio)).max(DVec3::ZERO)
+    }
+
+    /// The two tabulated skies toward a view, bilinear in the table.
+    fn cells(&self, elevation: f64, relative_azimuth: f64) -> (DVec3, DVec3) {
+        let a0 = MIN_COS_VIEW.asin();
+        let a = elevation.clamp(a0, PI / 2.0);
+        let u = (((a - a0) / (PI / 2.0 - a0)).sqrt() * (N_ELEVATION - 1) as f64).min((N_ELEVATION - 1) as f64);
+        let phi = relative_azimuth.rem_euclid(2.0 * PI);
+        let phi = if phi > PI { 2.0 * PI - phi } else { phi };
+        let w = (phi / PI * (N_AZIMUTH - 1) as f64).clamp(0.0, (N_AZIMUTH - 1) as f64);
+        let (i, j) = ((u as usize).min(N_ELEVATION - 2), (w as usize).min(N_AZIMUTH - 2));
+        let (fu, fw) = (u - i as f64, w - j as f64);
+        let lerp = |t: &[DVec3]| {
+            let at = |i: usize, j: usize| t[i * N_AZIMUTH + j];
+            at(i, j).lerp(at(i, j + 1), fw).lerp(at(i + 1, j).lerp(at(i + 1, j + 1), fw), fu)
+        };
+        (lerp(&self.num), lerp(&self.den))
     }
 
     /// The ratio `R(v, e)` for a view at elevation `a` and azimuth `φ` from the sun's vertical
@@ -215,19 +278,14 @@ impl TwilightRatio {
     /// # References
     /// Nishita T. et al. 1993 (single scattering), tabulated here.
     pub fn ratio(&self, elevation: f64, relative_azimuth: f64) -> DVec3 {
-        let a0 = MIN_COS_VIEW.asin();
-        let a = elevation.clamp(a0, PI / 2.0);
-        let u = (((a - a0) / (PI / 2.0 - a0)).sqrt() * (N_ELEVATION - 1) as f64).min((N_ELEVATION - 1) as f64);
-        let phi = relative_azimuth.rem_euclid(2.0 * PI);
-        let phi = if phi > PI { 2.0 * PI - phi } else { phi };
-        let w = (phi / PI * (N_AZIMUTH - 1) as f64).clamp(0.0, (N_AZIMUTH - 1) as f64);
-        let (i, j) = ((u as usize).min(N_ELEVATION - 2), (w as usize).min(N_AZIMUTH - 2));
-        let (fu, fw) = (u - i as f64, w - j as f64);
-        let at = |i: usize, j: usize| self.table[i * N_AZIMUTH + j];
-        let top = at(i, j).lerp(at(i, j + 1), fw);
-        let bottom = at(i + 1, j).lerp(at(i + 1, j + 1), fw);
-        top.lerp(bottom, fu)
+        let (num, den) = self.cells(elevation, relative_azimuth);
+        (num / den).min(DVec3::ONE)
     }
+}
+
+/// Luminance `Y` of a linear sRGB radiance (its unit).
+fn luminance(rgb: DVec3) -> f64 {
+    linear_srgb_to_xyz(rgb).y
 }
 
 /// Mean of a table over the dome, each cell weighted by its solid angle `cos a Δa Δφ`.

@@ -265,10 +265,14 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
     Ok(())
 }
 
-/// The range (m) of a 16-bit displacement map of a sea whose heights lie in `[lo, hi]` (m): half
-/// again the larger bound (horizontal displacements share the range), at least a millimetre.
+/// Headroom of a 16-bit displacement range over what it must hold (the sea's height bound, the
+/// first frame's largest displacement): half again.
+const DISPLACEMENT_HEADROOM: f64 = 1.5;
+
+/// The range (m) of a 16-bit displacement map of a sea whose heights lie in `[lo, hi]` (m):
+/// [`DISPLACEMENT_HEADROOM`] times the larger bound, at least a millimetre.
 fn displacement_range(lo: f64, hi: f64) -> f64 {
-    (lo.abs().max(hi.abs()) * 1.5).max(1e-3)
+    (lo.abs().max(hi.abs()) * DISPLACEMENT_HEADROOM).max(1e-3)
 }
 
 /// Refuses a run whose last (latest) frame, at `t` (s), is beyond the times the models hold, as
@@ -466,15 +470,21 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
         };
         let frame = crate::export::bake_frame(world, t, &options);
         limit = limit.or(frame.limit);
-        // One displacement range for every frame of a PNG bake: the sea's height bound.
+        // One displacement range for every frame of a PNG bake, set at the first frame: half again
+        // the larger of the sea's height bound (the FFT sea's over every frame, read above) and
+        // the first frame's largest displacement, whose horizontal part the height bound does not
+        // hold (2.5 times a trochoid's amplitude at the default choppiness).
         let (lo, hi) = world.sea.height_bounds();
-        if args.png16 && range_m > 0.0 && displacement_range(lo, hi) > range_m {
+        let largest = frame.maps.displacement.iter().flatten().fold(0.0f64, |m, v| m.max(f64::from(v.abs())));
+        if f == first {
+            range_m = range_m.max(displacement_range(lo, hi)).max(DISPLACEMENT_HEADROOM * largest);
+        } else if args.png16 && (displacement_range(lo, hi) > range_m || largest > range_m) {
             return Err(CliError::Failure(format!(
-                "frame {f}: the sea's height bound {:.3} m is beyond the 16-bit range {range_m:.3} m set for the sequence",
-                lo.abs().max(hi.abs())
+                "frame {f}: a displacement of {:.3} m is beyond the 16-bit range ±{range_m:.3} m set at frame {first}; \
+                 bake EXR maps (without --png16)",
+                largest.max(lo.abs()).max(hi.abs())
             )));
         }
-        range_m = range_m.max(displacement_range(lo, hi));
         let png = args.png16.then_some(range_m);
         crate::export::write_bake_frame(&args.output, f, &frame, png).map_err(CliError::Failure)?;
         frames.push(serde_json::json!({ "index": f, "time_s": t }));

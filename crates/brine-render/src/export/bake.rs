@@ -301,6 +301,24 @@ pub fn write_bake_frame(
             ("spray", rgb(&m.spray), vec![s[1].1, s[1].1, s[3].1]),
         ]
     };
+    // A 16-bit map holds only its encoding's range: a value beyond it is refused, before any map
+    // of the frame is written, rather than clipped in silence.
+    if png_range_m.is_some() {
+        for (name, channels, scales) in &maps {
+            for (ch, s) in channels.iter().zip(scales) {
+                let (lo, hi) = (s.offset, s.offset + s.scale);
+                let half_code = 0.5 * s.scale / 65535.0;
+                if let Some(v) =
+                    ch.1.iter().map(|&v| f64::from(v)).find(|&v| !(v >= lo - half_code && v <= hi + half_code))
+                {
+                    return Err(format!(
+                        "{name} {}: {v} is beyond the 16-bit encoding's range [{lo}, {hi}]; bake EXR maps (without --png16)",
+                        ch.0
+                    ));
+                }
+            }
+        }
+    }
     let mut written = Vec::new();
     for (name, channels, scales) in maps {
         let p = path(name);

@@ -213,8 +213,27 @@ pub fn camera_mesh(world: &World, t: f64, pixels: f64, faded: bool) -> Mesh {
                 }
             })
             .collect();
-        grid_of(rings.len(), cols, vertices)
+        let mut mesh = grid_of(rings.len(), cols, vertices);
+        // `grid_of` winds its triangles for columns along +x and rows along +z; here columns run
+        // in azimuth from +x toward +z and rows outward, a mirrored layout (radial × tangential
+        // points down), so each triangle is turned over to face up.
+        for triangle in mesh.indices.chunks_exact_mut(3) {
+            triangle.swap(1, 2);
+        }
+        mesh
     })
+}
+
+/// A file name as a relative URI (RFC 3986 path segment): every byte but the unreserved
+/// `A–Z a–z 0–9 - . _ ~` percent-encoded, so that `%`, `#`, `?` or a space in the name reach the
+/// reader as the name (glTF buffers are addressed by URI).
+fn uri_path_segment(name: &str) -> String {
+    name.bytes()
+        .map(|b| match b {
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' => (b as char).to_string(),
+            _ => format!("%{b:02X}"),
+        })
+        .collect()
 }
 
 /// Whether [`camera_mesh`] can fade the waves of `world`'s sea (the trochoid sum).
@@ -527,7 +546,7 @@ pub fn write_mesh(path: &Path, mesh: &Mesh) -> Result<(), String> {
         }
         MeshFormat::Gltf => {
             let bin_path = path.with_extension("bin");
-            let uri = bin_path.file_name().and_then(|n| n.to_str()).unwrap_or("sea.bin").to_owned();
+            let uri = uri_path_segment(bin_path.file_name().and_then(|n| n.to_str()).unwrap_or("sea.bin"));
             let (json, bin) = gltf_parts(mesh, Some(uri))?;
             atomic(&bin_path, &bin)?;
             atomic(path, &json)
@@ -605,6 +624,37 @@ mod tests {
             let p = |i: u32| glam::Vec3::from_array(m.positions[i as usize]);
             let n = (p(t[1]) - p(t[0])).cross(p(t[2]) - p(t[0]));
             assert!(n.y > 0.0, "{t:?}");
+        }
+    }
+
+    /// A `.gltf`'s buffer is named by a relative URI: reserved characters and non-ASCII bytes are
+    /// percent-encoded (UTF-8), the unreserved kept (RFC 3986 §2.3).
+    #[test]
+    fn buffer_names_are_uri_segments() {
+        assert_eq!(uri_path_segment("sea_0001.bin"), "sea_0001.bin");
+        assert_eq!(uri_path_segment("p%41 #1?.bin"), "p%2541%20%231%3F.bin");
+        assert_eq!(uri_path_segment("mer-é~.bin"), "mer-%C3%A9~.bin");
+    }
+
+    /// The camera mesh's triangles face up too (counter-clockwise seen from above, as the docs
+    /// say and single-sided viewers need), and agree with its vertex normals, on an oblique and a
+    /// nadir view. (Its polar layout is the grid's mirrored: it was once wound face down.)
+    #[test]
+    fn camera_mesh_triangles_face_up() {
+        for pitch in [-8.0, -90.0] {
+            let mut scene = crate::Scene::default_scene();
+            scene.camera.pitch_deg = Some(pitch);
+            scene.camera.width = 64;
+            scene.camera.height = 36;
+            let world = crate::World::new(&scene).expect("a valid scene");
+            let m = camera_mesh(&world, 0.0, 16.0, false);
+            assert!(!m.indices.is_empty());
+            for t in m.indices.chunks_exact(3) {
+                let p = |i: u32| glam::Vec3::from_array(m.positions[i as usize]);
+                let face = (p(t[1]) - p(t[0])).cross(p(t[2]) - p(t[0]));
+                let normal = glam::Vec3::from_array(m.normals[t[0] as usize]);
+                assert!(face.y > 0.0 && face.dot(normal) > 0.0, "pitch {pitch}: {t:?} faces {face}");
+            }
         }
     }
 }

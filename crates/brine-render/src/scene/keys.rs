@@ -542,7 +542,7 @@ pub const KEYS: &[KeySpec] = &[
             BOOL,
             "—",
             "`false`",
-            "depth, normal, foam, whitecap, sun glint (per unit irradiance, sr⁻¹), evaluations as extra EXR channels",
+            "depth, normal, foam, whitecap, sun glint (per unit irradiance, sr⁻¹), evaluations as extra EXR channels: of the pixel's centre at 1 sample per pixel, of its first sample (a random point in it, as Blender Cycles' depth pass) with more",
         ),
         "needs an `.exr` output (after `-o`)",
     ),
