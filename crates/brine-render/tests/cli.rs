@@ -342,8 +342,9 @@ fn a_png_bake_holds_the_exr_bake_on_one_encoding() {
 
 /// A 16-bit displacement map holds the horizontal displacement too, which the height bound does
 /// not (a sea of two trochoids moves 2.0 m sideways and 0.9 m up and down: on a range set by the
-/// height bound, 1 900 of 4 096 texels were once clipped, in silence); and a value no encoding holds (a Jacobian beyond the
-/// `[−1, 3]` of its encoding, on a very choppy sea) is refused with a message, nothing written.
+/// height bound, 1 900 of 4 096 texels were once clipped, in silence); and a value no encoding
+/// holds (a Jacobian beyond the `[−1, 3]` of its encoding, on a very choppy sea) is refused with
+/// a message naming the frame, nothing written.
 #[test]
 fn a_png_bake_holds_its_values_or_says_which_it_cannot() {
     let dir = tempfile::tempdir().unwrap();
@@ -375,10 +376,17 @@ fn a_png_bake_holds_its_values_or_says_which_it_cannot() {
             "texel {k}: EXR {v} m, PNG {decoded} m"
         );
     }
-    let choppy = "[sea]\nsurface = \"fft\"\nwind_speed_m_s = 20.0\n[sea.fft]\nresolution = 64\nchoppiness = 4\n";
+    // Frame 0 fits; one texel of frame 1 has J = 3.08: the sequence is refused before frame 0 is
+    // written (it was once refused after, leaving frame 0's maps without `bake.json`).
+    let choppy = "[sea]\nsurface = \"fft\"\nwind_speed_m_s = 20.0\n[sea.fft]\nresolution = 64\nchoppiness = 3.5\n\
+                  [animation]\nfps = 1.0\n";
     std::fs::write(dir.path().join("choppy.toml"), choppy).unwrap();
-    let out = brine(&["bake", "choppy.toml", "-q", "-o", "choppy", "--size", "64", "--png16"], dir.path());
+    let out = brine(
+        &["bake", "choppy.toml", "-q", "-o", "choppy", "--size", "64", "--frames", "0..3", "--png16"],
+        dir.path(),
+    );
     let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(!out.status.success() && stderr.contains("jacobian") && stderr.contains("without --png16"), "{stderr}");
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("frame 1: jacobian") && stderr.contains("without --png16"), "{stderr}");
     assert!(std::fs::read_dir(dir.path().join("choppy")).map_or(true, |mut d| d.next().is_none()), "nothing written");
 }

@@ -7,7 +7,7 @@
 //! mixed-gas and water-vapour transmittances, integrated against the CIE 1931 matching
 //! functions). The aerial perspective of Hoffman & Preetham (2002) used by Chen et al. 2007
 //! (§3.2). Beyond the papers, for the time-and-place-driven scenes of Li Ying et al. 2018
-//! (§2.1, §3.1): twilight (a single-scattering ratio on Preetham's sunset sky), the night-sky
+//! (§2.1, §3.1): twilight (the sunset sky darkened and coloured by a single-scattering sky), the night-sky
 //! glow and moonlight (Krisciunas & Schaefer 1991; Jensen et al. 2001), and procedural cloud
 //! layers after Chen et al.'s texture perturbation (§3.1). As an alternative clear day sky, the
 //! Hosek & Wilkie (2012) model of pbrt-v4, Mitsuba 3 and Blender Cycles ([`HosekWilkieSky`],

@@ -1,12 +1,13 @@
 //! Twilight: how the sky darkens and changes colour as the sun sinks below the horizon.
 //!
-//! Preetham's model stops at the horizon. Below it, Brine keeps the luminance of Preetham's sky at
-//! sunset (the sun at elevation 0 in its azimuth) and scales it, per view direction, by the ratio
+//! The daylight models stop at the horizon. Below it, Brine keeps the luminance of the daylight
+//! model's sky at sunset (Preetham's, or Hosek–Wilkie's when chosen; the sun at elevation 0 in its
+//! azimuth) and scales it, per view direction, by the ratio
 //! of two *single-scattering* luminances computed in a spherical atmosphere: with the sun at its
-//! true depression, and with the sun on the horizon. The colour moves from Preetham's sunset
+//! true depression, and with the sun on the horizon. The colour moves from the sunset sky's
 //! colour to the single-scattering sky's own over the first 2° of depression,
 //!
-//! `L(v, e) = Y_P(v; 0) · (Y_ss(v; e)/Y_ss(v; 0)) · ((1 − w) c_P(v; 0) + w c_ss(v; e))`,
+//! `L(v, e) = Y_D(v; 0) · (Y_ss(v; e)/Y_ss(v; 0)) · ((1 − w) c_D(v; 0) + w c_ss(v; e))`,
 //!
 //! `c = L/Y` a colour of unit luminance, `w = smoothstep(0°, 2°, −e)`. (A ratio per channel on
 //! Preetham's sunset colour, an earlier form, kept that colour's faults and made them worse:
@@ -58,7 +59,7 @@ const N_VIEW: usize = 40;
 const N_SUN: usize = 32;
 /// Isotropic higher-order scattering as a fraction of the dome-averaged single scattering.
 const MULTIPLE_SCATTERING: f64 = 0.5;
-/// Depression of the sun (rad) over which the sky's colour moves from Preetham's sunset colour to
+/// Depression of the sun (rad) over which the sky's colour moves from the sunset sky's colour to
 /// the single-scattering sky's: 2° (Brine's choice, about eight minutes at mid-latitudes).
 pub const TWILIGHT_COLOUR_DEPRESSION: f64 = 2.0 * PI / 180.0;
 /// Wavelengths of the spectral single scattering: 400, 420, …, 700 nm.
@@ -163,7 +164,7 @@ fn single_scattering(view: DVec3, sun: DVec3, sp: &Spectral) -> DVec3 {
 }
 
 /// The tabulated single-scattering skies (higher orders included as an isotropic term) with the
-/// sun at one depression `e` and on the horizon, which turn Preetham's sunset sky into the
+/// sun at one depression `e` and on the horizon, which turn the daylight model's sunset sky into the
 /// twilight sky.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TwilightRatio {
@@ -222,12 +223,12 @@ impl TwilightRatio {
         })
     }
 
-    /// The twilight sky toward a view, from Preetham's sunset sky there:
-    /// `L = Y_P · (Y_ss(e)/Y_ss(0)) · ((1 − w) L_P/Y_P + w L_ss(e)/Y_ss(e))`.
+    /// The twilight sky toward a view, from the daylight model's sunset sky there:
+    /// `L = Y_D · (Y_ss(e)/Y_ss(0)) · ((1 − w) L_D/Y_D + w L_ss(e)/Y_ss(e))`.
     ///
     /// # Arguments
-    /// - `sunset`: `L_P(v; 0)`, Preetham's sky toward the view with the sun on the horizon in its
-    ///   azimuth (linear sRGB, kcd m⁻², `≥ 0`).
+    /// - `sunset`: `L_D(v; 0)`, the daylight model's sky toward the view with the sun on the
+    ///   horizon in its azimuth (linear sRGB, kcd m⁻², `≥ 0`).
     /// - `elevation`, `relative_azimuth`: the view, as for [`Self::ratio`] (rad).
     ///
     /// # Returns
@@ -235,7 +236,8 @@ impl TwilightRatio {
     /// the horizon.
     ///
     /// # References
-    /// Preetham et al. 1999 (the sunset sky); Nishita et al. 1993 (single scattering).
+    /// Preetham et al. 1999 or Hosek & Wilkie 2012 (the sunset sky); Nishita et al. 1993 (single
+    /// scattering).
     pub fn apply(&self, sunset: DVec3, elevation: f64, relative_azimuth: f64) -> DVec3 {
         let (num, den) = self.cells(elevation, relative_azimuth);
         let (y_num, y_den, y_p) = (luminance(num), luminance(den), luminance(sunset));
@@ -331,6 +333,52 @@ mod tests {
             assert!(r.max_element() < last.max_element(), "{e}: {r:?}");
             assert!(r.min_element() >= 0.0 && r.is_finite());
             last = r;
+        }
+    }
+
+    /// Two sunset colours of the same luminance: a greenish yellow with no blue (Preetham's toward
+    /// the sun) and a grey.
+    fn bases() -> (DVec3, DVec3) {
+        let a = DVec3::new(1.0, 0.8, 0.0);
+        let grey = DVec3::splat(1.0);
+        (a, grey * (luminance(a) / luminance(grey)))
+    }
+
+    /// At sunset `apply` is the identity: the sky is continuous at `e = 0`, whatever its colour.
+    #[test]
+    fn apply_is_the_sunset_sky_at_sunset() {
+        let at0 = TwilightRatio::new(0.0, 3.0).unwrap();
+        let (a, b) = bases();
+        for (elevation, azimuth) in [(0.01, 0.0), (0.3, 1.0), (1.5, 3.0)] {
+            for base in [a, b, DVec3::new(0.2, 0.3, 0.9)] {
+                let l = at0.apply(base, elevation, azimuth);
+                assert!(((l - base) / base.max_element()).abs().max_element() < 1e-12, "{base:?} → {l:?}");
+            }
+        }
+        assert_eq!(at0.apply(DVec3::ZERO, 0.3, 1.0), DVec3::ZERO, "a black sky stays black, not NaN");
+    }
+
+    /// The twilight's luminance depends on the sunset sky's luminance only; its colour is the
+    /// sunset sky's weighted by `1 − w`: half at 1° of depression (`smoothstep` at its middle), none
+    /// from 2° on, where two sunset colours of one luminance give one twilight sky.
+    #[test]
+    fn apply_blends_the_sunset_colour_out_over_two_degrees() {
+        let (a, b) = bases();
+        for (depression, sunset_share) in [(1.0f64, 0.5), (2.0, 0.0), (5.0, 0.0)] {
+            let tw = TwilightRatio::new(-depression.to_radians(), 3.0).unwrap();
+            for (elevation, azimuth) in [(0.05, 0.0), (0.4, 2.0), (1.2, 3.1)] {
+                let (la, lb) = (tw.apply(a, elevation, azimuth), tw.apply(b, elevation, azimuth));
+                let scale = luminance(la) / luminance(a);
+                assert!(
+                    (luminance(la) - luminance(lb)).abs() < 1e-12 * luminance(la),
+                    "−{depression}°: luminances differ"
+                );
+                let expected = (a - b) * (sunset_share * scale);
+                assert!(
+                    ((la - lb) - expected).abs().max_element() < 1e-12 * la.max_element(),
+                    "−{depression}°: {la:?} − {lb:?} against {expected:?}"
+                );
+            }
         }
     }
 

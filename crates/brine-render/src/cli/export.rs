@@ -265,14 +265,11 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
     Ok(())
 }
 
-/// Headroom of a 16-bit displacement range over what it must hold (the sea's height bound, the
-/// first frame's largest displacement): half again.
-const DISPLACEMENT_HEADROOM: f64 = 1.5;
-
-/// The range (m) of a 16-bit displacement map of a sea whose heights lie in `[lo, hi]` (m):
-/// [`DISPLACEMENT_HEADROOM`] times the larger bound, at least a millimetre.
+/// The least range (m) of a 16-bit displacement map of a sea whose heights lie in `[lo, hi]` (m):
+/// half again the larger bound, at least a millimetre (the maps' own largest displacement widens
+/// it where needed).
 fn displacement_range(lo: f64, hi: f64) -> f64 {
-    (lo.abs().max(hi.abs()) * DISPLACEMENT_HEADROOM).max(1e-3)
+    (lo.abs().max(hi.abs()) * 1.5).max(1e-3)
 }
 
 /// Refuses a run whose last (latest) frame, at `t` (s), is beyond the times the models hold, as
@@ -428,35 +425,20 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
     // Trochoid, Gerstner and sine seas answer at any time from one world; the FFT sea's white
     // water belongs to its frame.
     let shared = if fft { None } else { Some(world_of(&scene, Some(&lattice))?) };
-    let bar = if args.quiet || !std::io::stderr().is_terminal() {
-        ProgressBar::hidden()
-    } else {
-        let b = ProgressBar::with_draw_target(Some(u64::from(last - first)), ProgressDrawTarget::stderr());
-        b.set_style(
-            ProgressStyle::with_template("baking {bar:40} {pos}/{len} frames, {eta} left")
-                .unwrap_or_else(|_| ProgressStyle::default_bar()),
-        );
-        b
-    };
-    let started = std::time::Instant::now();
-    let mut range_m = 0.0f64;
-    // A PNG sequence encodes every frame's displacement on one range, so the range must hold the
-    // frame that reaches highest. The trochoid, Gerstner and sine seas' bound holds at any time;
-    // the FFT sea's is its frame's (on the default sea it grows by 13 % from frame 0 to frame
-    // 100), so a sequence reads every frame's bound before writing the first.
-    if args.png16 && fft && last - first > 1 {
-        let mut s = scene.clone();
-        s.sea.time_s = time_of(first);
-        if let brine_waves::Ocean::Fft { ocean } = world_of(&s, Some(&lattice))?.ocean() {
-            for f in first..last {
-                let (lo, hi) = ocean.at_time(time_of(f)).height_bounds();
-                range_m = range_m.max(displacement_range(lo, hi));
-            }
+    let bar = |verb: &str| {
+        if args.quiet || !std::io::stderr().is_terminal() {
+            ProgressBar::hidden()
+        } else {
+            let b = ProgressBar::with_draw_target(Some(u64::from(last - first)), ProgressDrawTarget::stderr());
+            b.set_style(
+                ProgressStyle::with_template(&format!("{verb} {{bar:40}} {{pos}}/{{len}} frames, {{eta}} left"))
+                    .unwrap_or_else(|_| ProgressStyle::default_bar()),
+            );
+            b
         }
-    }
-    let mut frames = Vec::new();
-    let mut limit = None;
-    for f in first..last {
+    };
+    // Frame `f`'s maps and the sea's height bounds then.
+    let bake_at = |f: u32| -> Result<(crate::export::BakedFrame, (f64, f64)), CliError> {
         let t = time_of(f);
         let own;
         let world = match &shared {
@@ -468,29 +450,47 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
                 &own
             }
         };
-        let frame = crate::export::bake_frame(world, t, &options);
-        limit = limit.or(frame.limit);
-        // One displacement range for every frame of a PNG bake, set at the first frame: half again
-        // the larger of the sea's height bound (the FFT sea's over every frame, read above) and
-        // the first frame's largest displacement, whose horizontal part the height bound does not
-        // hold (2.5 times a trochoid's amplitude at the default choppiness).
-        let (lo, hi) = world.sea.height_bounds();
-        let largest = frame.maps.displacement.iter().flatten().fold(0.0f64, |m, v| m.max(f64::from(v.abs())));
-        if f == first {
-            range_m = range_m.max(displacement_range(lo, hi)).max(DISPLACEMENT_HEADROOM * largest);
-        } else if args.png16 && (displacement_range(lo, hi) > range_m || largest > range_m) {
-            return Err(CliError::Failure(format!(
-                "frame {f}: a displacement of {:.3} m is beyond the 16-bit range ±{range_m:.3} m set at frame {first}; \
-                 bake EXR maps (without --png16)",
-                largest.max(lo.abs()).max(hi.abs())
-            )));
+        Ok((crate::export::bake_frame(world, t, &options), world.sea.height_bounds()))
+    };
+    let started = std::time::Instant::now();
+    // A 16-bit PNG bake encodes every frame's displacement on one range, which must hold every
+    // frame's largest displacement, horizontal included (a few trochoids move 2.5 times as far
+    // sideways as up and down; the FFT sea's reach changes from frame to frame). A sequence is
+    // therefore baked twice: once to find that range and to check that every other value fits
+    // its fixed encoding, before any file is written; once to write (a single frame is kept).
+    let mut range_m = 0.0f64;
+    let mut kept = None;
+    if args.png16 {
+        let measuring = bar("measuring");
+        for f in first..last {
+            let (frame, (lo, hi)) = bake_at(f)?;
+            let largest = frame.maps.displacement.iter().flatten().fold(0.0f64, |m, v| m.max(f64::from(v.abs())));
+            range_m = range_m.max(displacement_range(lo, hi)).max(largest);
+            if let Some(e) = crate::export::bake::png_unencodable(&frame, None) {
+                return Err(CliError::Input(format!("frame {f}: {e}; bake EXR maps (without --png16)")));
+            }
+            if last - first == 1 {
+                kept = Some(frame);
+            }
+            measuring.inc(1);
         }
+        measuring.finish_and_clear();
+    }
+    let baking = bar("baking");
+    let mut frames = Vec::new();
+    let mut limit = None;
+    for f in first..last {
+        let frame = match kept.take() {
+            Some(frame) => frame,
+            None => bake_at(f)?.0,
+        };
+        limit = limit.or(frame.limit);
         let png = args.png16.then_some(range_m);
         crate::export::write_bake_frame(&args.output, f, &frame, png).map_err(CliError::Failure)?;
-        frames.push(serde_json::json!({ "index": f, "time_s": t }));
-        bar.inc(1);
+        frames.push(serde_json::json!({ "index": f, "time_s": time_of(f) }));
+        baking.inc(1);
     }
-    bar.finish_and_clear();
+    baking.finish_and_clear();
     let meta = serde_json::json!({
         "generator": format!("brine {}", env!("CARGO_PKG_VERSION")),
         "surface": format!("{:?}", scene.sea.surface).to_lowercase(),

@@ -265,6 +265,60 @@ pub fn png_scales(range_m: f64) -> [(&'static str, PngScale); 4] {
 /// One map to write: its name, its named channels and their 16-bit PNG encodings.
 type Map<'a> = (&'a str, Vec<(String, Vec<f32>)>, Vec<PngScale>);
 
+/// The six maps of `frame` by name, with their channels and their 16-bit encodings for a
+/// displacement range of `range_m` (m).
+fn named_maps(frame: &BakedFrame, range_m: f64) -> Vec<Map<'static>> {
+    let m = &frame.maps;
+    let rgb = |v: &[[f32; 3]]| -> Vec<(String, Vec<f32>)> {
+        ["R", "G", "B"]
+            .iter()
+            .enumerate()
+            .map(|(c, name)| ((*name).to_owned(), v.iter().map(|p| p[c]).collect()))
+            .collect()
+    };
+    let grey = |v: &[f32]| vec![("Y".to_owned(), v.to_vec())];
+    let s = png_scales(range_m);
+    vec![
+        ("displacement", rgb(&m.displacement), vec![s[0].1; 3]),
+        ("normal", rgb(&m.normal), vec![s[1].1; 3]),
+        ("foam", grey(&m.foam), vec![s[2].1]),
+        ("whitecap", grey(&m.whitecap), vec![s[2].1]),
+        ("jacobian", grey(&m.jacobian), vec![s[3].1]),
+        ("spray", rgb(&m.spray), vec![s[1].1, s[1].1, s[3].1]),
+    ]
+}
+
+/// The first value of `maps` beyond its 16-bit encoding's range (by more than half a code), as
+/// `"MAP CHANNEL: value is beyond the 16-bit encoding's range [lo, hi]"`.
+fn unencodable(maps: &[Map<'_>]) -> Option<String> {
+    for (name, channels, scales) in maps {
+        for (ch, s) in channels.iter().zip(scales) {
+            let (lo, hi) = (s.offset, s.offset + s.scale);
+            let half_code = 0.5 * s.scale / 65535.0;
+            if let Some(v) = ch.1.iter().map(|&v| f64::from(v)).find(|&v| !(v >= lo - half_code && v <= hi + half_code))
+            {
+                return Some(format!(
+                    "{name} {}: {v:.4} is beyond the 16-bit encoding's range [{lo:.4}, {hi:.4}]",
+                    ch.0
+                ));
+            }
+        }
+    }
+    None
+}
+
+/// The first value of `frame`'s maps that no 16-bit encoding holds: beyond its fixed range (unit
+/// vectors, covers, the Jacobian and the eigenvalue), or beyond `±range_m` for the displacement
+/// (not checked when `None`).
+///
+/// # Returns
+/// A message naming the map, the channel, the value and the range; `None` when all fit.
+pub fn png_unencodable(frame: &BakedFrame, range_m: Option<f64>) -> Option<String> {
+    let maps = named_maps(frame, range_m.unwrap_or(f64::INFINITY));
+    let checked: Vec<_> = maps.into_iter().filter(|m| range_m.is_some() || m.0 != "displacement").collect();
+    unencodable(&checked)
+}
+
 /// Writes the six maps of `frame` into `dir` as `NAME_FFFF.exr` (or `.png`, 16 bits, with
 /// `png_range_m` the displacement range), each atomically.
 ///
@@ -277,47 +331,15 @@ pub fn write_bake_frame(
     png_range_m: Option<f64>,
 ) -> Result<Vec<PathBuf>, String> {
     let n = frame.size;
-    let m = &frame.maps;
     let ext = if png_range_m.is_some() { "png" } else { "exr" };
     let path = |name: &str| dir.join(format!("{name}_{index:04}.{ext}"));
-    let rgb = |v: &[[f32; 3]]| -> Vec<(String, Vec<f32>)> {
-        ["R", "G", "B"]
-            .iter()
-            .enumerate()
-            .map(|(c, name)| ((*name).to_owned(), v.iter().map(|p| p[c]).collect()))
-            .collect()
-    };
-    let grey = |v: &[f32]| vec![("Y".to_owned(), v.to_vec())];
-    // (name, channels, PNG offset and scale per channel)
-    let range = png_range_m.unwrap_or(1.0);
-    let maps: Vec<Map<'_>> = {
-        let s = png_scales(range);
-        vec![
-            ("displacement", rgb(&m.displacement), vec![s[0].1; 3]),
-            ("normal", rgb(&m.normal), vec![s[1].1; 3]),
-            ("foam", grey(&m.foam), vec![s[2].1]),
-            ("whitecap", grey(&m.whitecap), vec![s[2].1]),
-            ("jacobian", grey(&m.jacobian), vec![s[3].1]),
-            ("spray", rgb(&m.spray), vec![s[1].1, s[1].1, s[3].1]),
-        ]
-    };
+    let maps = named_maps(frame, png_range_m.unwrap_or(1.0));
     // A 16-bit map holds only its encoding's range: a value beyond it is refused, before any map
     // of the frame is written, rather than clipped in silence.
-    if png_range_m.is_some() {
-        for (name, channels, scales) in &maps {
-            for (ch, s) in channels.iter().zip(scales) {
-                let (lo, hi) = (s.offset, s.offset + s.scale);
-                let half_code = 0.5 * s.scale / 65535.0;
-                if let Some(v) =
-                    ch.1.iter().map(|&v| f64::from(v)).find(|&v| !(v >= lo - half_code && v <= hi + half_code))
-                {
-                    return Err(format!(
-                        "{name} {}: {v} is beyond the 16-bit encoding's range [{lo}, {hi}]; bake EXR maps (without --png16)",
-                        ch.0
-                    ));
-                }
-            }
-        }
+    if png_range_m.is_some()
+        && let Some(e) = unencodable(&maps)
+    {
+        return Err(format!("frame {index}, {e}; bake EXR maps (without --png16)"));
     }
     let mut written = Vec::new();
     for (name, channels, scales) in maps {

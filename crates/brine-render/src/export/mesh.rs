@@ -177,7 +177,8 @@ fn grid_mesh_of(world: &World, frame: &brine_waves::SeaFrame, grid: &MeshGrid) -
 /// The sea of `world` at time `t` as the camera sees it: a polar grid around the camera's foot,
 /// over its horizontal field of view (and a margin of a tenth of it each side), from where the
 /// view meets the sea out to the trace distance, with vertices `pixels` pixel footprints apart —
-/// across, `r α`; along the view, `r α/sin γ` (`α` the pixel angle, `γ` the grazing angle).
+/// across, `r α`; along the view, `r α/max(sin γ, 0.05)` (`α` the pixel angle, `γ` the grazing
+/// angle; the renderer's footprint, stretched along the view by at most 20).
 ///
 /// With `faded`, each vertex is on the surface the renderer draws along the ray from the eye
 /// to it: the trochoid sea's waves weighted by their fade at that distance (brine-waves
@@ -354,8 +355,10 @@ pub fn camera_layout(world: &World, pixels: f64) -> (Vec<f64>, Vec<f64>, u64) {
             break;
         }
         // A footprint along the view, `α r/sin γ`, no finer than at a third of the eye's height
-        // (near the foot of a view straight down, `α r` would crowd the rings far below a pixel).
-        let sin_grazing = h / r.hypot(h);
+        // (near the foot of a view straight down, `α r` would crowd the rings far below a pixel),
+        // and stretched by at most `1/0.05` as the renderer's footprint (brine-core
+        // `MIN_FOOTPRINT_GRAZING`), which keeps the waves down to that length in the faded mesh.
+        let sin_grazing = (h / r.hypot(h)).max(brine_core::footprint::MIN_FOOTPRINT_GRAZING);
         rings.push((r + alpha * r.max(h / 3.0) / sin_grazing).min(r_max));
     }
     let n = (rings.len() * angles.len()) as u64;

@@ -48,8 +48,9 @@ pub(super) fn monahan_coverage(scene: &Scene) -> Result<f64, WorldError> {
 }
 
 pub(super) fn breaking_footprint_of(s: &SeaConfig) -> Result<f64, WorldError> {
-    let SeaSpectra { spectra, .. } = sea_spectra(s, true)?;
-    Ok(spectra.first().map_or(0.0, |sp| brine_whitecap::breaking_footprint(brine_waves::G / sp.peak_omega())))
+    let SeaSpectra { spectra, wind_sea, .. } = sea_spectra(s, true)?;
+    let wind_sea = spectra.first().filter(|_| wind_sea);
+    Ok(wind_sea.map_or(0.0, |sp| brine_whitecap::breaking_footprint(brine_waves::G / sp.peak_omega())))
 }
 
 /// Calibration points of the FFT sea's white water: its sea is one tile at one instant, and every

@@ -13,8 +13,9 @@ use crate::fft::resample::resample;
 use crate::fft::spline::SplineGrid;
 use crate::{FftOcean, FftRestFields};
 
-/// Smallest `|d_y|` used to stretch a pixel footprint along a grazing view (the trochoid fades'
-/// and the renderer's footprint): beyond 87° from the vertical the stretch stops at `1/√0.05`.
+/// Smallest `|d_y|` used to stretch a pixel footprint along a grazing view (the floor of the
+/// trochoid fades and the renderer's footprint, whose stretch stops at `1/0.05`; the FFT sea's
+/// fade stretches by `1/√|d_y|`, so beyond 87° from the vertical its stretch stops at `1/√0.05`).
 const MIN_GRAZING: f64 = brine_core::footprint::MIN_FOOTPRINT_GRAZING;
 
 /// One cascade of an [`FftFrame`]: an `N × N` periodic grid of spacing `Δ = L/N` over its tile;
