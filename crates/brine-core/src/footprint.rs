@@ -72,9 +72,14 @@ pub const MIN_FOOTPRINT_GRAZING: f64 = 0.05;
 /// - `d_y`: vertical component of the ray's unit direction, `[-1, 1]`.
 ///
 /// # Returns
-/// The squared stretch, `[1, 400]`.
+/// The squared stretch (dimensionless), `[1, 400]`.
+///
+/// # References
+/// docs/equations.md §1 "Antialiasing" (the footprint on the sea; the floor is Brine's);
+/// Bruneton, Neyret & Holzschuch 2010 (waves faded as the footprint reaches them).
 #[inline]
 pub fn footprint_stretch_squared(d_y: f64) -> f64 {
+    debug_assert!((-1.0..=1.0).contains(&d_y), "d_y = {d_y} is not a unit vector's component");
     let g = d_y.abs().max(MIN_FOOTPRINT_GRAZING);
     1.0 / (g * g)
 }
@@ -192,6 +197,18 @@ mod tests {
 
     /// Relative rounding of the probes' variance: a sum of at most 14 squares.
     const PROBE_VARIANCE_ROUNDING: f64 = 1e-12;
+
+    /// The stretch along the view is the mean plane's `1/|d_y|` down to 87° from the vertical
+    /// and 20 beyond, for falling, level and rising rays: values worked by hand.
+    #[test]
+    fn the_stretch_is_the_mean_planes_down_to_the_floor() {
+        for (d_y, stretch) in
+            [(-1.0, 1.0), (0.5, 2.0), (-0.1, 10.0), (-0.05, 20.0), (-0.01, 20.0), (0.0, 20.0), (0.02, 20.0)]
+        {
+            let s2 = footprint_stretch_squared(d_y);
+            assert!((s2 - stretch * stretch).abs() <= 1e-12 * s2, "d_y = {d_y}: {s2}");
+        }
+    }
 
     proptest::proptest! {
         /// The probes have the ellipse's extra variance along the axis, `s_major² − s_minor²`
