@@ -156,6 +156,62 @@ proptest! {
         }
     }
 
+    /// The Gerstner slope bound holds where it is hardest to hold: a few long-crested waves of
+    /// high steepness (`ΣQ` up to 0.97), their `kA` and `Q` drawn apart, the gradient searched
+    /// for its largest value over rest positions (a lattice over the longest wave, then a local
+    /// climb). The gradient is `J⁻¹∇ᵤh` at `x = forward(u)`, read through the inversion.
+    #[test]
+    fn gerstner_slopes_stay_below_the_slope_bound(
+        waves in prop::collection::vec((0.2f64..3.0, -0.4f64..0.4, 0.0..TAU, 0.05f64..1.0, 0.3f64..3.0), 1..5),
+        total_q in 0.3f64..0.97,
+    ) {
+        let weight: f64 = waves.iter().map(|w| w.3).sum();
+        let set = TrochoidSet::new(
+            waves
+                .iter()
+                .map(|&(k, dir, ph, share, ratio)| {
+                    let q = total_q * share / weight;
+                    // kA = ratio·Q (ratio 0.3–3), so that Qᵢ/kᵢAᵢ differs between waves.
+                    Trochoid::new(q * ratio / k, k, dir, (G * k).sqrt(), ph, q).unwrap()
+                })
+                .collect(),
+        );
+        let g = GerstnerSurface::new(&set).unwrap();
+        let f = g.at_time(0.0);
+        let bound = g.slope_bound();
+        let crude: f64 = set.waves().iter().map(|w| w.wavenumber() * w.amplitude()).sum::<f64>() / (1.0 - g.total_steepness());
+        prop_assert!(bound <= crude * (1.0 + 1e-12), "ρ* = {bound} above the crude bound {crude}");
+        let slope = |u: DVec2| {
+            let p = f.forward(u);
+            f.gradient(p.x, p.z).length()
+        };
+        let longest = set.waves().iter().map(|w| TAU / w.wavenumber()).fold(0.0, f64::max);
+        let (mut best, mut at) = (0.0, DVec2::ZERO);
+        for i in 0..40 {
+            for j in 0..40 {
+                let u = DVec2::new(i as f64, j as f64) * (longest / 40.0);
+                let s = slope(u);
+                if s > best {
+                    (best, at) = (s, u);
+                }
+            }
+        }
+        let mut h = longest / 80.0;
+        while h > 1e-6 * longest {
+            let mut moved = false;
+            for d in [DVec2::X, -DVec2::X, DVec2::Y, -DVec2::Y] {
+                let s = slope(at + h * d);
+                if s > best {
+                    (best, at, moved) = (s, at + h * d, true);
+                }
+            }
+            if !moved {
+                h *= 0.5;
+            }
+        }
+        prop_assert!(best <= bound * (1.0 + SLACK_REL) + SLACK_ABS, "slope {best} at {at} above the bound {bound}");
+    }
+
     #[test]
     fn gerstner_jacobian_and_inversion_match_the_forward_map(set in trochoid_set(12), (x, z, t) in point_and_time()) {
         let g = GerstnerSurface::new(&set).unwrap();

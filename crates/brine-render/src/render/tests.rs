@@ -72,11 +72,15 @@ fn tiles_match_single_rays(surface: crate::scene::SurfaceKind) {
 }
 
 /// Gerstner and sine seas fade their short waves with the pixel footprint, as the trochoid and
-/// FFT seas do: their primary rays (toward the horizon, where a pixel covers metres) cost far
-/// fewer evaluations of the sea than the same rays traced with every wave, and the slopes the
+/// FFT seas do: their primary rays (toward the horizon, where a pixel covers metres) cost fewer
+/// evaluations of the sea than the same rays traced with every wave, and the slopes the
 /// geometry lost reach the BRDF.
 #[test]
 fn gerstner_and_sine_primary_rays_fade_with_the_footprint() {
+    // Faded over whole evaluations: 1 without fading; measured 0.61 (Gerstner: 13 110 / 21 559,
+    // whose whole trace the sharp slope bound made 3.3 times cheaper, against 0.50 with the
+    // simpler bound) and 0.15 (sine).
+    const FADED_COST: f64 = 0.75;
     for surface in [crate::scene::SurfaceKind::Gerstner, crate::scene::SurfaceKind::Sine] {
         let mut scene = Scene::default_scene();
         (scene.camera.width, scene.camera.height) = (160, 90);
@@ -103,7 +107,7 @@ fn gerstner_and_sine_primary_rays_fade_with_the_footprint() {
             }
         }
         assert!(
-            (faded.evaluations as f64) < 0.5 * whole.evaluations as f64,
+            (faded.evaluations as f64) < FADED_COST * whole.evaluations as f64,
             "{surface:?}: {} evaluations faded, {} whole",
             faded.evaluations,
             whole.evaluations

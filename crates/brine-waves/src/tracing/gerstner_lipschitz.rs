@@ -2,7 +2,8 @@
 //!
 //! `F(p) = y − h(x, z)` in two components: `n₀ = y` (`L₀ = 1`, directional `|d̂_y|`) and
 //! `n₁ = −h(x, z)` with the conservative bound of docs/equations.md §1(b),
-//! `L₁ = Σ kᵢAᵢ/(1 − Σ Qᵢ)`, directional `L₁ |d̂_xz|`, and `−Σ Aᵢ ≤ n₁ ≤ Σ Aᵢ`. The waves cannot
+//! `L₁ = ρ*`, the root of `Σ √((kᵢAᵢ)² + ρ²Qᵢ²) = ρ` ([`crate::GerstnerSurface::slope_bound`]),
+//! directional `L₁ |d̂_xz|`, and `−Σ Aᵢ ≤ n₁ ≤ Σ Aᵢ`. The waves cannot
 //! be split into independent components: each needs the same inversion of the horizontal
 //! displacement, so per-wave terms would repeat it `N` times. The height is evaluated with the
 //! SIMD passes ([`GerstnerField::height_lanes`], about 1.8× faster than the scalar passes).
@@ -69,9 +70,10 @@ impl LipschitzSum for GerstnerField<'_> {
 /// whole one).
 ///
 /// Bounds from `t` on (the waves with `Tᵢ ≤ t` are gone for good): `|h_w| ≤ Σ' Aᵢ` and
-/// `|d h_w/dt| ≤ L' |d̂_xz| + Σ'' |∂h/∂wᵢ| |dwᵢ/dt|` with `L' = Σ' kᵢAᵢ/(1 − Σ' Qᵢ)` (the whole
-/// set's bound over the waves left), `|∂h/∂wᵢ| ≤ Aᵢ + (Σ' kA) Rᵢ/(1 − Σ' Q)` (the explicit term and
-/// the shift of the rest position, `J ∂u/∂wᵢ = −Dᵢ`, `|Dᵢ| ≤ Rᵢ = Qᵢ/kᵢ`) and
+/// `|d h_w/dt| ≤ L' |d̂_xz| + Σ'' |∂h/∂wᵢ| |dwᵢ/dt|` with `L'` the slope bound of the waves left
+/// (that of [`crate::GerstnerSurface::slope_bound`] over them, without Newton steps; weights below 1
+/// only lower it), `|∂h/∂wᵢ| ≤ Aᵢ + L' Rᵢ` (the explicit term and the shift of the rest position:
+/// `J ∂u/∂wᵢ = −Dᵢ`, so `∇ᵤh·∂u/∂wᵢ = −∇ₓh·Dᵢ`, with `|Dᵢ| ≤ Rᵢ = Qᵢ/kᵢ`) and
 /// `|dwᵢ/dt| ≤ FADE_SLOPE / max(t, Tᵢ/1.5)`; `Σ'` runs over the waves left, `Σ''` over those
 /// still fading before the end of the segment. No curvature bound is given (first-order steps).
 struct FadedGerstnerRay<'f, 'a> {
@@ -102,21 +104,15 @@ impl brine_trace::RayTiers for FadedGerstnerRay<'_, '_> {
             let (a, b) = (self.ray.at(t).y, self.ray.at(self.t_exit).y);
             return brine_trace::TierBounds::symmetric(a.min(b), a.max(b), d.y.abs(), 0.0);
         }
-        let (mut amplitude, mut ka, mut q) = (0.0, 0.0, 0.0);
-        for (i, &f) in self.fade.iter().enumerate() {
-            if f > t {
-                let (a, s, qi, _) = self.field.wave_terms(i);
-                amplitude += a;
-                ka += s;
-                q += qi;
-            }
-        }
-        let inverse = 1.0 / (1.0 - q);
-        let mut lipschitz = ka * inverse * (d.x * d.x + d.z * d.z).sqrt();
+        let field = self.field;
+        let left = self.fade.iter().enumerate().filter(|&(_, &f)| f > t).map(|(i, _)| field.wave_terms(i));
+        let amplitude: f64 = left.clone().map(|(a, ..)| a).sum();
+        let slope = crate::surfaces::gerstner::slope_bound_of(left.map(|(_, ka, q, _)| (ka, q)), 0);
+        let mut lipschitz = slope * (d.x * d.x + d.z * d.z).sqrt();
         for (i, &f) in self.fade.iter().enumerate() {
             if f > t && f < 1.5 * self.t_exit {
                 let (a, _, _, r) = self.field.wave_terms(i);
-                lipschitz += (a + ka * r * inverse) * brine_trace::FADE_SLOPE / t.max(f / 1.5);
+                lipschitz += (a + slope * r) * brine_trace::FADE_SLOPE / t.max(f / 1.5);
             }
         }
         brine_trace::TierBounds::symmetric(-amplitude, amplitude, lipschitz, f64::INFINITY)
