@@ -326,7 +326,7 @@ class Scene:
         without the waves shorter than two spacings (trochoid and Gerstner seas; ``grid_limit``
         then says what was left out). ``camera=True``: the camera-adaptive grid instead, edges
         ``pixels`` pixel footprints long (default 2, [0.125, 64]); ``faded``: the surface the
-        camera's rays draw (trochoid sea). ``t``: time (s; the scene's if ``None``)."""
+        camera's rays draw (the far waves faded with the pixel footprint). ``t``: time (s; the scene's if ``None``)."""
         if not camera and (pixels is not None or faded):
             raise BrineError("pixels and faded apply to the camera mesh: pass camera=True")
         kwargs: dict = {

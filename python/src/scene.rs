@@ -319,7 +319,7 @@ impl Scene {
             &other
         };
         let (mesh, limit) = if camera {
-            check_camera_mesh(world, pixels, faded).map_err(renamed)?;
+            check_camera_mesh(world, pixels).map_err(renamed)?;
             (py.detach(|| camera_mesh(world, t, pixels, faded)), None)
         } else if band_limit {
             let (m, l) = py.detach(|| grid_mesh_band_limited(world, t, &grid)).map_err(renamed)?;

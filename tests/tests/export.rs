@@ -227,7 +227,7 @@ fn a_camera_mesh_covers_what_the_camera_sees() {
         let mut scene = Scene::default_scene();
         (scene.camera.width, scene.camera.height, scene.camera.pitch_deg) = (64, 36, Some(pitch));
         let world = World::new(&scene).unwrap();
-        check_camera_mesh(&world, 2.0, false).unwrap();
+        check_camera_mesh(&world, 2.0).unwrap();
         let mesh = camera_mesh(&world, scene.sea.time_s, 2.0, false);
         let cam = world.camera();
         let footprint = cam.pixel_angle() * 2.0;
@@ -251,7 +251,7 @@ fn a_camera_mesh_covers_what_the_camera_sees() {
     let mut scene = Scene::default_scene();
     scene.camera.pitch_deg = Some(90.0);
     let world = World::new(&scene).unwrap();
-    let e = check_camera_mesh(&world, 2.0, false).unwrap_err();
+    let e = check_camera_mesh(&world, 2.0).unwrap_err();
     assert!(e.contains("sees no sea"), "{e}");
 }
 
@@ -303,46 +303,50 @@ fn meshes_are_valid() {
     }
 }
 
-/// Every primary hit of a rendered frame within the trace distance lies on the faded height (`TracedTrochoids::
-/// faded_height` with the ray's direction and distance: the surface `brine mesh --camera
-/// --faded` is made of), near and far, within the tracer's tolerance; and the faded camera mesh's
-/// vertices are that surface.
+/// Every primary hit of a rendered frame within the trace distance lies on the faded height
+/// (brine-waves `TracedSea::faded_height` with the ray's direction and distance: the surface
+/// `brine mesh --camera --faded` is made of), near and far, within the tracer's tolerance, on
+/// each of the four seas; and the faded camera mesh's vertices are that surface.
 #[test]
 fn the_faded_height_is_what_the_primary_rays_hit() {
-    let mut scene = Scene::default_scene();
-    scene.camera.width = 200;
-    scene.camera.height = 112;
-    scene.camera.spp = 1;
-    scene.phenomena.glare = false;
-    let world = World::new(&scene).unwrap();
-    let brine_waves::FrameSurface::Trochoids(traced) = world.sea().surface() else { panic!("trochoids") };
-    let frame = render_world(&scene, &world, &RenderOptions::default(), &|| {}).unwrap();
-    let cam = world.camera();
-    let (mut n, mut far, mut worst) = (0, 0, 0.0f64);
-    for y in 0..scene.camera.height {
-        for x in 0..scene.camera.width {
-            let depth = f64::from(frame.aovs[(y * scene.camera.width + x) as usize].depth);
-            // Beyond the trace distance a ray meets the curved mean sea, not the waves.
-            if !(depth < scene.sea.trace_distance_m) {
-                continue;
+    use brine_render::scene::SurfaceKind;
+    for surface in [SurfaceKind::Trochoids, SurfaceKind::Gerstner, SurfaceKind::Sine, SurfaceKind::Fft] {
+        let mut scene = Scene::default_scene();
+        scene.camera.width = 200;
+        scene.camera.height = 112;
+        scene.camera.spp = 1;
+        scene.phenomena.glare = false;
+        scene.sea.surface = surface;
+        let world = World::new(&scene).unwrap();
+        let frame = render_world(&scene, &world, &RenderOptions::default(), &|| {}).unwrap();
+        let traced = world.sea().traced();
+        let cam = world.camera();
+        let (mut n, mut far, mut worst) = (0, 0, 0.0f64);
+        for y in 0..scene.camera.height {
+            for x in 0..scene.camera.width {
+                let depth = f64::from(frame.aovs[(y * scene.camera.width + x) as usize].depth);
+                // Beyond the trace distance a ray meets the curved mean sea, not the waves.
+                if !(depth < scene.sea.trace_distance_m) {
+                    continue;
+                }
+                let d = cam.direction(f64::from(x) + 0.5, f64::from(y) + 0.5);
+                let p = cam.position + depth * d;
+                let h = traced.faded_height(p.x, p.z, d, world.filtering_angle(), depth);
+                worst = worst.max((p.y - h).abs() / ON_THE_SURFACE_M.max(TRACE_RELATIVE * depth));
+                n += 1;
+                far += usize::from(depth > 200.0);
             }
-            let d = cam.direction(f64::from(x) + 0.5, f64::from(y) + 0.5);
-            let p = cam.position + depth * d;
-            let h = traced.faded_height(p.x, p.z, d, world.filtering_angle(), depth);
-            worst = worst.max((p.y - h).abs() / ON_THE_SURFACE_M.max(TRACE_RELATIVE * depth));
-            n += 1;
-            far += usize::from(depth > 200.0);
         }
-    }
-    assert!(n > 10_000 && far > 1000, "{n} hits, {far} beyond 200 m");
-    assert!(worst < 1.0, "a hit {worst} tolerances off the faded height");
-    let mesh = brine_render::export::camera_mesh(&world, scene.sea.time_s, 2.0, true);
-    for v in mesh.positions.iter().step_by(101) {
-        let p = DVec3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]));
-        let s = world.sea().sample(p.x, p.z);
-        let ray = DVec3::new(p.x, s.height, p.z) - cam.position;
-        let h = traced.faded_height(p.x, p.z, ray.normalize(), world.filtering_angle(), ray.length());
-        // The vertex is stored in f32: 2⁻²⁴ of its coordinates.
-        assert!((h - p.y).abs() < 1e-5 * (1.0 + h.abs()), "vertex {p} against {h}");
+        assert!(n > 10_000 && far > 1000, "{surface:?}: {n} hits, {far} beyond 200 m");
+        assert!(worst < 1.0, "{surface:?}: a hit {worst} tolerances off the faded height");
+        let mesh = brine_render::export::camera_mesh(&world, scene.sea.time_s, 2.0, true);
+        for v in mesh.positions.iter().step_by(101) {
+            let p = DVec3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]));
+            let s = world.sea().sample(p.x, p.z);
+            let ray = DVec3::new(p.x, s.height, p.z) - cam.position;
+            let h = traced.faded_height(p.x, p.z, ray.normalize(), world.filtering_angle(), ray.length());
+            // The vertex is stored in f32: 2⁻²⁴ of its coordinates.
+            assert!((h - p.y).abs() < 1e-5 * (1.0 + h.abs()), "{surface:?}: vertex {p} against {h}");
+        }
     }
 }

@@ -150,8 +150,8 @@ pub struct MeshArgs {
     /// With `--camera`: pixel footprints per edge.
     #[arg(long, default_value_t = 2.0, value_parser = super::within(0.125, 64.0), requires = "camera")]
     pub pixels: f64,
-    /// With `--camera`: the surface as the camera's rays draw it, the far waves faded with the
-    /// pixel footprint (the trochoid sea); without, every wave everywhere.
+    /// With `--camera`: the surface as the camera's rays draw it, the far waves (or the FFT
+    /// sea's cascades) faded with the pixel footprint; without, every wave everywhere.
     #[arg(long, requires = "camera")]
     pub faded: bool,
     /// With the regular grid: leave out the waves shorter than two spacings, which the grid would
@@ -194,7 +194,7 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
     let started = std::time::Instant::now();
     let world = world_of(&scene, None)?;
     if args.camera {
-        crate::export::check_camera_mesh(&world, args.pixels, args.faded).map_err(CliError::Input)?;
+        crate::export::check_camera_mesh(&world, args.pixels).map_err(CliError::Input)?;
     }
     let time_of =
         |f: u32| if f == 0 { scene.sea.time_s } else { scene.sea.time_s + f64::from(f) / scene.animation.fps };

@@ -181,9 +181,9 @@ fn grid_mesh_of(world: &World, frame: &brine_waves::SeaFrame, grid: &MeshGrid) -
 /// angle; the renderer's footprint, stretched along the view by at most 20).
 ///
 /// With `faded`, each vertex is on the surface the renderer draws along the ray from the eye
-/// to it: the trochoid sea's waves weighted by their fade at that distance (brine-waves
-/// `TracedTrochoids::faded_height`, the primary rays' weights), so the far sea is the smoother
-/// one of the image. The other seas have no faded height: [`camera_mesh_faded_supported`].
+/// to it: the waves (or the FFT sea's cascades) weighted by their fade at that distance
+/// (brine-waves `TracedSea::faded_height`, the primary rays' weights), so the far sea is the
+/// smoother one of the image.
 ///
 /// # Arguments
 /// - `world`, `t`: as [`grid_mesh`]; `pixels`: pixel footprints per edge, `≥ 0.125`;
@@ -198,19 +198,17 @@ pub fn camera_mesh(world: &World, t: f64, pixels: f64, faded: bool) -> Mesh {
         let alpha = world.camera.pixel_angle();
         let fade = world.filtering_angle();
         let cols = angles.len();
-        let traced = match (faded, frame.surface()) {
-            (true, brine_waves::FrameSurface::Trochoids(s)) => Some(s),
-            _ => None,
-        };
+        let traced = frame.traced();
         let vertices: Vec<_> = (0..rings.len() * cols)
             .into_par_iter()
             .with_min_len(1024)
             .map(|k| {
                 let (r, a) = (rings[k / cols], angles[k % cols]);
                 let x = DVec2::new(c.x + r * a.cos(), c.z + r * a.sin());
-                match traced {
-                    Some(s) => faded_vertex(world, frame, s, x, pixels * alpha * r, fade),
-                    None => vertex(world, frame, x, pixels * alpha * r),
+                if faded {
+                    faded_vertex(world, frame, &traced, x, pixels * alpha * r, fade)
+                } else {
+                    vertex(world, frame, x, pixels * alpha * r)
                 }
             })
             .collect();
@@ -237,17 +235,12 @@ fn uri_path_segment(name: &str) -> String {
         .collect()
 }
 
-/// Whether [`camera_mesh`] can fade the waves of `world`'s sea (the trochoid sum).
-pub fn camera_mesh_faded_supported(world: &World) -> bool {
-    matches!(world.sea().surface(), brine_waves::FrameSurface::Trochoids(_))
-}
-
 /// A vertex of the faded surface above `x`: the fade of the ray from the eye to the point of the
 /// full surface there (the weights change by far less than a wave between the two points).
 fn faded_vertex(
     world: &World,
     frame: &brine_waves::SeaFrame,
-    traced: &brine_waves::TracedTrochoids,
+    traced: &brine_waves::TracedSea<'_>,
     x: DVec2,
     footprint_m: f64,
     angle: f64,
@@ -264,13 +257,13 @@ fn faded_vertex(
     (p.as_vec3().to_array(), n.as_vec3().to_array(), cover.foam as f32, cover.whitecap as f32)
 }
 
-/// Checks a [`camera_mesh`] request before any work: `pixels` in `[0.125, 64]`, memory the
-/// machine has, and a faded height where `faded` asks for one.
+/// Checks a [`camera_mesh`] request before any work: `pixels` in `[0.125, 64]`, a camera that
+/// sees the sea, and memory the machine has.
 ///
 /// # Errors
-/// A message naming the flag and its range, the memory estimate, or the sea without a faded
-/// height.
-pub fn check_camera_mesh(world: &World, pixels: f64, faded: bool) -> Result<(), String> {
+/// A message naming the flag and its range, the camera that sees no sea, or the memory
+/// estimate.
+pub fn check_camera_mesh(world: &World, pixels: f64) -> Result<(), String> {
     if !(0.125..=64.0).contains(&pixels) {
         return Err(format!("--pixels = {pixels} is out of range: expected [0.125, 64]"));
     }
@@ -279,9 +272,6 @@ pub fn check_camera_mesh(world: &World, pixels: f64, faded: bool) -> Result<(), 
         return Err("--camera: the camera sees no sea (every ray of its image points above the horizon)".to_owned());
     }
     super::check_memory(&format!("a camera mesh of {n} vertices"), n.saturating_mul(112))?;
-    if faded && !camera_mesh_faded_supported(world) {
-        return Err("--faded: only the trochoid sea (sea.surface = \"trochoids\") has a faded height".to_owned());
-    }
     Ok(())
 }
 

@@ -7,8 +7,7 @@ mod query;
 
 pub use bake::{BakeMaps, BakeOptions, BakedFrame, GridLimit, UpAxis, bake_frame, write_bake_frame};
 pub use mesh::{
-    Mesh, MeshFormat, MeshGrid, camera_mesh, camera_mesh_faded_supported, check_camera_mesh, grid_mesh,
-    grid_mesh_band_limited, write_mesh,
+    Mesh, MeshFormat, MeshGrid, camera_mesh, check_camera_mesh, grid_mesh, grid_mesh_band_limited, write_mesh,
 };
 pub use query::{QueryPoint, QueryResult, parse_points, query_points};
 

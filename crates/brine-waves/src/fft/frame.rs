@@ -604,6 +604,30 @@ impl FftFrame {
         }
     }
 
+    /// The height of the surface the tracer draws at `t` (m) along a ray of direction `d̂`
+    /// traced with footprint fading: `Σ_c w_c(t) s_c(x, z)` (the traced cascades, each weighted
+    /// by its fade).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m).
+    /// - `direction`: unit ray direction; `footprint_angle` (rad, 0: no fading) and `t` as traced.
+    ///
+    /// # Returns
+    /// The height (m), within [`FftFrame::height_bounds`].
+    ///
+    /// # References
+    /// Bruneton et al. 2010 (seamless transition); docs/equations.md §1.
+    pub fn faded_height(&self, x: f64, z: f64, direction: DVec3, footprint_angle: f64, t: f64) -> f64 {
+        let mut h = 0.0;
+        for (c, cascade) in self.cascades.iter().enumerate() {
+            let w = self.fade_weight(c, direction, footprint_angle, t);
+            if w > 0.0 {
+                h += w * cascade.height(x, z);
+            }
+        }
+        h
+    }
+
     /// The shading gradient of the surface the tracer drew at a hit `t` (m) along a ray of
     /// direction `d̂` traced with footprint fading: `Σ_c w_c(t) ∇h_c`.
     ///

@@ -242,6 +242,38 @@ impl SineField<'_> {
         self.set.geometry.height_gradient(&self.offset, x, z).1
     }
 
+    /// Height of the geometry as a primary ray `t` metres along the unit direction `d` draws it,
+    /// each wave weighted by the tracer's footprint weight `wᵢ = smoothstep(1, 1.5, Tᵢ/t)` for a
+    /// pixel of `footprint_angle` rad: `h = Σ wᵢAᵢ cos(kᵢ·x + offᵢ)` (`footprint_angle = 0` or
+    /// `t = 0`: [`SineField::height`]). The detail waves are normals only, never height.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite.
+    /// - `d`: unit ray direction; `footprint_angle` (rad) `≥ 0`; `t` (m) `≥ 0`.
+    ///
+    /// # Returns
+    /// `h` (m), within `±Σ Aᵢ`.
+    ///
+    /// # References
+    /// Finch 2004, Eq. 1; Bruneton, Neyret & Holzschuch 2010 §4.
+    pub fn faded_height(&self, x: f64, z: f64, d: DVec3, footprint_angle: f64, t: f64) -> f64 {
+        if footprint_angle <= 0.0 || t <= 0.0 {
+            return self.height(x, z);
+        }
+        let g = &self.set.geometry;
+        let mut out = 0.0;
+        for i in 0..g.kx.len() {
+            let w = brine_core::footprint::footprint_weight(
+                crate::tracing::fade::wave_fade_distance(g.kx[i], g.kz[i], d, footprint_angle),
+                t,
+            );
+            if w > 0.0 {
+                out += w * g.amplitude[i] * (g.kx[i] * x + g.kz[i] * z + self.offset[i]).cos();
+            }
+        }
+        out
+    }
+
     /// Gradient of the geometry at a primary hit `t` metres along the unit direction `d` for a
     /// pixel of `footprint_angle` rad, each wave weighted by the tracer's footprint weight
     /// `wᵢ = smoothstep(1, 1.5, Tᵢ/t)`: `∇h = −Σ wᵢAᵢkᵢ sin(kᵢ·x + offᵢ)` (`footprint_angle = 0` or

@@ -92,6 +92,25 @@ impl TracedSea<'_> {
         }
     }
 
+    /// The height of the surface as drawn at `(x, z)` by a primary ray `t` metres along `d` with
+    /// the waves faded by `footprint_angle` (0 keeps every wave): the surface the ray traced,
+    /// which `brine mesh --camera --faded` exports.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m); `d`: unit ray direction; `footprint_angle` (rad)
+    ///   `≥ 0`; `t` (m) `≥ 0`.
+    ///
+    /// # Returns
+    /// The height (m).
+    pub fn faded_height(&self, x: f64, z: f64, d: DVec3, footprint_angle: f64, t: f64) -> f64 {
+        match self {
+            TracedSea::Trochoids(s) => s.faded_height(x, z, d, footprint_angle, t),
+            TracedSea::Gerstner(f) => f.faded_height_along(x, z, d, footprint_angle, t),
+            TracedSea::Sine(f) => f.faded_height(x, z, d, footprint_angle, t),
+            TracedSea::Fft(f) => f.faded_height(x, z, d, footprint_angle, t),
+        }
+    }
+
     /// The gradient of the surface as drawn at `(x, z)`, hit `t` metres along `d` with the waves
     /// faded by `footprint_angle` (0 keeps every wave; the sine sea's detail waves left out).
     pub fn faded_gradient(&self, x: f64, z: f64, d: DVec3, footprint_angle: f64, t: f64) -> DVec2 {

@@ -114,6 +114,32 @@ impl GerstnerField<'_> {
         self.invert(x, z, |u| gerstner_lanes::displacement(lanes, u), |u| gerstner_lanes::state(lanes, u)).1.height
     }
 
+    /// Height (m) of the faded Gerstner sum as a primary ray `t` metres along the unit direction
+    /// `d` draws it, for a pixel of `footprint_angle` rad: [`GerstnerField::faded_height`] with
+    /// the tracer's weights `wᵢ = smoothstep(1, 1.5, Tᵢ/t)` (`footprint_angle = 0` or `t = 0`:
+    /// every wave whole, [`GerstnerField::height`]).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite.
+    /// - `d`: unit ray direction; `footprint_angle` (rad) `≥ 0`; `t` (m) `≥ 0`.
+    ///
+    /// # Returns
+    /// `h` (m), in `[−ΣAᵢ, ΣAᵢ]`.
+    ///
+    /// # References
+    /// docs/equations.md §1(b); Bruneton, Neyret & Holzschuch 2010 §4.
+    pub fn faded_height_along(&self, x: f64, z: f64, d: DVec3, footprint_angle: f64, t: f64) -> f64 {
+        if footprint_angle <= 0.0 || t <= 0.0 {
+            return self.height(x, z);
+        }
+        let weights: Vec<f64> = self
+            .fade_distances(d, footprint_angle)
+            .iter()
+            .map(|&f| brine_core::footprint::footprint_weight(f, t))
+            .collect();
+        self.faded_height(x, z, &weights)
+    }
+
     /// Gradient of the faded Gerstner sum at a primary hit `t` metres along the unit direction `d`
     /// for a pixel of `footprint_angle` rad, the weights `wᵢ = smoothstep(1, 1.5, Tᵢ/t)` of the
     /// tracer (`footprint_angle = 0` or `t = 0`: every wave whole, [`GerstnerField::gradient`]).
