@@ -250,7 +250,9 @@ fn faded_vertex(
     let ray = DVec3::new(x.x, s.height, x.y) - c;
     let (t, d) = (ray.length(), ray.normalize_or_zero());
     let h = traced.faded_height(x.x, x.y, d, angle, t);
-    let g = traced.faded_gradient(x.x, x.y, d, angle, t);
+    // The shading gradient of the drawn waves (the sine sea's bump-mapped detail waves included,
+    // faded as its geometric ones), as the unfaded mesh's normals carry them.
+    let g = traced.faded_gradient_and_covariance(x.x, x.y, d, angle, t).0;
     let n = DVec3::new(-g.x, 1.0, -g.y).normalize();
     let p = DVec3::new(x.x, h, x.y);
     let cover = world.cover_at_time(p, n, frame.time(), footprint_m);

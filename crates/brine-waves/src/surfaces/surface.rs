@@ -70,8 +70,8 @@ pub trait WaveSurface {
     /// Lipschitz constant of the height field: a bound `L ≥ |∇h|` over all positions and times.
     ///
     /// # Returns
-    /// `L` (dimensionless): `Σ kᵢAᵢ/√(1 − Qᵢ²)` (trochoid sum), `Σ kᵢAᵢ/(1 − Σ Qᵢ)` (Gerstner sum),
-    /// `Σ kᵢAᵢ` (sine set).
+    /// `L` (dimensionless): `Σ kᵢAᵢ/√(1 − Qᵢ²)` (trochoid sum), the root `ρ*` of
+    /// `Σ √((kᵢAᵢ)² + ρ²Qᵢ²) = ρ` (Gerstner sum, at most `Σ kᵢAᵢ/(1 − Σ Qᵢ)`), `Σ kᵢAᵢ` (sine set).
     ///
     /// # References
     /// docs/equations.md §1 ("max |slope|"; the Gerstner bound is derived there).
