@@ -60,6 +60,12 @@ impl GerstnerField<'_> {
         (0..s.len()).map(|i| crate::tracing::fade::wave_fade_distance(s.kx[i], s.kz[i], d, footprint_angle)).collect()
     }
 
+    /// The tracer's weights `wᵢ = smoothstep(1, 1.5, Tᵢ/t)` at `t` (m) along the unit direction `d`
+    /// for a pixel of `footprint_angle` rad (`> 0`), one per wave.
+    fn fade_weights(&self, d: DVec3, footprint_angle: f64, t: f64) -> Vec<f64> {
+        self.fade_distances(d, footprint_angle).iter().map(|&f| brine_core::footprint::footprint_weight(f, t)).collect()
+    }
+
     /// Height (m) of the faded Gerstner sum, each wave's amplitude and steepness scaled by its
     /// weight `wᵢ ∈ [0, 1]`: `u + Σ wᵢDᵢ(u) = x`, `h = Σ wᵢAᵢ cos φᵢ(u)` (the surface a primary ray
     /// sees at a distance where waves shorter than its footprint fade; all `wᵢ = 1` is
@@ -132,11 +138,7 @@ impl GerstnerField<'_> {
         if footprint_angle <= 0.0 || t <= 0.0 {
             return self.height(x, z);
         }
-        let weights: Vec<f64> = self
-            .fade_distances(d, footprint_angle)
-            .iter()
-            .map(|&f| brine_core::footprint::footprint_weight(f, t))
-            .collect();
+        let weights = self.fade_weights(d, footprint_angle, t);
         self.faded_height(x, z, &weights)
     }
 
@@ -157,11 +159,7 @@ impl GerstnerField<'_> {
         if footprint_angle <= 0.0 || t <= 0.0 {
             return self.gradient(x, z);
         }
-        let weights: Vec<f64> = self
-            .fade_distances(d, footprint_angle)
-            .iter()
-            .map(|&f| brine_core::footprint::footprint_weight(f, t))
-            .collect();
+        let weights = self.fade_weights(d, footprint_angle, t);
         let w = |i: usize| weights[i];
         let st = self.invert(x, z, |u| self.displacement_scaled(u, w), |u| self.state_scaled(u, w)).1;
         st.solve(st.grad_u)
