@@ -102,6 +102,10 @@ impl TracedSea<'_> {
     ///
     /// # Returns
     /// The height (m).
+    ///
+    /// # References
+    /// Bruneton, Neyret & Holzschuch 2010 §4 (waves faded with the pixel footprint);
+    /// docs/equations.md §1 and §1(b).
     pub fn faded_height(&self, x: f64, z: f64, d: DVec3, footprint_angle: f64, t: f64) -> f64 {
         match self {
             TracedSea::Trochoids(s) => s.faded_height(x, z, d, footprint_angle, t),
