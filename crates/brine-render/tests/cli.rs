@@ -227,6 +227,44 @@ fn a_bake_says_what_its_grid_left_out() {
     assert_eq!((fine["faded_waves"].as_u64(), fine["lost_mean_square_slope"].as_f64()), (Some(0), Some(0.0)));
 }
 
+/// A loop period far shorter than the sea's periods is warned of, with a period that would keep
+/// the waves within 5 %; that period draws no warning, and `bake.json` holds both figures. The
+/// renderer warns of the FFT sea's `sea.fft.loop_period_s` the same way.
+#[test]
+fn a_loop_that_moves_the_waves_is_warned_of() {
+    let dir = tempfile::tempdir().unwrap();
+    let bake = |name: &str, period: &str| {
+        let out = brine(&["bake", "-q", "-o", name, "--size", "16", "--loop-s", period], dir.path());
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let json: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(dir.path().join(name).join("bake.json")).unwrap()).unwrap();
+        (String::from_utf8_lossy(&out.stderr).into_owned(), json["loop_distortion"].clone())
+    };
+    // The default sea (10 m/s, a peak period of about 7 s) looped every 2 s.
+    let (err, short) = bake("short", "2");
+    assert!(err.contains("warning: --loop-s = 2 s moves") && err.contains("at least"), "{err}");
+    assert!(short["variance_share_moved_over_5_percent"].as_f64().unwrap() > 0.9, "{short}");
+    let suggested = short["suggested_period_s"].as_f64().unwrap();
+    assert!((50.0..300.0).contains(&suggested), "{short}");
+    let (err, long) = bake("long", &format!("{}", suggested.ceil()));
+    assert!(!err.contains("warning"), "{err}");
+    assert!(long["variance_share_moved_over_5_percent"].as_f64().unwrap() <= 0.05, "{long}");
+    assert!(long["frequency_change_rms"].as_f64().unwrap() < short["frequency_change_rms"].as_f64().unwrap());
+    let out = brine(&["bake", "-q", "-o", "none", "--size", "16"], dir.path());
+    assert!(out.status.success());
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("none/bake.json")).unwrap()).unwrap();
+    assert!(json["loop_distortion"].is_null(), "{json}");
+    std::fs::write(
+        dir.path().join("fft.toml"),
+        "[camera]\nwidth = 8\nheight = 6\n[sea]\nsurface = \"fft\"\n[sea.fft]\nresolution = 64\nloop_period_s = 4\n",
+    )
+    .unwrap();
+    let out = brine(&["render", "fft.toml", "-q", "-o", "fft.png"], dir.path());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success() && err.contains("warning: sea.fft.loop_period_s = 4 s moves"), "{err}");
+}
+
 /// `brine mesh` says when its grid aliases waves and, with `--band-limit`, what it left out; the
 /// FFT sea, whose cascades are grids of their own, is refused with a message and nothing written.
 #[test]

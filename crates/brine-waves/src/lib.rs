@@ -113,6 +113,7 @@
 mod error;
 mod fft;
 mod fit;
+mod looping;
 mod sea;
 mod spectra;
 mod surfaces;
@@ -138,6 +139,7 @@ pub use fit::extraction::{FitOptions, FrequencyPartition, fit_trochoids};
 pub use fit::lattice::{GridBand, TileLattice, grid_band};
 pub use fit::set::TrochoidSet;
 pub use fit::trochoid::{MAX_STEEPNESS, Trochoid, solve_trochoid_phase};
+pub use looping::{LOOP_TOLERANCE, LoopDistortion, looped_omega};
 pub use sea::{FrameSurface, Ocean, SINE_DETAIL_WAVELENGTH_M, SeaFrame, SurfaceSample};
 pub use spectra::dispersion::{Dispersion, ELFOUHAILY_K_M, SEA_WATER_DENSITY, SEA_WATER_SURFACE_TENSION};
 pub use spectra::dispersion::{G, omega_deep_water, wavenumber_deep_water};

@@ -425,6 +425,11 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
     // Trochoid, Gerstner and sine seas answer at any time from one world; the FFT sea's white
     // water belongs to its frame.
     let shared = if fft { None } else { Some(world_of(&scene, Some(&lattice))?) };
+    // How far the loop moves the waves: from the shared world, or from the FFT sea's first frame.
+    let distortion = std::cell::OnceCell::new();
+    if let Some(w) = &shared {
+        let _ = distortion.set(w.loop_distortion().cloned());
+    }
     let bar = |verb: &str| {
         if args.quiet || !std::io::stderr().is_terminal() {
             ProgressBar::hidden()
@@ -447,11 +452,22 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
                 let mut s = scene.clone();
                 s.sea.time_s = t;
                 own = world_of(&s, Some(&lattice))?;
+                distortion.get_or_init(|| own.loop_distortion().cloned());
                 &own
             }
         };
         Ok((crate::export::bake_frame(world, t, &options), world.sea.height_bounds()))
     };
+    let warn_once = std::cell::Cell::new(false);
+    let warn = || {
+        if let (Some(Some(d)), Some(period), false) = (distortion.get(), args.loop_s, warn_once.get()) {
+            if let Some(w) = super::loop_warning(d, period, "--loop-s") {
+                eprintln!("{w}");
+            }
+            warn_once.set(true);
+        }
+    };
+    warn();
     let started = std::time::Instant::now();
     // A 16-bit PNG bake encodes every frame's displacement on one range, which must hold every
     // frame's largest displacement, horizontal included (a few trochoids move 2.5 times as far
@@ -464,6 +480,7 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
         let measuring = bar("measuring");
         for f in first..last {
             let (frame, (lo, hi)) = bake_at(f)?;
+            measuring.suspend(warn);
             let largest = frame.maps.displacement.iter().flatten().fold(0.0f64, |m, v| m.max(f64::from(v.abs())));
             range_m = range_m.max(displacement_range(lo, hi)).max(largest);
             if let Some(e) = crate::export::bake::png_unencodable(&frame, None) {
@@ -484,6 +501,7 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
             Some(frame) => frame,
             None => bake_at(f)?.0,
         };
+        baking.suspend(warn);
         limit = limit.or(frame.limit);
         let png = args.png16.then_some(range_m);
         crate::export::write_bake_frame(&args.output, f, &frame, png).map_err(CliError::Failure)?;
@@ -498,6 +516,11 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
         "size": args.size,
         "texel_m": tile_m / args.size as f64,
         "loop_period_s": args.loop_s,
+        "loop_distortion": distortion.get().cloned().flatten().map(|d| serde_json::json!({
+            "frequency_change_rms": d.rms(),
+            "variance_share_moved_over_5_percent": d.share_moved(),
+            "suggested_period_s": d.suggested_period_s(),
+        })),
         "up": match args.up { UpAxis::Y => "y (x east, y up, z south)", UpAxis::Z => "z (X east, Y north, Z up)" },
         "maps": ["displacement", "normal", "foam", "whitecap", "jacobian", "spray"],
         "format": if args.png16 { "png16" } else { "exr" },

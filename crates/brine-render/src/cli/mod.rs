@@ -53,6 +53,28 @@ pub(crate) fn num(x: f64) -> String {
     if x != 0.0 && x.is_finite() && !(1e-3..1e6).contains(&x.abs()) { format!("{x:e}") } else { format!("{x}") }
 }
 
+/// The warning for a loop period that moves much of the sea off its dispersion relation: more
+/// than 5 % of its height variance in waves whose frequency (and phase speed) the loop moved by
+/// more than 5 % (brine-waves [`brine_waves::LoopDistortion`]); `None` below that. `setting` names
+/// where the period came from (`--loop-s`, `sea.fft.loop_period_s`).
+pub(crate) fn loop_warning(d: &brine_waves::LoopDistortion, period_s: f64, setting: &str) -> Option<String> {
+    let tolerance = brine_waves::LOOP_TOLERANCE;
+    (d.share_moved() > tolerance).then(|| {
+        format!(
+            "warning: {setting} = {} s moves {:.0} % of the sea's height variance by more than {:.0} % in \
+             frequency and speed (RMS {:.0} %): the loop moves a wave of period P by up to P/(2T), and \
+             turns one longer than 2T once per loop. A period of at least {:.0} s keeps 95 % of it within \
+             {:.0} %.",
+            num(period_s),
+            100.0 * d.share_moved(),
+            100.0 * tolerance,
+            100.0 * d.rms(),
+            d.suggested_period_s().ceil(),
+            100.0 * tolerance,
+        )
+    })
+}
+
 /// Rewrites a model's message so that it names the flags the user typed: a parameter name that
 /// is also an argument of `subcommand` (`t_water_c`) becomes its flag (`--t-water-c`).
 fn name_flags(subcommand: &str, message: &str) -> String {

@@ -260,6 +260,8 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     // the white water's calibration) is built once for the run.
     let mut timeless: Option<Timeless> = None;
     let (mut done, mut skipped) = (0u64, 0u64);
+    // A loop period far from the waves' own periods is told once.
+    let mut warned = false;
     for frame in first..last {
         let path = &path_of(frame)?;
         // `--resume` skips the frames already written in full (after removing what a killed
@@ -281,6 +283,12 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
         };
         let mut world = World::at_instant(&s, &parts).map_err(input)?;
         timeless = Some(parts);
+        if let (Some(d), Some(period), false) = (world.loop_distortion(), s.sea.fft.loop_period_s, warned) {
+            if let Some(w) = super::loop_warning(d, period, "sea.fft.loop_period_s") {
+                bar.suspend(|| eprintln!("{w}"));
+            }
+            warned = true;
+        }
         world.set_reference(options.reference);
         let frame = render_world(&s, &world, &options, &on_row).map_err(|e| match e {
             RenderError::World(w) => input(w),

@@ -355,7 +355,7 @@ pub const KEYS: &[KeySpec] = &[
         left_open(0.0, 1e6),
         "s",
         "—",
-        "when given, every frequency is rounded to a multiple of 2π/T: the animation loops exactly after T",
+        "when given, every frequency is rounded to a multiple of 2π/T: the animation loops exactly after T; a wave of period P then runs up to P/(2T) off its speed (warned of when that moves much of the sea: about 100 s keeps a 10 m/s sea within 5 %)",
     ),
     k(
         "sea.fft",

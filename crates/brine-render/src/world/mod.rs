@@ -14,8 +14,9 @@ use brine_trace::{Method, TraceOptions};
 use brine_waves::{
     BOX_WIDTH_PER_SIGMA, BandLimited, CosineSquared, CosineTwoS, DetailOptions, DetailSlopes, DetailWaves, Directions,
     DonelanBanner, Elfouhaily, EllipticalFootprint, FftOcean, FftOptions, FftSlopeFilter, FitOptions, FrameSurface,
-    Jonswap, Ocean, Phillips, PiersonMoskowitz, SeaComponent, SeaFrame, SeabedRelief, Spectrum, Spreading,
-    SteepnessLimit, SummedSpectrum, TileLattice, Tma, TrochoidSet, TrochoidSum, fit_sea_state, seabed_relief,
+    Jonswap, LoopDistortion, Ocean, Phillips, PiersonMoskowitz, SeaComponent, SeaFrame, SeabedRelief, Spectrum,
+    Spreading, SteepnessLimit, SummedSpectrum, TileLattice, Tma, TrochoidSet, TrochoidSum, fit_sea_state,
+    seabed_relief,
 };
 use brine_whitecap::{
     Calibration, CalibrationOptions, ErfMethod, FftBreaking, FftCalibration, FftJacobianStatistics, FootprintFilter,
@@ -69,6 +70,9 @@ pub enum WorldError {
 pub struct World {
     /// The fitted wave set.
     pub(crate) set: TrochoidSet,
+    /// How far the tile lattice's loop period moved the waves from their dispersion relation
+    /// (a world built on a lattice with a loop period only).
+    loop_distortion: Option<LoopDistortion>,
     /// The sea of the scene as a model of time (brine-waves `Ocean`): what bakes, meshes and
     /// queries freeze at other instants.
     pub(crate) ocean: Ocean,
@@ -152,6 +156,12 @@ impl World {
     /// cascades).
     pub fn fitted_set(&self) -> &TrochoidSet {
         &self.set
+    }
+
+    /// How far a loop period (the FFT sea's `sea.fft.loop_period_s`, or the tile lattice's of a
+    /// bake) moved the sea's waves from their dispersion relation; `None` without a loop.
+    pub fn loop_distortion(&self) -> Option<&LoopDistortion> {
+        self.loop_distortion.as_ref()
     }
 
     /// The sea as a model of time (bakes and animations take frames from it).
@@ -636,6 +646,7 @@ impl World {
         };
         let world = Self {
             set,
+            loop_distortion: timeless.loop_distortion.clone(),
             ocean,
             sea,
             time: s.time_s,

@@ -2,7 +2,7 @@
 
 use brine_foam::{FoamMemory, FoamMemoryParams, KoepkeFoam};
 use brine_optics::SlopeVariance;
-use brine_waves::{DetailWaves, FftOcean, Ocean, TileLattice, TrochoidSet};
+use brine_waves::{DetailWaves, FftOcean, LoopDistortion, Ocean, TileLattice, TrochoidSet};
 use brine_whitecap::{
     FftBreaking, FftInstantJacobian, FftJacobianHistory, FftJacobianStatistics, JacobianStatistics, TrochoidBreaking,
     WhiteWaterModel, WhiteWaterOptions,
@@ -42,6 +42,8 @@ pub struct Timeless {
     pub(super) white_water: Option<CalibratedWhiteWater>,
     /// The FFT sea's Jacobian means at the memory's instants of the last frame.
     past_means: PastMeans,
+    /// How far the lattice's loop period moved the waves from their dispersion relation.
+    pub(super) loop_distortion: Option<LoopDistortion>,
 }
 
 /// White water calibrated once on Monahan's W, to be read at a frame's instant.
@@ -109,12 +111,16 @@ impl Timeless {
         let s = &key.sea;
         let wind_angle = s.wind_direction_deg.to_radians();
         // The FFT ocean has no trochoid set: its statistics come from the frame.
+        let mut loop_distortion = None;
         let set = if s.surface == SurfaceKind::Fft {
             TrochoidSet::default()
         } else {
             let fitted = sea::fit_sea(s)?;
             match lattice {
-                Some(l) => l.snap(&fitted)?,
+                Some(l) => {
+                    loop_distortion = l.loop_distortion(&fitted);
+                    l.snap(&fitted)?
+                }
                 None => fitted,
             }
         };
@@ -131,6 +137,9 @@ impl Timeless {
             Ocean::Fft { ocean } => Some(ocean.as_ref()),
             _ => None,
         };
+        if let Some(o) = fft_ocean {
+            loop_distortion = o.loop_distortion().cloned();
+        }
         let flat = match fft_ocean {
             Some(o) => !(o.total_expected_variance() > 0.0),
             None => set.is_empty(),
@@ -191,7 +200,7 @@ impl Timeless {
         // other: built side by side (each the same whatever the threads).
         let (detail, white_water) = rayon::join(detail, white_water);
         let (detail, white_water) = (detail?, white_water?);
-        Ok(Self { key, lattice: lattice.copied(), set, ocean, detail, white_water, past_means })
+        Ok(Self { key, lattice: lattice.copied(), set, ocean, detail, white_water, past_means, loop_distortion })
     }
 
     /// Whether these parts are those of `scene`: the same scene but for its instants.

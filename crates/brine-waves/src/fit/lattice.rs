@@ -5,6 +5,7 @@ use std::f64::consts::TAU;
 
 use glam::DVec3;
 
+use crate::looping::{LoopDistortion, looped_omega};
 use crate::{Trochoid, TrochoidSet, WaveError};
 
 /// A square tile of side `L` and, optionally, a loop period `T`, to which a wave set is snapped
@@ -67,7 +68,9 @@ impl TileLattice {
     /// `(2π/L)(m, n)` (`m, n` integers, not both 0), so that the sea repeats every `L` along x
     /// and z. The frequency follows the deep-water dispersion, `ω′ = ω √(k′/k)`; with a loop
     /// period `T` it is then rounded to a multiple `(2π/T) max(1, round(ω′T/2π))` so that every
-    /// wave repeats after `T`. Amplitudes, steepnesses and phases are kept.
+    /// wave repeats after `T` ([`looped_omega`]: a wave of period `P` moves by up to `P/(2T)`;
+    /// [`Self::loop_distortion`] says how far the set's waves move). Amplitudes, steepnesses and
+    /// phases are kept.
     ///
     /// The change in the spectrum: each wave vector moves by at most `(π/L)√2`, a relative change
     /// of wavenumber up to `√2 λ/(2L)` (0.7 % for a wave of `λ = L/100`) and of direction up to
@@ -78,21 +81,47 @@ impl TileLattice {
     /// # Errors
     /// [`WaveError::OutOfRange`] if a snapped wave cannot be built (it cannot for a valid set).
     pub fn snap(&self, set: &TrochoidSet) -> Result<TrochoidSet, WaveError> {
-        let dk = TAU / self.tile_m;
-        let mut waves = Vec::with_capacity(set.len());
+        let waves = set.waves().iter().map(|w| {
+            let (kx, kz, omega) = self.snapped_vector(w);
+            let omega = self.loop_period_s.map_or(omega, |period| looped_omega(omega, period));
+            Trochoid::new(w.amplitude(), kx.hypot(kz), kz.atan2(kx), omega, w.phase(), w.steepness())
+        });
+        Ok(TrochoidSet::new(waves.collect::<Result<Vec<_>, _>>()?))
+    }
+
+    /// How far the loop period moves the waves of `set` snapped to the tile ([`Self::snap`]) from
+    /// their dispersion relation, each wave weighted by its height variance `Aᵢ²/2`
+    /// (brine-waves [`LoopDistortion`]); `None` without a loop period.
+    ///
+    /// # Arguments
+    /// - `set`: the set before snapping (what [`Self::snap`] is given).
+    ///
+    /// # Returns
+    /// The distortion of the frequencies (and phase speeds) by the loop's rounding alone: the
+    /// tile's own move of each wave vector is not counted.
+    pub fn loop_distortion(&self, set: &TrochoidSet) -> Option<LoopDistortion> {
+        let period = self.loop_period_s?;
+        let mut d = LoopDistortion::default();
         for w in set.waves() {
-            let kv = w.wavenumber() * w.direction_vector();
-            let (mut m, n) = ((kv.x / dk).round(), (kv.y / dk).round());
-            if m == 0.0 && n == 0.0 {
-                // Longer than the tile: the shortest lattice vector nearest in direction.
-                m = if kv.x.abs() >= kv.y.abs() { kv.x.signum() } else { 0.0 };
-                let n1 = if m == 0.0 { kv.y.signum() } else { 0.0 };
-                waves.push(snapped(w, m * dk, n1 * dk, self.loop_period_s)?);
-                continue;
-            }
-            waves.push(snapped(w, m * dk, n * dk, self.loop_period_s)?);
+            let omega = self.snapped_vector(w).2;
+            d.add(omega, looped_omega(omega, period), 0.5 * w.amplitude() * w.amplitude());
         }
-        Ok(TrochoidSet::new(waves))
+        Some(d)
+    }
+
+    /// Wave `w` moved to the nearest point `(kx, kz)` of the lattice (rad m⁻¹), and its frequency
+    /// there by the deep-water dispersion, `ω′ = ω √(k′/k)` (rad s⁻¹), before any loop.
+    fn snapped_vector(&self, w: &Trochoid) -> (f64, f64, f64) {
+        let dk = TAU / self.tile_m;
+        let kv = w.wavenumber() * w.direction_vector();
+        let (mut m, mut n) = ((kv.x / dk).round(), (kv.y / dk).round());
+        if m == 0.0 && n == 0.0 {
+            // Longer than the tile: the shortest lattice vector nearest in direction.
+            m = if kv.x.abs() >= kv.y.abs() { kv.x.signum() } else { 0.0 };
+            n = if m == 0.0 { kv.y.signum() } else { 0.0 };
+        }
+        let (kx, kz) = (m * dk, n * dk);
+        (kx, kz, w.omega() * (kx.hypot(kz) / w.wavenumber()).sqrt())
     }
 }
 
@@ -169,22 +198,38 @@ pub fn grid_band(set: &TrochoidSet, spacing_m: f64) -> GridBand {
     GridBand { waves: TrochoidSet::new(waves), lost_slope_covariance: lost, faded }
 }
 
-/// Wave `w` moved to the wave vector `(kx, kz)` (see [`TileLattice::snap`]).
-fn snapped(w: &Trochoid, kx: f64, kz: f64, loop_period_s: Option<f64>) -> Result<Trochoid, WaveError> {
-    let k = kx.hypot(kz);
-    let mut omega = w.omega() * (k / w.wavenumber()).sqrt();
-    if let Some(period) = loop_period_s {
-        let base = TAU / period;
-        omega = base * (omega / base).round().max(1.0);
-    }
-    Trochoid::new(w.amplitude(), k, kz.atan2(kx), omega, w.phase(), w.steepness())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::Ocean;
     use crate::sea::tests::set;
+
+    /// The loop's distortion is that of the snapped set's frequencies, the loop against none:
+    /// the variance-weighted RMS of `ω_loop/ω − 1` recomputed from the two snaps.
+    #[test]
+    fn the_loop_distortion_is_the_snaps_frequency_change() {
+        let set = set(12.0);
+        let free = TileLattice::new(96.0, None).unwrap();
+        assert!(free.loop_distortion(&set).is_none());
+        for period in [2.0, 20.0, 600.0] {
+            let looped = TileLattice::new(96.0, Some(period)).unwrap();
+            let (a, b) = (free.snap(&set).unwrap(), looped.snap(&set).unwrap());
+            let (mut w, mut sq) = (0.0, 0.0);
+            for (x, y) in a.waves().iter().zip(b.waves()) {
+                let v = 0.5 * x.amplitude() * x.amplitude();
+                w += v;
+                sq += v * (y.omega() / x.omega() - 1.0).powi(2);
+            }
+            let d = looped.loop_distortion(&set).unwrap();
+            // The same sums in the same order.
+            assert!(
+                (d.rms() - (sq / w).sqrt()).abs() <= 1e-14,
+                "T = {period}: {} against {}",
+                d.rms(),
+                (sq / w).sqrt()
+            );
+        }
+    }
 
     /// A snapped set repeats over its tile (and its loop), to rounding.
     #[test]

@@ -15,6 +15,7 @@ use rustfft::{Fft, FftPlanner};
 use crate::fft::blend::TileBlend;
 use crate::fft::options::FFT_CASCADE_CUT_INDEX;
 use crate::fft::spectrum::{Band, cell_energy, directional_spectrum};
+use crate::looping::{LoopDistortion, looped_omega};
 use crate::{Dispersion, FftFrame, FftOptions, Spectrum, Spreading, WaveError};
 
 mod kinematics;
@@ -182,6 +183,8 @@ pub struct FftOcean {
     options: FftOptions,
     cascades: Vec<CascadeSpectrum>,
     dispersion: Dispersion,
+    /// How far the loop period moved the modes' frequencies (with a loop period only).
+    loop_distortion: Option<LoopDistortion>,
 }
 
 /// Word position of the random pair of wave vector `(nₓ, n_z)`: one `ChaCha` block (16 words) per
@@ -220,6 +223,7 @@ impl FftOcean {
         let mut planner = FftPlanner::new();
         let fft = planner.plan_fft_inverse(n);
         let mut cascades = Vec::with_capacity(count);
+        let mut loop_distortion = LoopDistortion::default();
         for (c, &tile) in options.tile_sizes.iter().enumerate() {
             let dk = TAU / tile;
             let lo = if c == 0 { 0.5 * dk } else { FFT_CASCADE_CUT_INDEX * dk };
@@ -255,6 +259,7 @@ impl FftOcean {
             rng.set_stream(c as u64);
             let mut modes = Vec::new();
             let (mut variance, mut cov) = (0.0, [0.0; 3]);
+            let mut distortion = LoopDistortion::default();
             let amplitude = |rng: &mut ChaCha8Rng, nx: i64, nz: i64| {
                 let e = at(nx, nz);
                 if e > 0.0 {
@@ -275,8 +280,10 @@ impl FftOcean {
                     let k = (kx * kx + kz * kz).sqrt();
                     let omega = match options.loop_period {
                         Some(t) => {
-                            let base = TAU / t;
-                            base * libm::round(dispersion.omega(k) / base).max(1.0)
+                            let free = dispersion.omega(k);
+                            let looped = looped_omega(free, t);
+                            distortion.add(free, looped, e);
+                            looped
                         }
                         None => dispersion.omega(k),
                     };
@@ -295,6 +302,7 @@ impl FftOcean {
                     });
                 }
             }
+            loop_distortion.merge(&distortion);
             let k_longest = if c == 0 { dk } else { lo };
             cascades.push(CascadeSpectrum {
                 tile,
@@ -312,7 +320,14 @@ impl FftOcean {
             let k_hi = cascades.last().map_or(k_lo, |c| c.band.hi);
             return Err(WaveError::EmptyBand { omega_min: dispersion.omega(k_lo), omega_max: dispersion.omega(k_hi) });
         }
-        Ok(Self { options: options.clone(), cascades, dispersion })
+        let loop_distortion = options.loop_period.map(|_| loop_distortion);
+        Ok(Self { options: options.clone(), cascades, dispersion, loop_distortion })
+    }
+
+    /// How far the loop period ([`FftOptions::loop_period`]) moved the modes from their
+    /// dispersion relation, each weighted by its height variance (`None` without a loop).
+    pub fn loop_distortion(&self) -> Option<&LoopDistortion> {
+        self.loop_distortion.as_ref()
     }
 
     /// The options the ocean was built with.

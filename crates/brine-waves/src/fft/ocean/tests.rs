@@ -134,6 +134,30 @@ fn looping_quantises_every_frequency() {
     }
 }
 
+/// The loop's distortion counts the modes of every cascade: small for a loop far longer than the
+/// sea's periods, most of the variance moved for one shorter than its peak period, and the
+/// suggested period keeps at most 5 % of the variance moved by more than 5 %; without a loop
+/// there is none.
+#[test]
+fn the_loop_distortion_counts_every_mode() {
+    assert!(small_ocean(64, None).loop_distortion().is_none());
+    // Elfouhaily's fully developed sea at 8 m/s: a peak period of about 5 s.
+    let long = small_ocean(64, Some(2000.0));
+    let d = long.loop_distortion().expect("a loop");
+    // Every mode with a period under 400 s moves by at most P/(2T) ≤ 0.1; the tile's longest
+    // wave (300 m: 13.9 s) by 0.35 %.
+    assert!(d.rms() < 0.0035 && d.share_moved() == 0.0, "rms {}", d.rms());
+    let short = small_ocean(64, Some(2.0));
+    let d = short.loop_distortion().expect("a loop");
+    assert!(d.rms() > 0.5 && d.share_moved() > 0.95, "rms {}, moved {}", d.rms(), d.share_moved());
+    // The suggestion keeps 95 % of the variance within 5 %: ten times a period near the peak's.
+    let p = d.suggested_period_s();
+    assert!((40.0..200.0).contains(&p), "{p}");
+    let again = small_ocean(64, Some(p));
+    let moved = again.loop_distortion().expect("a loop").share_moved();
+    assert!(moved <= 0.05 + 1e-12, "{moved}");
+}
+
 /// The shifted Jacobian fields hold, at grid point `p`, the direct trig sums at `p + shift`
 /// (shifts of a fraction of a cell and of many tiles, so the reduction modulo the tile is used),
 /// and a zero shift is the unshifted synthesis bit for bit.
