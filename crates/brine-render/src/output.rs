@@ -108,6 +108,28 @@ fn write_with_aovs(
     }
 }
 
+/// Encodes 8-bit sRGB pixels (`RGB` rows, top to bottom) as a PNG tagged sRGB: the `sRGB` chunk
+/// (perceptual intent) and, for readers that know only those, the `gAMA` and `cHRM` values the PNG
+/// specification gives for sRGB (§11.3.2.5), so that colour-managed viewers show the colours the
+/// renderer encoded.
+fn encode_srgb_png(w: impl Write, width: u32, height: u32, rgb8: &[u8]) -> Result<(), png::EncodingError> {
+    let mut encoder = png::Encoder::new(w, width, height);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
+    // 1/2.2 scaled by 10⁵, and the D65 white and Rec. 709 primaries.
+    encoder.set_source_gamma(png::ScaledFloat::from_scaled(45_455));
+    encoder.set_source_chromaticities(png::SourceChromaticities::new(
+        (0.3127, 0.3290),
+        (0.64, 0.33),
+        (0.30, 0.60),
+        (0.15, 0.06),
+    ));
+    let mut writer = encoder.write_header()?;
+    writer.write_image_data(rgb8)?;
+    writer.finish()
+}
+
 /// Encodes an image into `w`.
 fn encode_image(
     w: &mut BufWriter<&mut std::fs::File>,
@@ -125,9 +147,7 @@ fn encode_image(
             for p in pixels {
                 bytes.extend_from_slice(&to_srgb8(*p, scale));
             }
-            image::codecs::png::PngEncoder::new(w)
-                .write_image(&bytes, width, height, image::ExtendedColorType::Rgb8)
-                .map_err(|e| e.to_string())
+            encode_srgb_png(w, width, height, &bytes).map_err(|e| e.to_string())
         }
         OutputFormat::Exr => {
             let f32s = |f: &dyn Fn(usize) -> f32| (0..pixels.len()).map(f).collect::<Vec<f32>>();
@@ -210,8 +230,6 @@ pub fn write_atomic(
     tmp.persist(path).map_err(|e| io(e.error))?;
     Ok(())
 }
-
-use image::ImageEncoder as _;
 
 /// Outputs being written: on a signal, their temporaries are removed
 /// ([`remove_temporaries_on_signal`]).
@@ -338,6 +356,40 @@ mod tests {
         let e = OutputFormat::from_path(Path::new("a.jpg")).unwrap_err();
         assert!(e.contains(".jpg"), "{e}");
         assert_eq!(OutputFormat::from_path(Path::new("A.PNG")), Ok(OutputFormat::Png));
+    }
+
+    /// A PNG is tagged sRGB (with the specification's gAMA and cHRM for older readers) and holds
+    /// the pixels `to_srgb8` encoded.
+    #[test]
+    fn png_images_are_tagged_srgb() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("x.png");
+        let pixels = [DVec3::new(0.02, 0.2, 0.9), DVec3::ZERO, DVec3::ONE, DVec3::splat(0.5)];
+        write_image(&path, 2, 2, &pixels, 0.0).unwrap();
+        let reader =
+            png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&path).unwrap())).read_info().unwrap();
+        assert_eq!(reader.info().srgb, Some(png::SrgbRenderingIntent::Perceptual));
+        // The chunks as written (a decoder reads gAMA and cHRM only where sRGB is missing).
+        let bytes = std::fs::read(&path).unwrap();
+        let mut chunks = Vec::new();
+        let mut at = 8;
+        while at + 8 <= bytes.len() {
+            let n = u32::from_be_bytes(bytes[at..at + 4].try_into().unwrap()) as usize;
+            chunks.push((
+                String::from_utf8_lossy(&bytes[at + 4..at + 8]).into_owned(),
+                bytes[at + 8..at + 8 + n].to_vec(),
+            ));
+            at += 12 + n;
+        }
+        let chunk = |name: &str| chunks.iter().find(|(n, _)| n == name).map(|(_, d)| d.clone());
+        assert_eq!(chunk("gAMA"), Some(45_455u32.to_be_bytes().to_vec()));
+        let chrm = chunk("cHRM").expect("cHRM");
+        assert_eq!(chrm[..8], [31_270u32.to_be_bytes(), 32_900u32.to_be_bytes()].concat());
+        let decoded = image::open(&path).unwrap().to_rgb8();
+        let scale = exposure_scale(0.0);
+        for (p, q) in pixels.iter().zip(decoded.pixels()) {
+            assert_eq!(to_srgb8(*p, scale), q.0);
+        }
     }
 
     #[test]
