@@ -270,7 +270,7 @@ pub const KEYS: &[KeySpec] = &[
         Kind::Enum { values: &["trochoids", "gerstner", "sine", "fft"], ignore_case: false },
         "—",
         "`\"trochoids\"`",
-        "surface traced (see renderer.md); `fft` is Tessendorf's inverse-FFT sea of the same spectrum (see `[sea.fft]`); `gerstner` renders 8–10 times slower than `trochoids` (its certified steps are first-order; docs/benchmarks.md)",
+        "surface traced (see renderer.md); `fft` is Tessendorf's inverse-FFT sea of the same spectrum (see `[sea.fft]`); `gerstner` renders 6–7 times slower than `trochoids`, more with the camera among the crests (its certified steps are first-order; docs/benchmarks.md)",
     ),
     k(
         "sea",

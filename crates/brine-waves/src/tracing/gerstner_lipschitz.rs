@@ -83,13 +83,15 @@ struct FadedGerstnerRay<'f, 'a> {
     fade: Vec<f64>,
     weights: Vec<f64>,
     scratch: crate::FadedWaves,
+    /// The inversion solved at the last sample: the next solve's start.
+    last: Option<crate::surfaces::gerstner::WarmStart>,
 }
 
 impl<'f, 'a> FadedGerstnerRay<'f, 'a> {
     fn new(field: &'f GerstnerField<'a>, ray: &brine_trace::Ray, t_exit: f64, footprint_angle: f64) -> Self {
         let fade = field.fade_distances(ray.direction(), footprint_angle);
         let weights = vec![1.0; fade.len()];
-        Self { field, ray: *ray, t_exit, fade, weights, scratch: crate::FadedWaves::default() }
+        Self { field, ray: *ray, t_exit, fade, weights, scratch: crate::FadedWaves::default(), last: None }
     }
 }
 
@@ -128,7 +130,9 @@ impl brine_trace::RayTiers for FadedGerstnerRay<'_, '_> {
             alive += u32::from(*w > 0.0);
         }
         let p = self.ray.at(t);
-        let h = self.field.faded_height_lanes(p.x, p.z, &self.weights, &mut self.scratch);
+        let (h, solved) =
+            self.field.faded_height_lanes_from(p.x, p.z, &self.weights, &mut self.scratch, self.last.as_ref());
+        self.last = Some(solved);
         brine_trace::TierSample { value: -h, slope: f64::NAN, terms: alive }
     }
 }

@@ -6,6 +6,26 @@ use glam::{DVec2, DVec3};
 use super::{GerstnerField, RestState};
 use crate::tracing::gerstner_lanes::{self, LaneWaves};
 
+/// A solved inversion at a point: where the next one nearby may start
+/// ([`GerstnerField::faded_height_lanes_from`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct WarmStart {
+    /// The horizontal position `x′` (m).
+    at: DVec2,
+    /// Its rest position `u′` (m).
+    rest: DVec2,
+    /// The Jacobian `J′` of `u ↦ u + D(u)` there, `(xx, xz, zz)`.
+    jacobian: [f64; 3],
+}
+
+impl WarmStart {
+    /// `J′⁻¹ v` (`J′` is positive definite: `λ_min ≥ 1 − Σ Qᵢ > 0`).
+    fn inverse_jacobian(&self, v: DVec2) -> DVec2 {
+        let [xx, xz, zz] = self.jacobian;
+        DVec2::new(zz * v.x - xz * v.y, xx * v.y - xz * v.x) / (xx * zz - xz * xz)
+    }
+}
+
 /// Working arrays of [`GerstnerField::faded_height_lanes`]: the waves still present, weighted,
 /// padded to a multiple of four for the SIMD passes.
 #[derive(Debug, Clone, Default)]
@@ -102,6 +122,25 @@ impl GerstnerField<'_> {
     /// # References
     /// docs/equations.md §1(b); Bruneton, Neyret & Holzschuch 2010 §4.
     pub fn faded_height_lanes(&self, x: f64, z: f64, weights: &[f64], scratch: &mut FadedWaves) -> f64 {
+        self.faded_height_lanes_from(x, z, weights, scratch, None).0
+    }
+
+    /// [`GerstnerField::faded_height_lanes`] whose Newton solve starts from a solution at a
+    /// nearby point (`warm`, such as the previous sample along a ray) instead of from
+    /// `u₀ = x − D(x)`: one Newton step from it, `u₀ = u′ + J′⁻¹(x − x′)`, costs no pass over the
+    /// waves and starts within `O(|x − x′|²)`. The inversion is unique (`Σ Qᵢ < 1`), so the start
+    /// changes only the rounding of the result within the solve's tolerance.
+    ///
+    /// # Returns
+    /// `(h, solution)`: the height (m) and the solution at `(x, z)`, the next solve's start.
+    pub(crate) fn faded_height_lanes_from(
+        &self,
+        x: f64,
+        z: f64,
+        weights: &[f64],
+        scratch: &mut FadedWaves,
+        warm: Option<&WarmStart>,
+    ) -> (f64, WarmStart) {
         let s = self.surface;
         scratch.clear();
         for (i, &w) in weights.iter().enumerate().take(s.len()) {
@@ -117,7 +156,14 @@ impl GerstnerField<'_> {
             amplitude: &scratch.amplitude,
             q_over_k2: &scratch.q_over_k2,
         };
-        self.invert(x, z, |u| gerstner_lanes::displacement(lanes, u), |u| gerstner_lanes::state(lanes, u)).1.height
+        let target = DVec2::new(x, z);
+        let first = |u| match warm {
+            Some(w) => target - (w.rest + w.inverse_jacobian(target - w.at)),
+            None => gerstner_lanes::displacement(lanes, u),
+        };
+        let (inversion, state) = self.invert(x, z, first, |u| gerstner_lanes::state(lanes, u));
+        let (xx, xz, zz) = state.jacobian();
+        (state.height, WarmStart { at: target, rest: inversion.rest, jacobian: [xx, xz, zz] })
     }
 
     /// Height (m) of the faded Gerstner sum as a primary ray `t` metres along the unit direction

@@ -10,6 +10,7 @@ use crate::{TrochoidSet, WaveSurface};
 mod fading;
 
 pub use fading::FadedWaves;
+pub(crate) use fading::WarmStart;
 
 /// Absolute part of the inversion tolerance (m): the residual `|u + D(u) − x|` the Newton solve
 /// of [`GerstnerField::solve`] reaches. The relative part `10⁻¹⁴ (|x| + Σ Aᵢ)` covers rounding
@@ -659,6 +660,34 @@ mod tests {
                     assert!(inv.residual <= tau && inv.iterations < GERSTNER_MAX_ITERATIONS);
                 }
             }
+        }
+    }
+
+    /// A solve started from the solution at another point (the tracer's previous sample) finds
+    /// the same rest position as one started from `x − D(x)`: the inversion is unique, so the
+    /// heights differ only within the bound of `lanes_agree_with_the_scalar_passes_within_the_derived_bound`
+    /// (both solves stop within `τ` of it), for nearby and far starts and faded weights.
+    #[test]
+    fn warm_started_solves_find_the_same_surface() {
+        use crate::{CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, fit_trochoids};
+        let pm = PiersonMoskowitz::from_u10(12.0).unwrap();
+        let d = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
+        let o = FitOptions { choppiness: 4.0, ..FitOptions::default() };
+        let set = fit_trochoids(&pm, &d, 50, 17, &o).unwrap();
+        let g = GerstnerSurface::new(&set).unwrap();
+        let f = g.at_time(3.7);
+        let weights: Vec<f64> = (0..g.len()).map(|i| if i % 3 == 0 { 0.4 } else { 1.0 }).collect();
+        let mut scratch = FadedWaves::default();
+        let mut warm = None;
+        for j in 0..400 {
+            // Steps of 0.9 m, with a jump of 60 m every 50 points.
+            let (x, z) = (j as f64 * 0.9 - 150.0 + 60.0 * (j / 50) as f64, (j as f64 * 0.05).sin() * 20.0);
+            let tau = GERSTNER_TOLERANCE_M + GERSTNER_TOLERANCE_REL * (DVec2::new(x, z).length() + g.total_amplitude());
+            let bound = 2.0 * tau * g.slope_bound() + SUM_ORDER_REL * g.total_amplitude();
+            let cold = f.faded_height_lanes(x, z, &weights, &mut scratch);
+            let (h, solved) = f.faded_height_lanes_from(x, z, &weights, &mut scratch, warm.as_ref());
+            assert!((h - cold).abs() <= bound, "({x}, {z}): {h} vs {cold}");
+            warm = Some(solved);
         }
     }
 
