@@ -119,12 +119,13 @@ fn encode_srgb_png(w: impl Write, width: u32, height: u32, rgb8: &[u8]) -> Resul
     encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
     // 1/2.2 scaled by 10⁵, and the D65 white and Rec. 709 primaries.
     encoder.set_source_gamma(png::ScaledFloat::from_scaled(45_455));
-    encoder.set_source_chromaticities(png::SourceChromaticities::new(
-        (0.3127, 0.3290),
-        (0.64, 0.33),
-        (0.30, 0.60),
-        (0.15, 0.06),
-    ));
+    let xy = |x: u32, y: u32| (png::ScaledFloat::from_scaled(x), png::ScaledFloat::from_scaled(y));
+    encoder.set_source_chromaticities(png::SourceChromaticities {
+        white: xy(31_270, 32_900),
+        red: xy(64_000, 33_000),
+        green: xy(30_000, 60_000),
+        blue: xy(15_000, 6_000),
+    });
     let mut writer = encoder.write_header()?;
     writer.write_image_data(rgb8)?;
     writer.finish()

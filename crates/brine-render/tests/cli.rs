@@ -263,6 +263,14 @@ fn a_loop_that_moves_the_waves_is_warned_of() {
     let out = brine(&["render", "fft.toml", "-q", "-o", "fft.png"], dir.path());
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success() && err.contains("warning: sea.fft.loop_period_s = 4 s moves"), "{err}");
+    // An FFT sea baked without `--loop-s` loops at its own period, said as such.
+    let out = brine(&["bake", "fft.toml", "-q", "-o", "fft", "--size", "16"], dir.path());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success() && err.contains("warning: sea.fft.loop_period_s = 4 s moves"), "{err}");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("fft/bake.json")).unwrap()).unwrap();
+    assert_eq!(json["loop_period_s"].as_f64(), Some(4.0), "{json}");
+    assert!(json["loop_distortion"]["variance_share_moved_over_5_percent"].as_f64().unwrap() > 0.05, "{json}");
 }
 
 /// `brine mesh` says when its grid aliases waves and, with `--band-limit`, what it left out; the

@@ -33,7 +33,8 @@ pub const LOOP_TOLERANCE: f64 = 0.05;
 
 /// How far a loop period moves a sea's waves from their dispersion relation: the relative change
 /// `εᵢ = ω′ᵢ/ωᵢ − 1` of each wave's frequency (and phase speed) by [`looped_omega`], weighted by
-/// the height variance the wave holds.
+/// the height variance the wave holds (its spectral share: `Aᵢ²/2` of a fitted wave, a mode's
+/// cell energy for the FFT sea).
 ///
 /// A loop of period `T` keeps a wave of period `P` within `P/(2T)`: ten times the longest period
 /// that holds much of the sea's height keeps it within 5 % ([`Self::suggested_period_s`]).
@@ -55,7 +56,8 @@ pub struct LoopDistortion {
 const PERIOD_BINS_FROM_S: f64 = 1e-3;
 /// The ratio of two bins' periods: the suggested period is rounded up by at most 2 %.
 const PERIOD_BIN_RATIO: f64 = 1.02;
-/// Bins from 1 ms to beyond 10⁵ s (`1.02⁹³⁰ ≈ 10⁸`).
+/// Bins from 1 ms to about 10⁵ s (`1.02⁹²⁹ ≈ 10⁸`); a wave of a 10⁶ m tile has a period of
+/// 800 s, so the last bin, which would also hold longer periods, holds none.
 const PERIOD_BIN_COUNT: usize = 930;
 
 impl Default for LoopDistortion {
@@ -116,7 +118,8 @@ impl LoopDistortion {
                 return PERIOD_BINS_FROM_S * PERIOD_BIN_RATIO.powi(i as i32) / (2.0 * LOOP_TOLERANCE);
             }
         }
-        PERIOD_BINS_FROM_S * PERIOD_BIN_RATIO.powi(PERIOD_BIN_COUNT as i32) / (2.0 * LOOP_TOLERANCE)
+        // Not reached (the bins hold the whole weight, to rounding): the last bin's edge.
+        PERIOD_BINS_FROM_S * PERIOD_BIN_RATIO.powi(PERIOD_BIN_COUNT as i32 - 1) / (2.0 * LOOP_TOLERANCE)
     }
 }
 

@@ -458,10 +458,15 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
         };
         Ok((crate::export::bake_frame(world, t, &options), world.sea.height_bounds()))
     };
+    // The loop the maps repeat after: `--loop-s`, else the FFT sea's own `loop_period_s`.
+    let (loop_period, loop_setting) = match (args.loop_s, fft.then_some(scene.sea.fft.loop_period_s).flatten()) {
+        (Some(t), _) => (Some(t), "--loop-s"),
+        (None, own) => (own, "sea.fft.loop_period_s"),
+    };
     let warn_once = std::cell::Cell::new(false);
     let warn = || {
-        if let (Some(Some(d)), Some(period), false) = (distortion.get(), args.loop_s, warn_once.get()) {
-            if let Some(w) = super::loop_warning(d, period, "--loop-s") {
+        if let (Some(Some(d)), Some(period), false) = (distortion.get(), loop_period, warn_once.get()) {
+            if let Some(w) = super::loop_warning(d, period, loop_setting) {
                 eprintln!("{w}");
             }
             warn_once.set(true);
@@ -515,7 +520,7 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
         "tile_m": tile_m,
         "size": args.size,
         "texel_m": tile_m / args.size as f64,
-        "loop_period_s": args.loop_s,
+        "loop_period_s": loop_period,
         "loop_distortion": distortion.get().cloned().flatten().map(|d| serde_json::json!({
             "frequency_change_rms": d.rms(),
             "variance_share_moved_over_5_percent": d.share_moved(),

@@ -270,7 +270,7 @@ pub const KEYS: &[KeySpec] = &[
         Kind::Enum { values: &["trochoids", "gerstner", "sine", "fft"], ignore_case: false },
         "—",
         "`\"trochoids\"`",
-        "surface traced (see renderer.md); `fft` is Tessendorf's inverse-FFT sea of the same spectrum (see `[sea.fft]`); `gerstner` renders 6–7 times slower than `trochoids`, more with the camera among the crests (its certified steps are first-order; docs/benchmarks.md)",
+        "surface traced (see renderer.md); `fft` is Tessendorf's inverse-FFT sea of the same spectrum (see `[sea.fft]`); `gerstner` renders about 6 times slower than `trochoids` (5.7 times in the default view, 6.8 at 14 m/s), more with the camera among the crests (its certified steps are first-order; docs/benchmarks.md)",
     ),
     k(
         "sea",
@@ -355,7 +355,7 @@ pub const KEYS: &[KeySpec] = &[
         left_open(0.0, 1e6),
         "s",
         "—",
-        "when given, every frequency is rounded to a multiple of 2π/T: the animation loops exactly after T; a wave of period P then runs up to P/(2T) off its speed (warned of when that moves much of the sea: about 100 s keeps a 10 m/s sea within 5 %)",
+        "when given, every frequency is rounded to a multiple of 2π/T: the animation loops exactly after T; a wave of period P then runs up to P/(2T) off its speed, and one longer than 2T turns once per loop (warned of when that moves much of the sea: about 100 s keeps a 10 m/s sea within 5 %)",
     ),
     k(
         "sea.fft",

@@ -90,7 +90,8 @@ impl TileLattice {
     }
 
     /// How far the loop period moves the waves of `set` snapped to the tile ([`Self::snap`]) from
-    /// their dispersion relation, each wave weighted by its height variance `Aᵢ²/2`
+    /// their dispersion relation, each wave weighted by its linear height variance `Aᵢ²/2` (the spectrum's share it was fitted
+    /// to)
     /// (brine-waves [`LoopDistortion`]); `None` without a loop period.
     ///
     /// # Arguments

@@ -148,7 +148,8 @@ impl FftRestFields {
 ///
 /// **Looping.** With a loop period `T`, `ω` is replaced by `(2π/T) max(1, round(ωT/2π))`: every
 /// wave then repeats after `T` (and none is frozen), at the cost of a relative frequency error up
-/// to `π/(ωT)`.
+/// to `P/(2T)` for a wave of period `P ≤ 2T`, and of `P/T − 1` beyond, where the wave is sped up
+/// to one turn per loop ([`crate::looped_omega`]; [`FftOcean::loop_distortion`] measures it).
 ///
 /// **Cost.** Construction integrates `Ψ` over every cell of every band (one to 64 evaluations
 /// per cell). Synthesis ([`FftOcean::rest_fields`], [`FftOcean::at_time`]) costs one `sincos` per

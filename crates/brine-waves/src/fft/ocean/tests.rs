@@ -141,7 +141,7 @@ fn looping_quantises_every_frequency() {
 #[test]
 fn the_loop_distortion_counts_every_mode() {
     assert!(small_ocean(64, None).loop_distortion().is_none());
-    // Elfouhaily's fully developed sea at 8 m/s: a peak period of about 5 s.
+    // Elfouhaily's fully developed sea at 8 m/s: ω_p = 0.84 g/U ≈ 1.03 rad/s, a period of 6.1 s.
     let long = small_ocean(64, Some(2000.0));
     let d = long.loop_distortion().expect("a loop");
     // Every mode with a period under 400 s moves by at most P/(2T) ≤ 0.1; the tile's longest

@@ -15,14 +15,26 @@ pub(crate) struct WarmStart {
     /// Its rest position `u′` (m).
     rest: DVec2,
     /// The Jacobian `J′` of `u ↦ u + D(u)` there, `(xx, xz, zz)`.
-    jacobian: [f64; 3],
+    jacobian: (f64, f64, f64),
+    /// Newton iterations the solve took (after its start), for the tests.
+    #[cfg(test)]
+    pub(crate) iterations: usize,
 }
 
 impl WarmStart {
-    /// `J′⁻¹ v` (`J′` is positive definite: `λ_min ≥ 1 − Σ Qᵢ > 0`).
-    fn inverse_jacobian(&self, v: DVec2) -> DVec2 {
-        let [xx, xz, zz] = self.jacobian;
-        DVec2::new(zz * v.x - xz * v.y, xx * v.y - xz * v.x) / (xx * zz - xz * xz)
+    /// The start of a solve at `target` (m): one Newton step from this solution,
+    /// `u′ + J′⁻¹(x − x′)` (m).
+    pub(crate) fn start(&self, target: DVec2) -> DVec2 {
+        self.rest + self.solve(target - self.at)
+    }
+}
+
+impl RestState for WarmStart {
+    fn displacement(&self) -> DVec2 {
+        self.at - self.rest
+    }
+    fn jacobian(&self) -> (f64, f64, f64) {
+        self.jacobian
     }
 }
 
@@ -128,8 +140,14 @@ impl GerstnerField<'_> {
     /// [`GerstnerField::faded_height_lanes`] whose Newton solve starts from a solution at a
     /// nearby point (`warm`, such as the previous sample along a ray) instead of from
     /// `u₀ = x − D(x)`: one Newton step from it, `u₀ = u′ + J′⁻¹(x − x′)`, costs no pass over the
-    /// waves and starts within `O(|x − x′|²)`. The inversion is unique (`Σ Qᵢ < 1`), so the start
-    /// changes only the rounding of the result within the solve's tolerance.
+    /// waves and starts within `O(|x − x′|²)` of the solution (plus the change of the weights
+    /// between the two points). A far `x′` makes a poor start (`J′⁻¹`, up to `1/(1 − ΣQ)`, may
+    /// magnify the jump), but the damped solve converges from any start: the map is one-to-one,
+    /// the gradient of a strictly convex potential. Measured along primary rays, taking the warm
+    /// start only within a radian of the shortest wave present, or within `Σ wᵢQᵢ/kᵢ` (how far
+    /// the waves move a point), was slower than taking it always. The inversion is unique
+    /// (`Σ Qᵢ < 1`), so the start changes only the rounding of the result within the solve's
+    /// tolerance.
     ///
     /// # Returns
     /// `(h, solution)`: the height (m) and the solution at `(x, z)`, the next solve's start.
@@ -158,12 +176,18 @@ impl GerstnerField<'_> {
         };
         let target = DVec2::new(x, z);
         let first = |u| match warm {
-            Some(w) => target - (w.rest + w.inverse_jacobian(target - w.at)),
+            Some(w) => target - w.start(target),
             None => gerstner_lanes::displacement(lanes, u),
         };
         let (inversion, state) = self.invert(x, z, first, |u| gerstner_lanes::state(lanes, u));
-        let (xx, xz, zz) = state.jacobian();
-        (state.height, WarmStart { at: target, rest: inversion.rest, jacobian: [xx, xz, zz] })
+        let solved = WarmStart {
+            at: target,
+            rest: inversion.rest,
+            jacobian: state.jacobian(),
+            #[cfg(test)]
+            iterations: inversion.iterations,
+        };
+        (state.height, solved)
     }
 
     /// Height (m) of the faded Gerstner sum as a primary ray `t` metres along the unit direction
