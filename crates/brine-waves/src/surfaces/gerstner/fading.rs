@@ -144,8 +144,9 @@ impl GerstnerField<'_> {
     /// between the two points). A far `x′` makes a poor start (`J′⁻¹`, up to `1/(1 − ΣQ)`, may
     /// magnify the jump), but the damped solve converges from any start: the map is one-to-one,
     /// the gradient of a strictly convex potential. Measured along primary rays, taking the warm
-    /// start only within a radian of the shortest wave present, or within `Σ wᵢQᵢ/kᵢ` (how far
-    /// the waves move a point), was slower than taking it always. The inversion is unique
+    /// start only within a radian of the shortest wave present was slower than taking it always,
+    /// and only within `Σ wᵢQᵢ/kᵢ` (how far the waves move a point) no faster (slower with the
+    /// camera among the crests). The inversion is unique
     /// (`Σ Qᵢ < 1`), so the start changes only the rounding of the result within the solve's
     /// tolerance.
     ///
