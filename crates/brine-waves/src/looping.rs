@@ -19,8 +19,8 @@ use std::f64::consts::TAU;
 /// `ω′` (rad s⁻¹), a whole multiple (at least 1) of `2π/T`.
 ///
 /// # References
-/// Tessendorf 2001, "Simulating Ocean Water", §4.3 (looping in time: `ω` quantised to multiples
-/// of `2π/T`).
+/// Tessendorf 2001, "Simulating Ocean Water", the dispersion relation's "repeat time" (§4.2:
+/// `ω` quantised to multiples of `ω₀ = 2π/T`).
 pub fn looped_omega(omega: f64, period_s: f64) -> f64 {
     debug_assert!(omega > 0.0 && period_s > 0.0, "ω = {omega}, T = {period_s}");
     let base = TAU / period_s;
