@@ -177,6 +177,12 @@ pub(super) fn water_column_radiance(world: &World, p: DVec3, t: DVec3, light: Di
     }
 }
 
+/// The least cosine between the view and a shading normal (dimensionless): a normal the view sees
+/// from behind, or more grazing, is tilted toward the viewer until it is seen at this cosine (a
+/// facet turned away stands for the grazing faces of the waves around it, which the pixel does
+/// see). `10⁻³`, 89.94° from the normal, where water's Fresnel factor is 0.994.
+pub(super) const MIN_SEEN_COSINE: f64 = 1e-3;
+
 /// A point of the sea seen by the camera: `p` (m), reached `t` metres along the unit view
 /// direction `d`, of upward unit normal `normal` (the drawn waves').
 #[derive(Debug, Clone, Copy)]
@@ -203,10 +209,10 @@ pub(super) fn shade_surface(
     // Grazing views can see a facet from behind; tilt its normal toward the viewer just enough.
     let mut n = normal;
     let cos_v = v.dot(n);
-    if cos_v < 1e-3 {
-        n = (n + (1e-3 - cos_v) * v).normalize();
+    if cos_v < MIN_SEEN_COSINE {
+        n = (n + (MIN_SEEN_COSINE - cos_v) * v).normalize();
     }
-    let cos_v = v.dot(n).max(1e-3);
+    let cos_v = v.dot(n).max(MIN_SEEN_COSINE);
     // Local wind frame: z along the normal, x downwind.
     let x = (world.wind - world.wind.dot(n) * n).normalize_or(n.any_orthonormal_vector());
     let y = n.cross(x);

@@ -27,6 +27,25 @@ fn detail_facets_keep_the_projected_area() {
     }
 }
 
+/// A facet the view sees from behind weighs as the shading shades it, seen at the least cosine
+/// `c₀`: small but not zero, so that a reference pixel whose every sample lands on such facets
+/// keeps their radiance (it was black), while beside the facets the view does see it counts for
+/// little.
+#[test]
+fn facets_turned_away_weigh_as_seen_at_grazing() {
+    let g = DVec3::Y;
+    let v = DVec3::new(0.0, 0.1, 1.0).normalize();
+    // Leaning away from the viewer by more than the view's elevation: seen from behind.
+    let away = DVec3::new(0.0, 1.0, -0.5).normalize();
+    assert!(v.dot(away) < 0.0);
+    let w = projected_area_weight(v, away, g);
+    assert!(w > 0.0, "{w}");
+    assert_eq!(w, MIN_SEEN_COSINE / (away.dot(g) * v.dot(g)));
+    // Against the facet leaning toward the viewer as much: under 1 %.
+    let toward = DVec3::new(0.0, 1.0, 0.5).normalize();
+    assert!(w / projected_area_weight(v, toward, g) < 0.01, "{w}");
+}
+
 /// Image coherence changes only where each primary ray starts tracing: a tile's hits are the
 /// hits of its rays traced one by one (the same first crossing, each refined to the trace
 /// tolerance), and its misses are theirs.
