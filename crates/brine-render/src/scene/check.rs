@@ -11,6 +11,21 @@ use super::keys::{self, KeySpec, Kind, SECTIONS};
 /// message.
 pub(super) type RawError = (Option<usize>, String);
 
+/// A TOML syntax error: where it is and what the parser says, with the key it points at when the
+/// parser names none (its "duplicate key" leaves the reader to find which).
+pub(super) fn syntax_error(text: &str, e: &toml::de::Error) -> RawError {
+    let message = e.message().trim();
+    let at = e.span();
+    let named = at.as_ref().and_then(|s| text.get(s.clone())).map(str::trim).filter(|k| !k.is_empty() && !k.contains('\n'));
+    let message = match named {
+        Some(key) if message == "duplicate key" => format!(
+            "duplicate key `{key}`: a key is set once in its table, and a table is opened once (by one `[header]` or by dotted keys, not both)"
+        ),
+        _ => message.to_owned(),
+    };
+    (at.map(|s| s.start), format!("invalid TOML: {message}"))
+}
+
 /// The parsed document, for finding the line of a key after the scene structs are checked.
 pub(super) struct Located<'a> {
     root: DeTable<'a>,
@@ -19,8 +34,7 @@ pub(super) struct Located<'a> {
 impl<'a> Located<'a> {
     /// Parses `text` (a UTF-8 byte-order mark already removed).
     pub(super) fn parse(text: &'a str) -> Result<Self, RawError> {
-        let doc = DeTable::parse(text)
-            .map_err(|e| (e.span().map(|s| s.start), format!("invalid TOML: {}", e.message().trim())))?;
+        let doc = DeTable::parse(text).map_err(|e| syntax_error(text, &e))?;
         Ok(Self { root: doc.into_inner() })
     }
 

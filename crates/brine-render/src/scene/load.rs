@@ -82,8 +82,10 @@ impl Scene {
         };
         let doc = check::Located::parse(text).map_err(|(at, m)| error(at, m))?;
         doc.check().map_err(|(at, m)| error(at, m))?;
-        let de = toml::de::Deserializer::parse(text)
-            .map_err(|e| error(e.span().map(|s| s.start), format!("invalid TOML: {}", e.message().trim())))?;
+        let de = toml::de::Deserializer::parse(text).map_err(|e| {
+            let (at, message) = check::syntax_error(text, &e);
+            error(at, message)
+        })?;
         let scene: Scene = serde_path_to_error::deserialize(de).map_err(|e| {
             let path = e.path().to_string();
             let inner = e.into_inner();

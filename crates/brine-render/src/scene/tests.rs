@@ -38,6 +38,20 @@ fn wrong_type_names_the_key_and_line() {
     assert!(e.to_string().starts_with("s.toml line 3: "), "{e}");
 }
 
+/// A key set twice, or a table opened twice, is named with its line.
+#[test]
+fn duplicate_keys_are_named() {
+    for (text, line, key) in [
+        ("[output]\naovs = true\npath = \"x.exr\"\naovs = false\n", 4, "`aovs`"),
+        ("[camera]\nwidth = 10\n\n[camera]\nheight = 10\n", 4, "`camera`"),
+        ("camera.width = 10\n[camera]\nheight = 3\n", 2, "`camera`"),
+    ] {
+        let e = parse(text).unwrap_err();
+        assert_eq!(e.line, Some(line), "{e}");
+        assert!(e.message.contains(&format!("duplicate key {key}")), "{e}");
+    }
+}
+
 #[test]
 fn unknown_key_is_an_error() {
     let e = Scene::from_toml_str("[sea]\nwind = 3.0\n", "s.toml").unwrap_err();
