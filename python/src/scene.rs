@@ -45,6 +45,17 @@ impl Scene {
     }
 }
 
+/// A Python `UserWarning` when the FFT sea's `sea.fft.loop_period_s` moves much of the sea off its
+/// dispersion relation: the warning `brine render` prints (brine-render
+/// [`brine_render::cli::loop_warning`]).
+fn warn_of_loop(py: Python<'_>, world: &World, scene: &brine_render::Scene) -> PyResult<()> {
+    let (Some(d), Some(period)) = (world.loop_distortion(), scene.sea.fft.loop_period_s) else { return Ok(()) };
+    let Some(message) = brine_render::cli::loop_warning(d, period, "sea.fft.loop_period_s") else { return Ok(()) };
+    let message = message.strip_prefix("warning: ").unwrap_or(&message);
+    let text = std::ffi::CString::new(message).map_err(|e| bad(e.to_string()))?;
+    PyErr::warn(py, &py.get_type::<pyo3::exceptions::PyUserWarning>(), &text, 1)
+}
+
 /// Rows of `n` values per pixel as an array of shape `(height, width, n)` (or `(height, width)`).
 fn image<'py>(py: Python<'py>, flat: Vec<f32>, h: usize, w: usize, n: usize) -> PyResult<Bound<'py, PyAny>> {
     let a = flat.into_pyarray(py);
@@ -130,6 +141,12 @@ impl Scene {
         let options = RenderOptions { threads, profile: false, reference };
         let failed = |e: brine_render::RenderError| pyo3::exceptions::PyRuntimeError::new_err(e.to_string());
         let frame = match frame {
+            // The scene's own world, built once and shared with queries and meshes.
+            None if !reference => {
+                let world = self.world(py)?;
+                warn_of_loop(py, world, &self.scene)?;
+                py.detach(|| brine_render::render_world(&self.scene, world, &options, &|| {})).map_err(failed)?
+            }
             None => py.detach(|| brine_render::render(&self.scene, &options, &|| {})).map_err(failed)?,
             Some(f) => {
                 let s = brine_render::cli::render::scene_at_frame(&self.scene, f, (0, f.saturating_add(1)), None)
@@ -141,12 +158,10 @@ impl Scene {
                         self.timeless.get_or_init(|| built)
                     }
                 };
-                py.detach(|| {
-                    let mut world = World::at_instant(&s, timeless)?;
-                    world.set_reference(reference);
-                    brine_render::render_world(&s, &world, &options, &|| {})
-                })
-                .map_err(failed)?
+                let mut world = py.detach(|| World::at_instant(&s, timeless)).map_err(scene_err)?;
+                world.set_reference(reference);
+                warn_of_loop(py, &world, &self.scene)?;
+                py.detach(|| brine_render::render_world(&s, &world, &options, &|| {})).map_err(failed)?
             }
         };
         let (w, h) = (frame.width as usize, frame.height as usize);

@@ -178,3 +178,20 @@ def test_bad_scenes_and_arguments_raise():
         brine.Scene.from_dict(SMALL).mesh(size_m=4.0, t=1e17)
     with pytest.raises(brine.BrineError, match=r"pass camera=True"):
         brine.Scene.from_dict(SMALL).mesh(pixels=4.0)
+
+
+def test_a_loop_that_moves_the_waves_is_warned_of():
+    looped = {"camera": {"width": 16, "height": 9}, "sea": {"surface": "fft", "wind_speed_m_s": 10.0, "fft": {"loop_period_s": 10.0}}}
+    s = brine.Scene.from_dict(looped)
+    with pytest.warns(UserWarning, match=r"sea\.fft\.loop_period_s = 10 s moves \d+ % of the sea's height variance"):
+        s.render()
+    with pytest.warns(UserWarning, match="loop_period_s"):
+        s.render(frame=1)
+    # A loop long enough for the sea, and no loop at all, say nothing.
+    import warnings
+
+    for fft in ({"loop_period_s": 2000.0}, {}):
+        quiet = brine.Scene.from_dict({**looped, "sea": {**looped["sea"], "fft": fft}})
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            quiet.render()

@@ -57,7 +57,7 @@ pub(crate) fn num(x: f64) -> String {
 /// than 5 % of its height variance in waves whose frequency (and phase speed) the loop moved by
 /// more than 5 % (brine-waves [`brine_waves::LoopDistortion`]); `None` below that. `setting` names
 /// where the period came from (`--loop-s`, `sea.fft.loop_period_s`).
-pub(crate) fn loop_warning(d: &brine_waves::LoopDistortion, period_s: f64, setting: &str) -> Option<String> {
+pub fn loop_warning(d: &brine_waves::LoopDistortion, period_s: f64, setting: &str) -> Option<String> {
     let tolerance = brine_waves::LOOP_TOLERANCE;
     (d.share_moved() > tolerance).then(|| {
         format!(
