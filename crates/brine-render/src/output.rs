@@ -112,7 +112,7 @@ fn write_with_aovs(
 /// (perceptual intent) and, for readers that know only those, the `gAMA` and `cHRM` values the PNG
 /// specification gives for sRGB (§11.3.2.5), so that colour-managed viewers show the colours the
 /// renderer encoded.
-fn encode_srgb_png(w: impl Write, width: u32, height: u32, rgb8: &[u8]) -> Result<(), png::EncodingError> {
+pub(crate) fn encode_srgb_png(w: impl Write, width: u32, height: u32, rgb8: &[u8]) -> Result<(), png::EncodingError> {
     let mut encoder = png::Encoder::new(w, width, height);
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);

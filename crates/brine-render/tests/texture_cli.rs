@@ -142,4 +142,7 @@ fn same_seed_same_bytes_and_another_seed_differs() {
         assert_eq!(read(&format!("a_{f}.png")), read(&format!("b_{f}.png")), "frame {f} differs for the same seed");
     }
     assert_ne!(read("a_6.png"), read("c_6.png"), "another seed gives the same frame");
+    // Frames are colour images of photos: tagged sRGB, as the renderer's.
+    let frame = png::Decoder::new(std::io::Cursor::new(read("a_5.png"))).read_info().unwrap();
+    assert_eq!(frame.info().srgb, Some(png::SrgbRenderingIntent::Perceptual));
 }

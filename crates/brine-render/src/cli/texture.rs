@@ -236,18 +236,18 @@ fn write_atomic(
         .map_err(|e| CliError::Failure(e.to_string()))
 }
 
-/// Writes an 8-bit RGB or 16-bit grey image as PNG, atomically.
-fn write_png<P: image::PixelWithColorType>(
-    path: &Path,
-    img: &image::ImageBuffer<P, Vec<P::Subpixel>>,
-) -> Result<(), CliError>
-where
-    [P::Subpixel]: image::EncodableLayout,
-{
+/// Writes an 8-bit sRGB colour image (a frame, a synthesised texture) as a PNG tagged sRGB, as the
+/// renderer's images are ([`crate::output::encode_srgb_png`]), atomically.
+fn write_colour_png(path: &Path, img: &image::RgbImage) -> Result<(), CliError> {
+    write_atomic(path, |w| crate::output::encode_srgb_png(w, img.width(), img.height(), img.as_raw()).map_err(|e| e.to_string()))
+}
+
+/// Writes a 16-bit grey height field as PNG, atomically: data, so untagged.
+fn write_height_png(path: &Path, img: &image::ImageBuffer<image::Luma<u16>, Vec<u16>>) -> Result<(), CliError> {
     use image::{EncodableLayout, ImageEncoder};
     write_atomic(path, |w| {
         image::codecs::png::PngEncoder::new(w)
-            .write_image(img.as_raw().as_bytes(), img.width(), img.height(), P::COLOR_TYPE)
+            .write_image(img.as_raw().as_bytes(), img.width(), img.height(), image::ExtendedColorType::L16)
             .map_err(|e| e.to_string())
     })
 }
@@ -295,18 +295,18 @@ fn params_of(a: &TextureArgs) -> OceanParams {
 fn dump(ocean: &PhotoOcean, dir: &Path) -> Result<(), CliError> {
     std::fs::create_dir_all(dir).map_err(|e| CliError::Failure(format!("cannot create {}: {e}", dir.display())))?;
     let p = ocean.params();
-    write_png(&dir.join("main-texture.png"), &ocean.main_texture().to_image())?;
+    write_colour_png(&dir.join("main-texture.png"), &ocean.main_texture().to_image())?;
     let m = ocean.main_height();
-    write_png(&dir.join("main-height.png"), &m.grid().to_grey16(0.0, p.height_factor_main_m))?;
+    write_height_png(&dir.join("main-height.png"), &m.grid().to_grey16(0.0, p.height_factor_main_m))?;
     for (k, f) in ocean.basis_frames().iter().enumerate() {
-        write_png(&dir.join(format!("small-frame-{k:02}.png")), &f.colour.to_image())?;
-        write_png(
+        write_colour_png(&dir.join(format!("small-frame-{k:02}.png")), &f.colour.to_image())?;
+        write_height_png(
             &dir.join(format!("small-height-{k:02}.png")),
             &f.height().grid().to_grey16(0.0, p.height_factor_small_m),
         )?;
     }
     if let Some(b) = ocean.bed() {
-        write_png(&dir.join("bed-texture.png"), &b.to_image())?;
+        write_colour_png(&dir.join("bed-texture.png"), &b.to_image())?;
     }
     let links: Vec<_> = ocean
         .graph()
@@ -415,7 +415,7 @@ pub fn run_texture(args: &TextureArgs) -> Result<(), CliError> {
             let view = ProjectionView::new(&camera, &sky);
             for f in first..last {
                 let img = render_projection(&ocean.frame(u64::from(f)), &view, &projection);
-                write_png(&path_of(f)?, &img)?;
+                write_colour_png(&path_of(f)?, &img)?;
                 bar.inc(1);
             }
         }
