@@ -123,6 +123,57 @@ fn an_interrupted_animation_resumed_gives_the_same_frames() {
     assert!(std::fs::read(root.join("a/f_00.png")).unwrap() != std::fs::read(root.join("a/f_02.png")).unwrap());
 }
 
+/// `brine bake --resume` keeps the frames whose maps are all complete and bakes the others
+/// (a missing map, a truncated one), removing a killed run's temporaries: the folder is then
+/// the uninterrupted bake's, `bake.json` included, for EXR and 16-bit PNG maps.
+#[test]
+fn an_interrupted_bake_resumed_gives_the_same_maps() {
+    let dir = tempfile::tempdir().unwrap();
+    let root = dir.path();
+    for png in [false, true] {
+        let bake = |out: &str, extra: &[&str]| {
+            let mut args = vec!["bake", "-o", out, "--size", "16", "--tile-m", "40", "--frames", "0..4"];
+            if png {
+                args.push("--png16");
+            }
+            args.extend(extra);
+            let o = brine(&args, root);
+            assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+            String::from_utf8_lossy(&o.stderr).into_owned()
+        };
+        let ext = if png { "png" } else { "exr" };
+        let (a, b) = (format!("a{ext}"), format!("b{ext}"));
+        bake(&a, &["-q"]);
+        bake(&b, &["-q"]);
+        // Interrupted: frame 2 lost a map, frame 3 one was cut short, a temporary is left, and
+        // no bake.json was written.
+        let (fb, fa) = (root.join(&b), root.join(&a));
+        std::fs::remove_file(fb.join(format!("normal_0002.{ext}"))).unwrap();
+        let foam = fb.join(format!("foam_0003.{ext}"));
+        let bytes = std::fs::read(&foam).unwrap();
+        std::fs::write(&foam, &bytes[..bytes.len() / 2]).unwrap();
+        std::fs::write(fb.join(format!(".spray_0001.{ext}.abc123.tmp")), b"half a map").unwrap();
+        std::fs::remove_file(fb.join("bake.json")).unwrap();
+        let log = bake(&b, &["--resume"]);
+        assert!(log.contains("2 frame(s) of 6 maps (2 more kept from an earlier run)"), "{log}");
+        let listing = |d: &std::path::Path| {
+            let mut names: Vec<String> =
+                std::fs::read_dir(d).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+            names.sort();
+            names
+        };
+        assert_eq!(listing(&fa), listing(&fb));
+        for name in listing(&fa) {
+            let (x, y) = (std::fs::read(fa.join(&name)).unwrap(), std::fs::read(fb.join(&name)).unwrap());
+            if name == "bake.json" {
+                assert_eq!(String::from_utf8_lossy(&x), String::from_utf8_lossy(&y));
+            } else {
+                assert!(x == y, "{name} differs between the uninterrupted and the resumed bake");
+            }
+        }
+    }
+}
+
 #[test]
 fn an_animation_needs_a_frame_number_in_the_path() {
     let dir = tempfile::tempdir().unwrap();

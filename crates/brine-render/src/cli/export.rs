@@ -356,6 +356,12 @@ pub struct BakeArgs {
     /// Up axis of the vector maps: `y` (Brine, glTF, Houdini, Unity) or `z` (Blender).
     #[arg(long, value_enum, default_value_t)]
     pub up: UpAxis,
+    /// Keep the frames whose six maps are already in the folder in full, from an interrupted
+    /// run of the same command (a map that does not decode completely makes its frame again;
+    /// temporaries left by a killed run are removed). `--png16` still measures every frame for
+    /// the maps' common range
+    #[arg(long)]
+    pub resume: bool,
     /// No progress bar and no summary.
     #[arg(short, long)]
     pub quiet: bool,
@@ -501,7 +507,22 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
     let baking = bar("baking");
     let mut frames = Vec::new();
     let mut limit = None;
+    let mut resumed = 0u32;
     for f in first..last {
+        // `--resume` keeps a frame whose maps are all there in full (after removing what a
+        // killed run left beside them).
+        if args.resume {
+            let paths = crate::export::bake_frame_paths(&args.output, f, args.png16);
+            paths.iter().for_each(|p| {
+                crate::output::remove_stale_temporaries(p);
+            });
+            if paths.iter().all(|p| crate::output::decodes_completely(p)) {
+                frames.push(serde_json::json!({ "index": f, "time_s": time_of(f) }));
+                resumed += 1;
+                baking.set_length(baking.length().unwrap_or(0).saturating_sub(1));
+                continue;
+            }
+        }
         let frame = match kept.take() {
             Some(frame) => frame,
             None => bake_at(f)?.0,
@@ -514,6 +535,10 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
         baking.inc(1);
     }
     baking.finish_and_clear();
+    // Every frame was kept: the grid's limit (the same at every time) from one frame in memory.
+    if limit.is_none() && resumed > 0 {
+        limit = bake_at(first)?.0.limit;
+    }
     let meta = serde_json::json!({
         "generator": format!("brine {}", env!("CARGO_PKG_VERSION")),
         "surface": format!("{:?}", scene.sea.surface).to_lowercase(),
@@ -539,13 +564,14 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
     crate::output::write_atomic(&args.output.join("bake.json"), |w| w.write_all(text.as_bytes()))
         .map_err(|e| CliError::Failure(e.to_string()))?;
     if !args.quiet {
-        let n = last - first;
+        let n = last - first - resumed;
+        let kept = if resumed > 0 { format!(" ({resumed} more kept from an earlier run)") } else { String::new() };
         eprintln!(
-            "{}: {n} frame(s) of 6 maps, {}×{} texels over {tile_m} m, {:.2} s a frame",
+            "{}: {n} frame(s) of 6 maps{kept}, {}×{} texels over {tile_m} m, {:.2} s a frame",
             args.output.display(),
             args.size,
             args.size,
-            started.elapsed().as_secs_f64() / f64::from(n)
+            started.elapsed().as_secs_f64() / f64::from(n.max(1))
         );
     }
     Ok(())

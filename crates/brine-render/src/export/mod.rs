@@ -5,7 +5,9 @@ pub mod bake;
 pub mod mesh;
 mod query;
 
-pub use bake::{BakeMaps, BakeOptions, BakedFrame, GridLimit, UpAxis, bake_frame, write_bake_frame};
+pub use bake::{
+    BakeMaps, BakeOptions, BakedFrame, GridLimit, MAP_NAMES, UpAxis, bake_frame, bake_frame_paths, write_bake_frame,
+};
 pub use mesh::{
     Mesh, MeshFormat, MeshGrid, camera_mesh, check_camera_mesh, grid_mesh, grid_mesh_band_limited, write_mesh,
 };
