@@ -168,6 +168,10 @@ pub struct MeshArgs {
     /// replaced by the zero-padded frame number.
     #[arg(long, value_parser = super::render::parse_frames)]
     pub frames: Option<(u32, u32)>,
+    /// With `--frames`: keep the frames already written in full by an interrupted run of the same
+    /// command (a file cut short is made again; temporaries left by a killed run are removed)
+    #[arg(long, requires = "frames")]
+    pub resume: bool,
     /// No summary.
     #[arg(short, long)]
     pub quiet: bool,
@@ -217,7 +221,20 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
     };
     let mut limit = None;
     let mut last_mesh = (0, 0);
+    let mut resumed = 0u32;
     for f in first..last {
+        let path = path_of(f).map_err(CliError::Input)?;
+        if args.resume {
+            crate::output::remove_stale_temporaries(&path);
+            if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("gltf")) {
+                crate::output::remove_stale_temporaries(&path.with_extension("bin"));
+            }
+            if crate::export::mesh_is_complete(&path) {
+                resumed += 1;
+                bar.set_length(bar.length().unwrap_or(0).saturating_sub(1));
+                continue;
+            }
+        }
         let t = time_of(f);
         let own;
         let world = match &timeless {
@@ -238,7 +255,6 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
         } else {
             crate::export::grid_mesh(world, t, &grid)
         };
-        let path = path_of(f).map_err(CliError::Input)?;
         crate::export::write_mesh(&path, &mesh).map_err(CliError::Failure)?;
         last_mesh = (mesh.positions.len(), mesh.indices.len() / 3);
         bar.inc(1);
@@ -251,12 +267,18 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
             None => {
                 eprintln!("{}: {vertices} vertices, {triangles} triangles in {seconds:.2} s", args.output.display())
             }
-            Some(_) => eprintln!(
-                "{}: {} frames of {vertices} vertices, {triangles} triangles, {:.2} s a frame",
-                args.output.display(),
-                last - first,
-                seconds / f64::from(last - first)
-            ),
+            Some(_) if resumed == last - first => {
+                eprintln!("{}: every frame ({resumed}) kept from an earlier run", args.output.display())
+            }
+            Some(_) => {
+                let n = last - first - resumed;
+                let kept = if resumed > 0 { format!(" ({resumed} more kept from an earlier run)") } else { String::new() };
+                eprintln!(
+                    "{}: {n} frames of {vertices} vertices, {triangles} triangles{kept}, {:.2} s a frame",
+                    args.output.display(),
+                    seconds / f64::from(n.max(1))
+                )
+            }
         }
         for line in mesh_band_summary(&world, &grid, args.camera, limit.as_ref()) {
             eprintln!("{line}");

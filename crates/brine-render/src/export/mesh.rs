@@ -586,6 +586,46 @@ pub fn write_mesh(path: &Path, mesh: &Mesh) -> Result<(), String> {
     }
 }
 
+/// Whether the mesh file `path` (as [`write_mesh`] writes it) is there in full: a valid glTF
+/// whose binary buffer (the `.glb`'s chunk, or the `.gltf`'s `.bin`) holds its declared length; a
+/// PLY file of the length its header's vertex and face counts give; an OBJ file of as many
+/// normals as vertices, faces, and a last line ended. What `--resume` keeps.
+pub fn mesh_is_complete(path: &Path) -> bool {
+    let Ok(bytes) = std::fs::read(path) else { return false };
+    let Ok(format) = MeshFormat::from_path(path) else { return false };
+    match format {
+        MeshFormat::Glb => gltf::Gltf::from_slice(&bytes).is_ok_and(|g| {
+            let declared: u64 = g.buffers().map(|b| b.length() as u64).sum();
+            g.blob.as_ref().is_some_and(|b| b.len() as u64 >= declared)
+        }),
+        MeshFormat::Gltf => gltf::Gltf::from_slice(&bytes).is_ok_and(|g| {
+            g.buffers().all(|b| match b.source() {
+                gltf::buffer::Source::Uri(_) => std::fs::metadata(path.with_extension("bin"))
+                    .is_ok_and(|m| m.len() == b.length() as u64),
+                gltf::buffer::Source::Bin => false,
+            })
+        }),
+        MeshFormat::Ply => {
+            let Some(end) = bytes.windows(11).position(|w| w == b"end_header\n").map(|i| i + 11) else { return false };
+            let header = String::from_utf8_lossy(&bytes[..end]);
+            let count = |element: &str| {
+                header.lines().find_map(|l| l.strip_prefix(&format!("element {element} "))?.trim().parse::<u64>().ok())
+            };
+            match (count("vertex"), count("face")) {
+                // Eight floats a vertex; a count byte and three indices a triangle.
+                (Some(v), Some(f)) => bytes.len() as u64 == end as u64 + 32 * v + 13 * f,
+                _ => false,
+            }
+        }
+        MeshFormat::Obj => {
+            let text = String::from_utf8_lossy(&bytes);
+            let lines = |prefix: &str| text.lines().filter(|l| l.starts_with(prefix)).count();
+            let (v, vn, f) = (lines("v "), lines("vn "), lines("f "));
+            text.ends_with('\n') && v > 0 && v == vn && f > 0
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

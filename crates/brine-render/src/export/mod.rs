@@ -9,7 +9,8 @@ pub use bake::{
     BakeMaps, BakeOptions, BakedFrame, GridLimit, MAP_NAMES, UpAxis, bake_frame, bake_frame_paths, write_bake_frame,
 };
 pub use mesh::{
-    Mesh, MeshFormat, MeshGrid, camera_mesh, check_camera_mesh, grid_mesh, grid_mesh_band_limited, write_mesh,
+    Mesh, MeshFormat, MeshGrid, camera_mesh, check_camera_mesh, grid_mesh, grid_mesh_band_limited, mesh_is_complete,
+    write_mesh,
 };
 pub use query::{QueryPoint, QueryResult, parse_points, query_points};
 
