@@ -300,11 +300,21 @@ class Scene:
             shape, (xs, zs, ts) = _flat(x, z, t)
         return _shaped(self._scene.query(xs, zs, ts), shape, xs.size)
 
-    def bake(self, size: int = 512, tile_m: Optional[float] = None, t: Optional[float] = None, up: str = "y") -> dict:
+    def bake(
+        self,
+        size: int = 512,
+        tile_m: Optional[float] = None,
+        t: Optional[float] = None,
+        up: str = "y",
+        loop_s: Optional[float] = None,
+    ) -> dict:
         """Tileable maps of the sea over a square tile, as ``brine bake``: ``displacement``
         (``(size, size, 3)``, m), ``normal``, ``foam``, ``whitecap``, ``jacobian``, ``spray``,
-        ``tile_m``, ``time_s``. ``up``: ``"y"`` (Brine, glTF, Houdini) or ``"z"`` (Blender)."""
-        return self._scene.bake(size, tile_m, t, up)
+        ``tile_m``, ``time_s``, ``grid_limit``, ``loop_period_s``, ``loop_distortion``. ``up``:
+        ``"y"`` (Brine, glTF, Houdini) or ``"z"`` (Blender). ``loop_s``: a loop period (s), as
+        ``--loop-s``: the maps repeat after it; a ``UserWarning`` when it moves the waves off their
+        dispersion relation."""
+        return self._scene.bake(size, tile_m, t, up, loop_s)
 
     def mesh(
         self,

@@ -67,7 +67,14 @@ class Scene:
         """``rgb`` (float32 ``(h, w, 3)``, kcd m⁻²), ``depth`` (m), ``normal``, ``foam``, ``whitecap``, ``glint``, ``exposure_ev``."""
     def query(self, x: Array, z: Array, t: Optional[Array] = None) -> dict[str, Array]:
         """The surface at points (m) and times (s), as ``brine query``."""
-    def bake(self, size: int = 512, tile_m: Optional[float] = None, t: Optional[float] = None, up: str = "y") -> dict[str, Any]:
+    def bake(
+        self,
+        size: int = 512,
+        tile_m: Optional[float] = None,
+        t: Optional[float] = None,
+        up: str = "y",
+        loop_s: Optional[float] = None,
+    ) -> dict[str, Any]:
         """Tileable float32 maps, as ``brine bake``."""
     def mesh(self, **kwargs: Any) -> dict[str, Any]:
         """The sea as a triangle mesh, as ``brine mesh``."""

@@ -49,11 +49,20 @@ impl Scene {
 /// dispersion relation: the warning `brine render` prints (brine-render
 /// [`brine_render::cli::loop_warning`]).
 fn warn_of_loop(py: Python<'_>, world: &World, scene: &brine_render::Scene) -> PyResult<()> {
-    let (Some(d), Some(period)) = (world.loop_distortion(), scene.sea.fft.loop_period_s) else { return Ok(()) };
-    let Some(message) = brine_render::cli::loop_warning(d, period, "sea.fft.loop_period_s") else { return Ok(()) };
+    match (world.loop_distortion(), scene.sea.fft.loop_period_s) {
+        (Some(d), Some(period)) => warn_of_distortion(py, d, period, "sea.fft.loop_period_s"),
+        _ => Ok(()),
+    }
+}
+
+/// A Python `UserWarning` when a loop of `period_s` set by `setting` moves much of the sea off its
+/// dispersion relation ([`brine_render::cli::loop_warning`]); nothing otherwise.
+fn warn_of_distortion(py: Python<'_>, d: &brine_waves::LoopDistortion, period_s: f64, setting: &str) -> PyResult<()> {
+    let Some(message) = brine_render::cli::loop_warning(d, period_s, setting) else { return Ok(()) };
     let message = message.strip_prefix("warning: ").unwrap_or(&message);
     let text = std::ffi::CString::new(message).map_err(|e| bad(e.to_string()))?;
-    PyErr::warn(py, &py.get_type::<pyo3::exceptions::PyUserWarning>(), &text, 1)
+    // Level 2: the line of the caller of the package's method, not the method's own.
+    PyErr::warn(py, &py.get_type::<pyo3::exceptions::PyUserWarning>(), &text, 2)
 }
 
 /// Rows of `n` values per pixel as an array of shape `(height, width, n)` (or `(height, width)`).
@@ -139,7 +148,11 @@ impl Scene {
             return Err(bad("threads = 0 is out of range: expected at least 1 (or None for every core)"));
         }
         let options = RenderOptions { threads, profile: false, reference };
-        let failed = |e: brine_render::RenderError| pyo3::exceptions::PyRuntimeError::new_err(e.to_string());
+        // A scene the models refuse is bad input (`BrineError`); a failure to run is not.
+        let failed = |e: brine_render::RenderError| match e {
+            brine_render::RenderError::World(w) => scene_err(w),
+            other => pyo3::exceptions::PyRuntimeError::new_err(other.to_string()),
+        };
         let frame = match frame {
             // The scene's own world, built once and shared with queries and meshes.
             None if !reference => {
@@ -147,7 +160,12 @@ impl Scene {
                 warn_of_loop(py, world, &self.scene)?;
                 py.detach(|| brine_render::render_world(&self.scene, world, &options, &|| {})).map_err(failed)?
             }
-            None => py.detach(|| brine_render::render(&self.scene, &options, &|| {})).map_err(failed)?,
+            None => {
+                let mut world = py.detach(|| World::new(&self.scene)).map_err(scene_err)?;
+                world.set_reference(true);
+                warn_of_loop(py, &world, &self.scene)?;
+                py.detach(|| brine_render::render_world(&self.scene, &world, &options, &|| {})).map_err(failed)?
+            }
             Some(f) => {
                 let s = brine_render::cli::render::scene_at_frame(&self.scene, f, (0, f.saturating_add(1)), None)
                     .map_err(crate::py_err)?;
@@ -235,12 +253,16 @@ impl Scene {
     ///
     /// `size`: texels per side, [2, 16384]; `tile_m`: side of the tile (m; `None`: the sea's
     /// own, as `brine bake`); `t`: time (s; `None`: the scene's); `up`: `"y"` (Brine, glTF,
-    /// Houdini, Unity) or `"z"` (Blender) for the vector maps.
+    /// Houdini, Unity) or `"z"` (Blender) for the vector maps; `loop_s`: a loop period (s), as
+    /// `brine bake --loop-s`: the waves' frequencies snapped so that the maps repeat after it
+    /// (a `UserWarning` when that moves much of the sea off its dispersion relation).
     ///
     /// Returns a dict of float32 arrays, row `j` at `z = j·tile/size`: `displacement`
     /// (`(size, size, 3)`, m), `normal`, `foam`, `whitecap`, `jacobian`, `spray` (the minor
-    /// eigenvector and its eigenvalue); and `tile_m`, `time_s`.
-    #[pyo3(signature = (size = 512, tile_m = None, t = None, up = "y"))]
+    /// eigenvector and its eigenvalue); and `tile_m`, `time_s`, `grid_limit`, `loop_period_s`
+    /// (`loop_s`, or the FFT sea's own `loop_period_s`, or `None`) and `loop_distortion` (as in
+    /// `bake.json`, or `None`).
+    #[pyo3(signature = (size = 512, tile_m = None, t = None, up = "y", loop_s = None))]
     fn bake<'py>(
         &self,
         py: Python<'py>,
@@ -248,6 +270,7 @@ impl Scene {
         tile_m: Option<f64>,
         t: Option<f64>,
         up: &str,
+        loop_s: Option<f64>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let up = match up {
             "y" | "Y" => UpAxis::Y,
@@ -264,15 +287,34 @@ impl Scene {
         if !(t.is_finite() && t.abs() <= 1e9) {
             return Err(bad(format!("t = {t}: expected a finite time in [-1e9, 1e9] s")));
         }
-        let lattice = brine_waves::TileLattice::new(tile_m, None).map_err(scene_err)?;
+        let lattice = brine_waves::TileLattice::new(tile_m, loop_s).map_err(scene_err)?;
         let mut scene = self.scene.clone();
-        if matches!(scene.sea.surface, brine_render::scene::SurfaceKind::Fft) {
+        let fft = matches!(scene.sea.surface, brine_render::scene::SurfaceKind::Fft);
+        if fft {
             // The FFT sea's white water belongs to its frame: the world is built at `t`.
             scene.sea.time_s = t;
         }
-        let frame = py
-            .detach(|| World::on_lattice(&scene, Some(&lattice)).map(|w| bake_frame(&w, t, &options)))
+        let (frame, distortion) = py
+            .detach(|| {
+                World::on_lattice(&scene, Some(&lattice))
+                    .map(|w| (bake_frame(&w, t, &options), w.loop_distortion().cloned()))
+            })
             .map_err(scene_err)?;
+        // The loop the maps repeat after, as `brine bake` tells it.
+        let (loop_period, setting) = match (loop_s, fft.then_some(self.scene.sea.fft.loop_period_s).flatten()) {
+            (Some(p), _) => (Some(p), "loop_s"),
+            (None, own) => (own, "sea.fft.loop_period_s"),
+        };
+        if let (Some(d), Some(period)) = (&distortion, loop_period) {
+            warn_of_distortion(py, d, period, setting)?;
+        }
+        let loop_distortion = distortion.map(|d| {
+            let m = PyDict::new(py);
+            m.set_item("frequency_change_rms", d.rms())?;
+            m.set_item("variance_share_moved_over_5_percent", d.share_moved())?;
+            m.set_item("suggested_period_s", d.suggested_period_s())?;
+            Ok::<_, PyErr>(m)
+        });
         let n = frame.size;
         let limit = frame.limit.map(|l| brine_render::cli::export::grid_limit_json(&l, up));
         let m = frame.maps;
@@ -290,6 +332,8 @@ impl Scene {
         d.set_item("tile_m", tile_m)?;
         d.set_item("time_s", frame.time)?;
         d.set_item("grid_limit", pythonize::pythonize(py, &limit)?)?;
+        d.set_item("loop_period_s", loop_period)?;
+        d.set_item("loop_distortion", loop_distortion.transpose()?)?;
         Ok(d)
     }
 

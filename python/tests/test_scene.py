@@ -115,6 +115,41 @@ def test_a_bake_samples_one_surface_at_any_size(scene):
     assert coarse["lost_mean_square_slope"] > 0.0
 
 
+def test_a_looped_bake_repeats_and_warns_when_it_moves_the_waves(brine_cli, tmp_path):
+    s = brine.Scene.from_dict(SMALL)
+    # A period long against the sea's: maps that repeat after it, no warning, and the same
+    # figures as the command's bake.json.
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        a = s.bake(size=16, tile_m=40.0, t=0.0, loop_s=200.0)
+        b = s.bake(size=16, tile_m=40.0, t=200.0, loop_s=200.0)
+    np.testing.assert_allclose(a["displacement"], b["displacement"], atol=1e-4)
+    assert a["loop_period_s"] == 200.0
+    assert a["loop_distortion"]["variance_share_moved_over_5_percent"] <= 0.05
+    (tmp_path / "scene.toml").write_text(s.toml)
+    import subprocess
+
+    subprocess.run(
+        [str(brine_cli.path), "bake", "scene.toml", "-q", "-o", "maps", "--size", "16", "--tile-m", "40", "--loop-s", "200"],
+        cwd=tmp_path,
+        check=True,
+    )
+    import json
+
+    cli = json.loads((tmp_path / "maps" / "bake.json").read_text())["loop_distortion"]
+    for k, v in cli.items():
+        assert a["loop_distortion"][k] == pytest.approx(v, rel=1e-12), k
+    # A 2 s loop moves nearly every wave: warned of, as the command warns.
+    with pytest.warns(UserWarning, match=r"loop_s = 2 s moves \d+ % of the sea's height variance"):
+        c = s.bake(size=16, tile_m=40.0, loop_s=2.0)
+    assert c["loop_distortion"]["variance_share_moved_over_5_percent"] > 0.9
+    assert s.bake(size=8, tile_m=40.0)["loop_distortion"] is None
+    with pytest.raises(brine.BrineError, match="loop_s"):
+        s.bake(size=8, tile_m=40.0, loop_s=-1.0)
+
+
 def _read_ply(path):
     """Vertices `(n, 8)` (x y z nx ny nz foam whitecap) and triangles `(m, 3)` of a `brine mesh`
     PLY file."""

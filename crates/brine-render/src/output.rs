@@ -319,6 +319,22 @@ pub fn decodes_completely(path: &Path) -> bool {
     }
 }
 
+/// The size `(width, height)` of the complete image of its format (PNG or EXR) at `path`,
+/// decoded to the last pixel; `None` when it is missing, cut short or not an image.
+pub fn decoded_size(path: &Path) -> Option<(usize, usize)> {
+    match OutputFormat::from_path(path).ok()? {
+        OutputFormat::Png => {
+            let img = image::ImageReader::open(path).ok()?.with_guessed_format().ok()?.decode().ok()?;
+            Some((img.width() as usize, img.height() as usize))
+        }
+        OutputFormat::Exr => {
+            let img = exr::prelude::read_all_data_from_file(path).ok()?;
+            let size = img.layer_data.first()?.size;
+            Some((size.0, size.1))
+        }
+    }
+}
+
 /// Removes the temporary files that an interrupted write of `path` left beside it
 /// (`.NAME.XXXXXX.tmp`, the names [`write_image`] uses), e.g. after a SIGKILL.
 ///

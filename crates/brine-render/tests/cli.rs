@@ -125,16 +125,22 @@ fn an_interrupted_animation_resumed_gives_the_same_frames() {
 
 /// `brine bake --resume` keeps the frames whose maps are all complete and bakes the others
 /// (a missing map, a truncated one), removing a killed run's temporaries: the folder is then
-/// the uninterrupted bake's, `bake.json` included, for EXR and 16-bit PNG maps.
+/// the uninterrupted bake's, `bake.json` included (its grid limit is frame 0's, kept, also on
+/// the FFT sea, whose limit changes with time), for EXR and 16-bit PNG maps. A resume with
+/// other arguments is refused, naming what differs.
 #[test]
 fn an_interrupted_bake_resumed_gives_the_same_maps() {
     let dir = tempfile::tempdir().unwrap();
     let root = dir.path();
-    for png in [false, true] {
+    std::fs::write(root.join("fft.toml"), "[sea]\nsurface = \"fft\"\n").unwrap();
+    for (png, fft) in [(false, false), (true, false), (false, true)] {
         let bake = |out: &str, extra: &[&str]| {
             let mut args = vec!["bake", "-o", out, "--size", "16", "--tile-m", "40", "--frames", "0..4"];
             if png {
                 args.push("--png16");
+            }
+            if fft {
+                args.push("fft.toml");
             }
             args.extend(extra);
             let o = brine(&args, root);
@@ -142,7 +148,7 @@ fn an_interrupted_bake_resumed_gives_the_same_maps() {
             String::from_utf8_lossy(&o.stderr).into_owned()
         };
         let ext = if png { "png" } else { "exr" };
-        let (a, b) = (format!("a{ext}"), format!("b{ext}"));
+        let (a, b) = (format!("a{ext}{fft}"), format!("b{ext}{fft}"));
         bake(&a, &["-q"]);
         bake(&b, &["-q"]);
         // Interrupted: frame 2 lost a map, frame 3 one was cut short, a temporary is left, and
@@ -163,6 +169,7 @@ fn an_interrupted_bake_resumed_gives_the_same_maps() {
             names
         };
         assert_eq!(listing(&fa), listing(&fb));
+        assert!(listing(&fa).contains(&".bake-settings.json".to_owned()));
         for name in listing(&fa) {
             let (x, y) = (std::fs::read(fa.join(&name)).unwrap(), std::fs::read(fb.join(&name)).unwrap());
             if name == "bake.json" {
@@ -170,6 +177,18 @@ fn an_interrupted_bake_resumed_gives_the_same_maps() {
             } else {
                 assert!(x == y, "{name} differs between the uninterrupted and the resumed bake");
             }
+        }
+        if !fft {
+            // Maps of another size are not the same bake.
+            let mut args =
+                vec!["bake", "-o", b.as_str(), "--size", "8", "--tile-m", "40", "--frames", "0..4", "--resume"];
+            if png {
+                args.push("--png16");
+            }
+            let o = brine(&args, root);
+            let err = String::from_utf8_lossy(&o.stderr);
+            assert_eq!(o.status.code(), Some(2), "{err}");
+            assert!(err.contains("baked with another size"), "{err}");
         }
     }
 }
@@ -192,9 +211,15 @@ fn an_interrupted_mesh_sequence_resumed_gives_the_same_meshes() {
         let (a, b) = (format!("a_#.{ext}"), format!("b_#.{ext}"));
         run(&a, &["-q"]);
         run(&b, &["-q"]);
-        // Frame 1 cut short (or, for .gltf, its buffer lost), and a temporary left beside frame 2.
+        // Frame 1 cut short (or, for .gltf, its buffer lost; for .obj, at a line's end among the
+        // faces), and a temporary left beside frame 2.
         if ext == "gltf" {
             std::fs::remove_file(root.join("b_1.bin")).unwrap();
+        } else if ext == "obj" {
+            let p = root.join("b_1.obj");
+            let text = std::fs::read_to_string(&p).unwrap();
+            let cut = text.rfind("\nf ").unwrap() + 1;
+            std::fs::write(&p, &text[..cut]).unwrap();
         } else {
             let p = root.join(format!("b_1.{ext}"));
             let bytes = std::fs::read(&p).unwrap();
@@ -207,7 +232,8 @@ fn an_interrupted_mesh_sequence_resumed_gives_the_same_meshes() {
         let exts: &[&str] = if ext == "gltf" { &["gltf", "bin"] } else { &[ext] };
         for f in 0..3 {
             for e in exts {
-                let (x, y) = (std::fs::read(root.join(format!("a_{f}.{e}"))), std::fs::read(root.join(format!("b_{f}.{e}"))));
+                let (x, y) =
+                    (std::fs::read(root.join(format!("a_{f}.{e}"))), std::fs::read(root.join(format!("b_{f}.{e}"))));
                 let (x, y) = (x.unwrap(), y.unwrap());
                 if *e == "gltf" {
                     // The buffer's URI names its own file.

@@ -272,7 +272,8 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
             }
             Some(_) => {
                 let n = last - first - resumed;
-                let kept = if resumed > 0 { format!(" ({resumed} more kept from an earlier run)") } else { String::new() };
+                let kept =
+                    if resumed > 0 { format!(" ({resumed} more kept from an earlier run)") } else { String::new() };
                 eprintln!(
                     "{}: {n} frames of {vertices} vertices, {triangles} triangles{kept}, {:.2} s a frame",
                     args.output.display(),
@@ -280,8 +281,11 @@ pub fn run_mesh(args: &MeshArgs) -> Result<(), CliError> {
                 )
             }
         }
-        for line in mesh_band_summary(&world, &grid, args.camera, limit.as_ref()) {
-            eprintln!("{line}");
+        // Of the meshes made here (none when every frame was kept).
+        if resumed < last - first {
+            for line in mesh_band_summary(&world, &grid, args.camera, limit.as_ref()) {
+                eprintln!("{line}");
+            }
         }
     }
     Ok(())
@@ -421,6 +425,10 @@ pub fn grid_limit_json(l: &crate::export::GridLimit, up: UpAxis) -> serde_json::
     })
 }
 
+/// The file beside a bake's maps that records what they were baked with (the scene, the
+/// arguments, the 16-bit range), so that `--resume` keeps only maps of the same bake.
+const BAKE_SETTINGS: &str = ".bake-settings.json";
+
 /// Runs `brine bake`.
 ///
 /// # Errors
@@ -509,11 +517,15 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
     // its fixed encoding, before any file is written; once to write (a single frame is kept).
     let mut range_m = 0.0f64;
     let mut kept = None;
+    let mut first_limit = None;
     if args.png16 {
         let measuring = bar("measuring");
         for f in first..last {
             let (frame, (lo, hi)) = bake_at(f)?;
             measuring.suspend(warn);
+            if f == first {
+                first_limit = Some(frame.limit);
+            }
             let largest = frame.maps.displacement.iter().flatten().fold(0.0f64, |m, v| m.max(f64::from(v.abs())));
             range_m = range_m.max(displacement_range(lo, hi)).max(largest);
             if let Some(e) = crate::export::bake::png_unencodable(&frame, None) {
@@ -526,19 +538,57 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
         }
         measuring.finish_and_clear();
     }
+    // What the maps are baked with, kept beside them so that `--resume` keeps only maps of the
+    // same bake (a 16-bit PNG's encoding depends on the run's frames through `range_m`).
+    let settings = serde_json::json!({
+        "scene": scene.to_toml("scene").map_err(|e| CliError::Input(e.to_string()))?,
+        "size": args.size,
+        "tile_m": tile_m,
+        "loop_s": args.loop_s,
+        "up": format!("{:?}", args.up),
+        "format": if args.png16 { "png16" } else { "exr" },
+        "png16_range_m": args.png16.then_some(range_m),
+    });
+    let settings_path = args.output.join(BAKE_SETTINGS);
+    if args.resume {
+        crate::output::remove_stale_temporaries(&args.output.join("bake.json"));
+        crate::output::remove_stale_temporaries(&settings_path);
+        if let Some(before) =
+            std::fs::read(&settings_path).ok().and_then(|b| serde_json::from_slice::<serde_json::Value>(&b).ok())
+            && before != settings
+        {
+            let differs: Vec<&str> = ["scene", "size", "tile_m", "loop_s", "up", "format", "png16_range_m"]
+                .into_iter()
+                .filter(|k| before.get(k) != settings.get(k))
+                .collect();
+            let named = differs.join(", ").replace("tile_m", "--tile-m").replace("loop_s", "--loop-s").replace(
+                "png16_range_m",
+                "16-bit displacement range (that of the frames asked for, which needs another)",
+            );
+            return Err(CliError::Input(format!(
+                "--resume: the maps in {} were baked with another {named}; bake without --resume (every frame again), \
+                 or into another folder",
+                args.output.display(),
+            )));
+        }
+    }
+    let text = serde_json::to_string_pretty(&settings).map_err(|e| CliError::Failure(e.to_string()))?;
+    crate::output::write_atomic(&settings_path, |w| w.write_all(text.as_bytes()))
+        .map_err(|e| CliError::Failure(e.to_string()))?;
     let baking = bar("baking");
     let mut frames = Vec::new();
+    // The grid's limit is frame `first`'s (the FFT sea's changes with time).
     let mut limit = None;
     let mut resumed = 0u32;
     for f in first..last {
-        // `--resume` keeps a frame whose maps are all there in full (after removing what a
-        // killed run left beside them).
+        // `--resume` keeps a frame whose maps are all there in full at the bake's size (after
+        // removing what a killed run left beside them).
         if args.resume {
             let paths = crate::export::bake_frame_paths(&args.output, f, args.png16);
             paths.iter().for_each(|p| {
                 crate::output::remove_stale_temporaries(p);
             });
-            if paths.iter().all(|p| crate::output::decodes_completely(p)) {
+            if paths.iter().all(|p| crate::output::decoded_size(p) == Some((args.size, args.size))) {
                 frames.push(serde_json::json!({ "index": f, "time_s": time_of(f) }));
                 resumed += 1;
                 baking.set_length(baking.length().unwrap_or(0).saturating_sub(1));
@@ -550,17 +600,25 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
             None => bake_at(f)?.0,
         };
         baking.suspend(warn);
-        limit = limit.or(frame.limit);
+        if f == first {
+            limit = Some(frame.limit);
+        }
         let png = args.png16.then_some(range_m);
         crate::export::write_bake_frame(&args.output, f, &frame, png).map_err(CliError::Failure)?;
         frames.push(serde_json::json!({ "index": f, "time_s": time_of(f) }));
         baking.inc(1);
     }
     baking.finish_and_clear();
-    // Every frame was kept: the grid's limit (the same at every time) from one frame in memory.
-    if limit.is_none() && resumed > 0 {
-        limit = bake_at(first)?.0.limit;
-    }
+    // Frame `first` was kept: its grid limit from the measuring pass, or from the frame baked
+    // again in memory.
+    let limit = match limit.or(first_limit) {
+        Some(l) => l,
+        None => {
+            let l = bake_at(first)?.0.limit;
+            warn();
+            l
+        }
+    };
     let meta = serde_json::json!({
         "generator": format!("brine {}", env!("CARGO_PKG_VERSION")),
         "surface": format!("{:?}", scene.sea.surface).to_lowercase(),
@@ -574,7 +632,7 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
             "suggested_period_s": d.suggested_period_s(),
         })),
         "up": match args.up { UpAxis::Y => "y (x east, y up, z south)", UpAxis::Z => "z (X east, Y north, Z up)" },
-        "maps": ["displacement", "normal", "foam", "whitecap", "jacobian", "spray"],
+        "maps": crate::export::MAP_NAMES,
         "format": if args.png16 { "png16" } else { "exr" },
         "png16_encodings": args.png16.then(|| {
             crate::export::bake::png_scales(range_m).iter().map(|(k, s)| (k.to_string(), serde_json::json!(s))).collect::<serde_json::Map<_, _>>()
@@ -585,7 +643,9 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
     let text = serde_json::to_string_pretty(&meta).map_err(|e| CliError::Failure(e.to_string()))?;
     crate::output::write_atomic(&args.output.join("bake.json"), |w| w.write_all(text.as_bytes()))
         .map_err(|e| CliError::Failure(e.to_string()))?;
-    if !args.quiet {
+    if !args.quiet && resumed == last - first {
+        eprintln!("{}: every frame ({resumed}) kept from an earlier run", args.output.display());
+    } else if !args.quiet {
         let n = last - first - resumed;
         let kept = if resumed > 0 { format!(" ({resumed} more kept from an earlier run)") } else { String::new() };
         eprintln!(

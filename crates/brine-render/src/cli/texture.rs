@@ -239,7 +239,9 @@ fn write_atomic(
 /// Writes an 8-bit sRGB colour image (a frame, a synthesised texture) as a PNG tagged sRGB, as the
 /// renderer's images are ([`crate::output::encode_srgb_png`]), atomically.
 fn write_colour_png(path: &Path, img: &image::RgbImage) -> Result<(), CliError> {
-    write_atomic(path, |w| crate::output::encode_srgb_png(w, img.width(), img.height(), img.as_raw()).map_err(|e| e.to_string()))
+    write_atomic(path, |w| {
+        crate::output::encode_srgb_png(w, img.width(), img.height(), img.as_raw()).map_err(|e| e.to_string())
+    })
 }
 
 /// Writes a 16-bit grey height field as PNG, atomically: data, so untagged.

@@ -265,18 +265,18 @@ pub fn png_scales(range_m: f64) -> [(&'static str, PngScale); 4] {
 /// One map to write: its name, its named channels and their 16-bit PNG encodings.
 type Map<'a> = (&'a str, Vec<(String, Vec<f32>)>, Vec<PngScale>);
 
-/// The six maps of `frame` by name, with their channels and their 16-bit encodings for a
-/// displacement range of `range_m` (m).
 /// The maps a bake writes per frame, in `bake.json`'s order.
 pub const MAP_NAMES: [&str; 6] = ["displacement", "normal", "foam", "whitecap", "jacobian", "spray"];
 
 /// The files [`write_bake_frame`] writes for frame `index` into `dir`: `NAME_0007.exr` (or
-/// `.png` for 16-bit PNG maps), one per map of [`MAP_NAMES`].
+/// `.png` for 16-bit PNG maps), one per map of [`MAP_NAMES`], in that order.
 pub fn bake_frame_paths(dir: &Path, index: u32, png16: bool) -> Vec<PathBuf> {
     let ext = if png16 { "png" } else { "exr" };
     MAP_NAMES.iter().map(|name| dir.join(format!("{name}_{index:04}.{ext}"))).collect()
 }
 
+/// The six maps of `frame` by name (in the order of [`MAP_NAMES`]), with their channels and
+/// their 16-bit encodings for a displacement range of `range_m` (m).
 fn named_maps(frame: &BakedFrame, range_m: f64) -> Vec<Map<'static>> {
     let m = &frame.maps;
     let rgb = |v: &[[f32; 3]]| -> Vec<(String, Vec<f32>)> {
@@ -342,7 +342,6 @@ pub fn write_bake_frame(
 ) -> Result<Vec<PathBuf>, String> {
     let n = frame.size;
     let paths = bake_frame_paths(dir, index, png_range_m.is_some());
-    let path = |name: &str| paths[MAP_NAMES.iter().position(|m| *m == name).expect("a named map")].clone();
     let maps = named_maps(frame, png_range_m.unwrap_or(1.0));
     // A 16-bit map holds only its encoding's range: a value beyond it is refused, before any map
     // of the frame is written, rather than clipped in silence.
@@ -352,8 +351,7 @@ pub fn write_bake_frame(
         return Err(format!("frame {index}, {e}; bake EXR maps (without --png16)"));
     }
     let mut written = Vec::new();
-    for (name, channels, scales) in maps {
-        let p = path(name);
+    for ((_, channels, scales), p) in maps.into_iter().zip(paths) {
         let shown = p.display().to_string();
         if png_range_m.is_some() {
             let c = channels.len();

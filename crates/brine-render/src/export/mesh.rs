@@ -547,7 +547,13 @@ pub fn write_mesh(path: &Path, mesh: &Mesh) -> Result<(), String> {
             atomic(path, &json)
         }
         MeshFormat::Obj => crate::output::write_atomic(path, |w| {
-            writeln!(w, "# brine {}: the sea surface; vertex colour = (foam, whitecap, 0)", env!("CARGO_PKG_VERSION"))?;
+            writeln!(
+                w,
+                "# brine {}: the sea surface; vertex colour = (foam, whitecap, 0); {} vertices, {} triangles",
+                env!("CARGO_PKG_VERSION"),
+                mesh.positions.len(),
+                mesh.indices.len() / 3
+            )?;
             for (k, p) in mesh.positions.iter().enumerate() {
                 writeln!(w, "v {} {} {} {} {} 0", p[0], p[1], p[2], mesh.foam[k], mesh.whitecap[k])?;
             }
@@ -588,8 +594,8 @@ pub fn write_mesh(path: &Path, mesh: &Mesh) -> Result<(), String> {
 
 /// Whether the mesh file `path` (as [`write_mesh`] writes it) is there in full: a valid glTF
 /// whose binary buffer (the `.glb`'s chunk, or the `.gltf`'s `.bin`) holds its declared length; a
-/// PLY file of the length its header's vertex and face counts give; an OBJ file of as many
-/// normals as vertices, faces, and a last line ended. What `--resume` keeps.
+/// PLY file of the length its header's vertex and face counts give; an OBJ file of the vertices,
+/// normals and faces its first line counts, its last line ended. What `--resume` keeps.
 pub fn mesh_is_complete(path: &Path) -> bool {
     let Ok(bytes) = std::fs::read(path) else { return false };
     let Ok(format) = MeshFormat::from_path(path) else { return false };
@@ -600,8 +606,9 @@ pub fn mesh_is_complete(path: &Path) -> bool {
         }),
         MeshFormat::Gltf => gltf::Gltf::from_slice(&bytes).is_ok_and(|g| {
             g.buffers().all(|b| match b.source() {
-                gltf::buffer::Source::Uri(_) => std::fs::metadata(path.with_extension("bin"))
-                    .is_ok_and(|m| m.len() == b.length() as u64),
+                gltf::buffer::Source::Uri(_) => {
+                    std::fs::metadata(path.with_extension("bin")).is_ok_and(|m| m.len() == b.length() as u64)
+                }
                 gltf::buffer::Source::Bin => false,
             })
         }),
@@ -618,10 +625,17 @@ pub fn mesh_is_complete(path: &Path) -> bool {
             }
         }
         MeshFormat::Obj => {
+            // The counts the first line declares, against the lines that follow.
             let text = String::from_utf8_lossy(&bytes);
+            let declared = text.lines().next().and_then(|l| {
+                let (_, counts) = l.rsplit_once("; ")?;
+                let mut words = counts.split(' ');
+                let v = words.next()?.parse::<usize>().ok()?;
+                let f = words.nth(1)?.parse::<usize>().ok()?;
+                Some((v, f))
+            });
             let lines = |prefix: &str| text.lines().filter(|l| l.starts_with(prefix)).count();
-            let (v, vn, f) = (lines("v "), lines("vn "), lines("f "));
-            text.ends_with('\n') && v > 0 && v == vn && f > 0
+            declared == Some((lines("v "), lines("f "))) && lines("vn ") == lines("v ") && text.ends_with('\n')
         }
     }
 }

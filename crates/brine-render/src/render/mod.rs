@@ -370,12 +370,13 @@ struct Sample {
 
 /// The projected area toward `v` of a facet of normal `n` laid on a surface of normal `g`, per
 /// unit of that surface's projected area: `max(v·n, c₀) / ((n·g)(v·g))`. Its mean over facets
-/// whose slopes relative to the surface average zero is 1 (the surface's area is conserved).
+/// whose slopes relative to the surface average zero is 1 (the surface's area is conserved)
+/// where the view sees every facet above `c₀`.
 ///
 /// A facet turned away from the viewer, or more grazing than `c₀` ([`shade::MIN_SEEN_COSINE`]),
 /// counts as the shading shades it: seen at `c₀`. Its weight is then small but not zero, so a
 /// pixel whose every sample lands on such facets (a lee face seen edge-on under detail normals
-/// that all lean away) takes their mean radiance rather than none: black specks, before.
+/// that all lean away) takes their mean radiance rather than none (a black pixel).
 fn projected_area_weight(v: DVec3, n: DVec3, g: DVec3) -> f64 {
     v.dot(n).max(shade::MIN_SEEN_COSINE) / (n.dot(g).max(1e-3) * v.dot(g).max(1e-3))
 }

@@ -29,8 +29,8 @@ fn detail_facets_keep_the_projected_area() {
 
 /// A facet the view sees from behind weighs as the shading shades it, seen at the least cosine
 /// `c₀`: small but not zero, so that a reference pixel whose every sample lands on such facets
-/// keeps their radiance (it was black), while beside the facets the view does see it counts for
-/// little.
+/// has their mean radiance rather than none, while beside the facets the view does see it
+/// counts for little.
 #[test]
 fn facets_turned_away_weigh_as_seen_at_grazing() {
     let g = DVec3::Y;
@@ -40,7 +40,10 @@ fn facets_turned_away_weigh_as_seen_at_grazing() {
     assert!(v.dot(away) < 0.0);
     let w = projected_area_weight(v, away, g);
     assert!(w > 0.0, "{w}");
-    assert_eq!(w, MIN_SEEN_COSINE / (away.dot(g) * v.dot(g)));
+    // Any facet turned away weighs the same: the pixel's mean of such samples is theirs.
+    let further = DVec3::new(0.0, 1.0, -0.5 - 0.3).normalize();
+    let ratio = projected_area_weight(v, further, g) / w;
+    assert!((ratio - away.dot(g) / further.dot(g)).abs() < 1e-12, "{ratio}");
     // Against the facet leaning toward the viewer as much: under 1 %.
     let toward = DVec3::new(0.0, 1.0, 0.5).normalize();
     assert!(w / projected_area_weight(v, toward, g) < 0.01, "{w}");

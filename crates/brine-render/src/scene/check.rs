@@ -16,7 +16,8 @@ pub(super) type RawError = (Option<usize>, String);
 pub(super) fn syntax_error(text: &str, e: &toml::de::Error) -> RawError {
     let message = e.message().trim();
     let at = e.span();
-    let named = at.as_ref().and_then(|s| text.get(s.clone())).map(str::trim).filter(|k| !k.is_empty() && !k.contains('\n'));
+    let named =
+        at.as_ref().and_then(|s| text.get(s.clone())).map(str::trim).filter(|k| !k.is_empty() && !k.contains('\n'));
     let message = match named {
         Some(key) if message == "duplicate key" => format!(
             "duplicate key `{key}`: a key is set once in its table, and a table is opened once (by one `[header]` or by dotted keys, not both)"

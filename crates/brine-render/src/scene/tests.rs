@@ -45,6 +45,7 @@ fn duplicate_keys_are_named() {
         ("[output]\naovs = true\npath = \"x.exr\"\naovs = false\n", 4, "`aovs`"),
         ("[camera]\nwidth = 10\n\n[camera]\nheight = 10\n", 4, "`camera`"),
         ("camera.width = 10\n[camera]\nheight = 3\n", 2, "`camera`"),
+        ("camera.width = 10\ncamera.width = 12\n", 2, "`width`"),
     ] {
         let e = parse(text).unwrap_err();
         assert_eq!(e.line, Some(line), "{e}");
