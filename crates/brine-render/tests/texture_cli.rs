@@ -146,3 +146,27 @@ fn same_seed_same_bytes_and_another_seed_differs() {
     let frame = png::Decoder::new(std::io::Cursor::new(read("a_5.png"))).read_info().unwrap();
     assert_eq!(frame.info().srgb, Some(png::SrgbRenderingIntent::Perceptual));
 }
+
+/// `--dump`'s textures are colour images, tagged sRGB; its height fields are 16-bit data,
+/// untagged.
+#[test]
+fn dumped_textures_are_tagged_and_height_fields_are_not() {
+    let dir = tempfile::tempdir().unwrap();
+    let (small, main) = (example("small-waves.png"), example("main-structure.png"));
+    let mut args = vec!["--small", small.to_str().unwrap(), "--main", main.to_str().unwrap(), "-o", "f.png"];
+    args.extend(["--dump", "dump", "-q"]);
+    args.extend(SMALL_RUN);
+    let o = texture(&args, dir.path());
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let info = |name: &str| {
+        let bytes = std::fs::read(dir.path().join("dump").join(name)).unwrap();
+        let r = png::Decoder::new(std::io::Cursor::new(bytes)).read_info().unwrap();
+        (r.info().srgb, r.info().bit_depth, r.info().color_type)
+    };
+    for name in ["main-texture.png", "small-frame-00.png"] {
+        assert_eq!(info(name), (Some(png::SrgbRenderingIntent::Perceptual), png::BitDepth::Eight, png::ColorType::Rgb));
+    }
+    for name in ["main-height.png", "small-height-00.png"] {
+        assert_eq!(info(name), (None, png::BitDepth::Sixteen, png::ColorType::Grayscale));
+    }
+}
