@@ -541,7 +541,8 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
     // What the maps are baked with, kept beside them so that `--resume` keeps only maps of the
     // same bake (a 16-bit PNG's encoding depends on the run's frames through `range_m`).
     let settings = serde_json::json!({
-        "scene": scene.to_toml("scene").map_err(|e| CliError::Input(e.to_string()))?,
+        // The scene as a scene file (its Rust form where TOML cannot hold it): only compared.
+        "scene": scene.to_toml("scene").unwrap_or_else(|_| format!("{scene:?}")),
         "size": args.size,
         "tile_m": tile_m,
         "loop_s": args.loop_s,
