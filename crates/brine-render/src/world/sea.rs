@@ -4,24 +4,27 @@
 use super::*;
 
 /// The spectrum of `[sea]` (`U₁₀ > 0`); a spectrum the model refuses is reported with the scene
-/// keys it came from (the model's own message names its internal parameter, such as the peak
-/// frequency a light wind over a long fetch gives).
+/// keys it came from ([`refused_spectrum`]).
 pub(super) fn sea_spectrum(s: &SeaConfig) -> Result<Box<dyn Spectrum>, WorldError> {
-    model_spectrum(s).map_err(|e| {
-        let fetch = s.fetch_km.map_or(String::new(), |f| format!(", sea.fetch_km = {f}"));
-        let depth = s.depth_m.map_or(String::new(), |d| format!(", sea.depth_m = {d}"));
-        let name = match s.spectrum {
-            SpectrumKind::PiersonMoskowitz => "pierson-moskowitz",
-            SpectrumKind::Jonswap => "jonswap",
-            SpectrumKind::Phillips => "phillips",
-            SpectrumKind::Tma => "tma",
-            SpectrumKind::Elfouhaily => "elfouhaily",
-        };
-        WorldError::Scene(format!(
-            "sea.spectrum = \"{name}\" with sea.wind_speed_m_s = {}{fetch}{depth} gives no valid sea: {e}",
-            s.wind_speed_m_s
-        ))
-    })
+    model_spectrum(s).map_err(|e| refused_spectrum(s, &e))
+}
+
+/// The error of a spectrum the model refuses, named by the scene keys it came from (the model's
+/// own message names its internal parameter, such as a peak frequency).
+pub(super) fn refused_spectrum(s: &SeaConfig, e: &brine_waves::WaveError) -> WorldError {
+    let fetch = s.fetch_km.map_or(String::new(), |f| format!(", sea.fetch_km = {f}"));
+    let depth = s.depth_m.map_or(String::new(), |d| format!(", sea.depth_m = {d}"));
+    let name = match s.spectrum {
+        SpectrumKind::PiersonMoskowitz => "pierson-moskowitz",
+        SpectrumKind::Jonswap => "jonswap",
+        SpectrumKind::Phillips => "phillips",
+        SpectrumKind::Tma => "tma",
+        SpectrumKind::Elfouhaily => "elfouhaily",
+    };
+    WorldError::Scene(format!(
+        "sea.spectrum = \"{name}\" with sea.wind_speed_m_s = {}{fetch}{depth} gives no valid sea: {e}",
+        s.wind_speed_m_s
+    ))
 }
 
 /// The model of `[sea]`'s spectrum.

@@ -75,13 +75,15 @@ impl Jonswap {
     ///
     /// # Arguments
     /// - `alpha`: Phillips constant (dimensionless), `(0, 1)`.
-    /// - `omega_p`: peak angular frequency (rad s⁻¹), `(0, 100]`.
+    /// - `omega_p`: peak angular frequency (rad s⁻¹), `(0, ∞)`, finite: as for
+    ///   Pierson–Moskowitz, any peak [`Jonswap::from_fetch`] gives at a wind of `(0, 60]` m/s
+    ///   (a peak above about 500 rad/s is a ripple of millimetres, which a renderer treats as calm).
     ///
     /// # Errors
     /// [`WaveError::OutOfRange`] naming the first parameter outside its range.
     pub fn new(alpha: f64, omega_p: f64) -> Result<Self, WaveError> {
         let alpha = check("alpha", alpha, alpha > 0.0 && alpha < 1.0, "(0, 1)")?;
-        let omega_p = check("omega_p_rad_s", omega_p, omega_p > 0.0 && omega_p <= 100.0, "(0, 100] rad/s")?;
+        let omega_p = check("omega_p_rad_s", omega_p, omega_p > 0.0 && omega_p.is_finite(), "(0, ∞) rad/s")?;
         Ok(Self { alpha, omega_p, gamma: Self::GAMMA, sigma_a: Self::SIGMA_A, sigma_b: Self::SIGMA_B })
     }
 
@@ -202,6 +204,23 @@ mod tests {
         let j = Jonswap::from_fetch(10.0, 1e5).unwrap();
         assert!((j.peak_enhancement(j.peak_omega()) - 3.3).abs() < ROUND_ABS);
         assert!((j.peak_enhancement(3.0 * j.peak_omega()) - 1.0).abs() < ROUND_ABS);
+    }
+
+    /// The lightest winds give a peak of capillary ripples (`0.855 g/U₁₀`, over 8 000 rad/s at
+    /// 1 mm/s), still a spectrum, as Pierson–Moskowitz's at the same wind; a peak of 0, infinite
+    /// or NaN is refused.
+    #[test]
+    fn the_lightest_winds_give_a_spectrum_of_ripples() {
+        for u10 in [1e-3, 0.01, 0.03, 0.08] {
+            let j = Jonswap::from_fetch(u10, 1e8).unwrap();
+            let pm = crate::PiersonMoskowitz::from_u10(u10).unwrap();
+            assert!(j.peak_omega() > 100.0 && j.peak_omega().is_finite(), "{u10}: {}", j.peak_omega());
+            assert!((j.peak_omega() / pm.peak_omega() - 1.0).abs() < ROUND_ABS, "{u10}");
+            assert!(crate::Tma::new(j, 20.0).is_ok(), "{u10}");
+        }
+        for bad in [0.0, f64::INFINITY, f64::NAN, -1.0] {
+            assert!(Jonswap::new(0.01, bad).is_err(), "{bad}");
+        }
     }
 
     #[test]
