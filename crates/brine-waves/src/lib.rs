@@ -155,8 +155,8 @@ pub use surfaces::detail::{
     BandLimited, DETAIL_MIN_WAVELENGTH_M, DetailOptions, DetailSlopes, DetailWaves, wavenumber_of_slope,
 };
 pub use surfaces::gerstner::{
-    FadedWaves, GERSTNER_MAX_ITERATIONS, GERSTNER_TOLERANCE_M, GERSTNER_TOLERANCE_REL, GerstnerField, GerstnerSurface,
-    Inversion,
+    FadedWaves, GERSTNER_MAX_ITERATIONS, GERSTNER_TOLERANCE_M, GERSTNER_TOLERANCE_REL, GerstnerField, GerstnerPoint,
+    GerstnerSurface, Inversion,
 };
 pub use surfaces::seabed::{SeabedRelief, seabed_relief};
 pub use surfaces::sine::{SineField, SineSet};

@@ -301,7 +301,8 @@ impl SeaFrame {
             }
             FrameSurface::Gerstner(surface) => {
                 let f = surface.at_time(t);
-                let u = f.rest_position(x, z);
+                let p = f.point(x, z);
+                let u = p.rest;
                 let mut m = DVec3::new(1.0, 0.0, 1.0);
                 let mut a = 0.0;
                 for w in self.waves.as_ref().map_or(&[][..], |s| s.waves()) {
@@ -311,12 +312,12 @@ impl SeaFrame {
                     m -= w.steepness() * c * DVec3::new(d.x * d.x, d.x * d.y, d.y * d.y);
                     a -= w.amplitude() * w.omega() * w.omega() * c;
                 }
-                let g = f.gradient(x, z);
+                let g = p.gradient;
                 SurfaceSample {
-                    height: f.height_lanes(x, z),
+                    height: p.height,
                     normal: DVec3::new(-g.x, 1.0, -g.y).normalize(),
-                    displacement: f.displacement(x, z),
-                    velocity: f.velocity(x, z),
+                    displacement: p.displacement,
+                    velocity: p.velocity,
                     vertical_acceleration: a,
                     jacobian: m.x * m.z - m.y * m.y,
                     deformation: m,

@@ -152,6 +152,23 @@ pub struct Inversion {
     pub iterations: usize,
 }
 
+/// Everything [`GerstnerField::point`] gives at one world point, from a single inversion.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GerstnerPoint {
+    /// The rest position `u` of the particle above the point (m).
+    pub rest: DVec2,
+    /// `h` (m), as [`GerstnerField::height_lanes`].
+    pub height: f64,
+    /// `∇ₓh` (dimensionless), as [`GerstnerField::gradient`].
+    pub gradient: DVec2,
+    /// `D(u)` (m), as [`GerstnerField::displacement`].
+    pub displacement: DVec2,
+    /// The particle's velocity (m s⁻¹), as [`GerstnerField::velocity`].
+    pub velocity: DVec3,
+    /// `det J(u)` (dimensionless), as [`GerstnerField::jacobian`].
+    pub jacobian: f64,
+}
+
 /// Everything the waves give at one rest position.
 struct State {
     displacement: DVec2,
@@ -412,6 +429,39 @@ impl GerstnerField<'_> {
         self.invert(x, z, |u| gerstner_lanes::displacement(w, u), |u| gerstner_lanes::state(w, u)).1.height
     }
 
+    /// Height, gradient, displacement, velocity and Jacobian of the particle above `(x, z)`, from
+    /// one inversion: [`GerstnerField::height_lanes`]'s (the height is its, bit for bit), then one
+    /// pass over the waves at its rest position for the rest. Each of [`GerstnerField::gradient`],
+    /// [`GerstnerField::displacement`], [`GerstnerField::velocity`] and
+    /// [`GerstnerField::jacobian`] inverts on its own; this costs about as much as one of them.
+    ///
+    /// Both inversions meet the stopping rule `|u + D(u) − x| ≤ τ`, so the fields differ from the
+    /// single functions' by at most their derivative with respect to `u` times `2τ`, plus
+    /// rounding.
+    ///
+    /// # Arguments
+    /// - `x`, `z`: horizontal position (m), finite.
+    ///
+    /// # Returns
+    /// The [`GerstnerPoint`].
+    ///
+    /// # References
+    /// docs/equations.md §1(b).
+    pub fn point(&self, x: f64, z: f64) -> GerstnerPoint {
+        let w = self.lanes();
+        let (inversion, lanes) =
+            self.invert(x, z, |u| gerstner_lanes::displacement(w, u), |u| gerstner_lanes::state(w, u));
+        let st = self.state(inversion.rest);
+        GerstnerPoint {
+            rest: inversion.rest,
+            height: lanes.height,
+            gradient: st.solve(st.grad_u),
+            displacement: st.displacement,
+            velocity: st.velocity,
+            jacobian: st.det(),
+        }
+    }
+
     /// Heights at many points, each by [`GerstnerField::height_lanes`].
     ///
     /// # Arguments
@@ -631,6 +681,32 @@ mod tests {
             assert!((g.height(x, z, 0.4) - t.height(x, z, 0.4)).abs() < ONE_WAVE_HEIGHT_ABS);
             assert!((g.gradient(x, z, 0.4) - t.gradient(x, z, 0.4)).length() < ONE_WAVE_DERIVATIVE_ABS);
             assert!((g.jacobian(x, z, 0.4) - t.jacobian(x, z, 0.4)).abs() < ONE_WAVE_DERIVATIVE_ABS);
+        }
+    }
+
+    /// `point` inverts once and gives each field of the single functions: the height bit for bit
+    /// (the same lane inversion), the others from a rest position within `2τ` of theirs, so
+    /// within the curvature bound `Σ k²A/(1 − ΣQ)³`-scale times `2τ` (~10⁻¹¹ here) plus
+    /// rounding; [`ONE_WAVE_DERIVATIVE_ABS`] with the displacement and velocity in metres and
+    /// m/s of the same order.
+    #[test]
+    fn one_inversion_gives_every_field() {
+        use crate::{CosineTwoS, FitOptions, PiersonMoskowitz, Spectrum, fit_trochoids};
+        let pm = PiersonMoskowitz::from_u10(12.0).unwrap();
+        let d = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
+        let o = FitOptions { choppiness: 2.5, ..FitOptions::default() };
+        let set = fit_trochoids(&pm, &d, 40, 3, &o).unwrap();
+        let g = GerstnerSurface::new(&set).unwrap();
+        let f = g.at_time(7.5);
+        for j in 0..200 {
+            let (x, z) = (j as f64 * 1.37 - 90.0, (j * 7 % 31) as f64 * 2.9 - 40.0);
+            let p = f.point(x, z);
+            assert_eq!(p.height.to_bits(), f.height_lanes(x, z).to_bits(), "{x} {z}");
+            assert!((p.rest - f.rest_position(x, z)).length() < ONE_WAVE_DERIVATIVE_ABS, "{x} {z}");
+            assert!((p.gradient - f.gradient(x, z)).length() < ONE_WAVE_DERIVATIVE_ABS, "{x} {z}");
+            assert!((p.displacement - f.displacement(x, z)).length() < ONE_WAVE_DERIVATIVE_ABS, "{x} {z}");
+            assert!((p.velocity - f.velocity(x, z)).length() < ONE_WAVE_DERIVATIVE_ABS, "{x} {z}");
+            assert!((p.jacobian - f.jacobian(x, z)).abs() < ONE_WAVE_DERIVATIVE_ABS, "{x} {z}");
         }
     }
 
