@@ -425,6 +425,43 @@ pub fn grid_limit_json(l: &crate::export::GridLimit, up: UpAxis) -> serde_json::
     })
 }
 
+/// The keys in which two scene files differ, as `key: old → new` (at most four, then how many
+/// more), or `None` if either is not TOML (a scene recorded in its Rust form) or they hold the
+/// same keys and values.
+fn scene_differences(before: &str, now: &str) -> Option<String> {
+    fn walk(prefix: &str, a: Option<&toml::Value>, b: Option<&toml::Value>, out: &mut Vec<String>) {
+        match (a, b) {
+            (Some(toml::Value::Table(x)), Some(toml::Value::Table(y))) => {
+                let mut keys: Vec<&String> = x.keys().chain(y.keys()).collect();
+                keys.sort();
+                keys.dedup();
+                for k in keys {
+                    let path = if prefix.is_empty() { k.clone() } else { format!("{prefix}.{k}") };
+                    walk(&path, x.get(k), y.get(k), out);
+                }
+            }
+            (a, b) if a != b => {
+                let show = |v: Option<&toml::Value>| v.map_or_else(|| "absent".to_owned(), |v| v.to_string());
+                out.push(format!("{prefix}: {} → {}", show(a), show(b)));
+            }
+            _ => {}
+        }
+    }
+    let a: toml::Value = toml::from_str(before).ok()?;
+    let b: toml::Value = toml::from_str(now).ok()?;
+    let mut out = Vec::new();
+    walk("", Some(&a), Some(&b), &mut out);
+    if out.is_empty() {
+        return None;
+    }
+    let more = out.len().saturating_sub(4);
+    out.truncate(4);
+    if more > 0 {
+        out.push(format!("and {more} more"));
+    }
+    Some(out.join("; "))
+}
+
 /// The file beside a bake's maps that records what they were baked with (the scene, the
 /// arguments, the 16-bit range), so that `--resume` keeps only maps of the same bake.
 const BAKE_SETTINGS: &str = ".bake-settings.json";
@@ -562,10 +599,15 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
                 .into_iter()
                 .filter(|k| before.get(k) != settings.get(k))
                 .collect();
-            let named = differs.join(", ").replace("tile_m", "--tile-m").replace("loop_s", "--loop-s").replace(
+            let mut named = differs.join(", ").replace("tile_m", "--tile-m").replace("loop_s", "--loop-s").replace(
                 "png16_range_m",
                 "16-bit displacement range (that of the frames asked for, which needs another)",
             );
+            if let (Some(a), Some(b)) = (before.get("scene").and_then(|v| v.as_str()), settings["scene"].as_str())
+                && let Some(keys) = scene_differences(a, b)
+            {
+                named = named.replacen("scene", &format!("scene ({keys})"), 1);
+            }
             return Err(CliError::Input(format!(
                 "--resume: the maps in {} were baked with another {named}; bake without --resume (every frame again), \
                  or into another folder",
@@ -658,4 +700,27 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
         );
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::scene_differences;
+
+    /// The keys that differ are named with both values, nested tables by their dotted path, a key
+    /// set on one side only as absent on the other; the same scene, or one that is not TOML,
+    /// names none.
+    #[test]
+    fn a_resumed_bake_names_the_scene_keys_that_changed() {
+        let before = "[camera]\nwidth = 8\n[sea]\nwaves = 5\n[sea.fft]\nresolution = 64\n";
+        let now = "[camera]\nwidth = 9\n[sea]\nwaves = 5\nseed = 2\n[sea.fft]\nresolution = 128\n";
+        assert_eq!(
+            scene_differences(before, now).as_deref(),
+            Some("camera.width: 8 → 9; sea.fft.resolution: 64 → 128; sea.seed: absent → 2")
+        );
+        assert_eq!(scene_differences(before, before), None);
+        assert_eq!(scene_differences("Scene { camera: .. }", now), None);
+        let many: String = (0..6).map(|i| format!("k{i} = {i}\n")).collect();
+        let listed = scene_differences("", &many).unwrap();
+        assert!(listed.ends_with("; and 2 more") && listed.starts_with("k0: absent → 0"), "{listed}");
+    }
 }
