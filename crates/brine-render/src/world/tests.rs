@@ -200,13 +200,9 @@ fn a_refused_spectrum_names_the_scene_keys() {
     scene.sea.depth_m = Some(4.0);
     let model = brine_waves::Jonswap::new(0.01, f64::NAN).expect_err("a NaN peak is refused");
     let message = super::sea::refused_spectrum(&scene.sea, &model).to_string();
-    for part in [
-        "sea.spectrum = \"tma\"",
-        "sea.wind_speed_m_s = 0.05",
-        "sea.fetch_km = 3",
-        "sea.depth_m = 4",
-        "omega_p_rad_s",
-    ] {
+    for part in
+        ["sea.spectrum = \"tma\"", "sea.wind_speed_m_s = 0.05", "sea.fetch_km = 3", "sea.depth_m = 4", "omega_p_rad_s"]
+    {
         assert!(message.contains(part), "{part}: {message}");
     }
 }
