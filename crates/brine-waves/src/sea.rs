@@ -299,30 +299,7 @@ impl SeaFrame {
                     deformation: k.deformation,
                 }
             }
-            FrameSurface::Gerstner(surface) => {
-                let f = surface.at_time(t);
-                let p = f.point(x, z);
-                let u = p.rest;
-                let mut m = DVec3::new(1.0, 0.0, 1.0);
-                let mut a = 0.0;
-                for w in self.waves.as_ref().map_or(&[][..], |s| s.waves()) {
-                    let d = w.direction_vector();
-                    let phi = w.wavenumber() * d.dot(u) - w.omega() * t + w.phase();
-                    let c = phi.cos();
-                    m -= w.steepness() * c * DVec3::new(d.x * d.x, d.x * d.y, d.y * d.y);
-                    a -= w.amplitude() * w.omega() * w.omega() * c;
-                }
-                let g = p.gradient;
-                SurfaceSample {
-                    height: p.height,
-                    normal: DVec3::new(-g.x, 1.0, -g.y).normalize(),
-                    displacement: p.displacement,
-                    velocity: p.velocity,
-                    vertical_acceleration: a,
-                    jacobian: m.x * m.z - m.y * m.y,
-                    deformation: m,
-                }
-            }
+            FrameSurface::Gerstner(surface) => self.gerstner_sample(&surface.at_time(t).point(x, z)),
             FrameSurface::Sine(surface) => {
                 let f = surface.at_time(t);
                 let a = self.waves.as_ref().map_or(0.0, |s| {
@@ -366,6 +343,57 @@ impl SeaFrame {
                 }
                 p
             }
+        }
+    }
+
+    /// The particle at rest position `u` (m): its displacement `D(u)` (m,
+    /// [`SeaFrame::rest_displacement`]) and the [`SurfaceSample`] where it is, at `x = u + D(u)`,
+    /// as `(D, sample)`. The Gerstner sea knows the rest position here and samples it without
+    /// inverting (one pass over the waves, where [`SeaFrame::sample`] at `x` would invert back to
+    /// `u` within its tolerance `τ`: the heights agree within `2τL`); the other seas sample at
+    /// `x` with [`SeaFrame::sample`].
+    ///
+    /// # Arguments
+    /// - `u`: rest position (m), finite.
+    ///
+    /// # Returns
+    /// `(D, sample)`: the displacement (m) and the surface at `u + D`.
+    ///
+    /// # References
+    /// docs/equations.md §1(b) (the Gerstner map).
+    pub fn sample_at_rest(&self, u: DVec2) -> (DVec2, SurfaceSample) {
+        debug_assert!(u.is_finite());
+        if let FrameSurface::Gerstner(surface) = &self.surface {
+            let p = surface.at_time(self.time).point_at_rest(u);
+            return (p.displacement, self.gerstner_sample(&p));
+        }
+        let d = self.rest_displacement(u);
+        let x = u + d;
+        (d, self.sample(x.x, x.y))
+    }
+
+    /// The [`SurfaceSample`] of a Gerstner point: its fields, and the deformation `M` and the
+    /// vertical acceleration of its particle.
+    fn gerstner_sample(&self, p: &crate::GerstnerPoint) -> SurfaceSample {
+        let (t, u) = (self.time, p.rest);
+        let mut m = DVec3::new(1.0, 0.0, 1.0);
+        let mut a = 0.0;
+        for w in self.waves.as_ref().map_or(&[][..], |s| s.waves()) {
+            let d = w.direction_vector();
+            let phi = w.wavenumber() * d.dot(u) - w.omega() * t + w.phase();
+            let c = phi.cos();
+            m -= w.steepness() * c * DVec3::new(d.x * d.x, d.x * d.y, d.y * d.y);
+            a -= w.amplitude() * w.omega() * w.omega() * c;
+        }
+        let g = p.gradient;
+        SurfaceSample {
+            height: p.height,
+            normal: DVec3::new(-g.x, 1.0, -g.y).normalize(),
+            displacement: p.displacement,
+            velocity: p.velocity,
+            vertical_acceleration: a,
+            jacobian: m.x * m.z - m.y * m.y,
+            deformation: m,
         }
     }
 
@@ -524,6 +552,38 @@ pub(crate) mod tests {
             let p = g.sample(x, z);
             assert!((p.jacobian - surface.jacobian(x, z, 7.0)).abs() < 1e-9);
             assert!((p.height - surface.height(x, z, 7.0)).abs() < 1e-9);
+        }
+    }
+
+    /// The sample of a particle at its rest position is the sample where it is. On the trochoid
+    /// sea it is `sample` at `u + D(u)`, bit for bit. On the Gerstner sea it is taken at `u`
+    /// without inverting, and `sample` inverts back to a rest position within `2τ/(1 − ΣQ)` of it
+    /// (`τ` ≈ 10⁻¹² m, `ΣQ` = 0.9: 2×10⁻¹¹ m); the fastest field, the gradient, moves by at most
+    /// `Σk²A/(1 − ΣQ)³` per metre of it (about 10³ m⁻¹ for this 10 m/s set): 2×10⁻⁸, so 10⁻⁷.
+    #[test]
+    fn the_sample_at_rest_is_the_sample_where_the_particle_is() {
+        const REST_SAMPLE_ABS: f64 = 1e-7;
+        let set = set(10.0);
+        for gerstner in [true, false] {
+            let ocean = if gerstner { Ocean::gerstner(set.clone()).unwrap() } else { Ocean::trochoids(set.clone()) };
+            let frame = ocean.at_time(7.0);
+            for (x, z) in [(0.0, 0.0), (13.0, -4.5), (-80.0, 33.0)] {
+                let u = DVec2::new(x, z);
+                let (d, a) = frame.sample_at_rest(u);
+                let p = u + d;
+                let b = frame.sample(p.x, p.y);
+                if !gerstner {
+                    assert_eq!(d, frame.rest_displacement(u));
+                    assert_eq!(a, b);
+                    continue;
+                }
+                assert!((d - frame.rest_displacement(u)).length() < 1e-12, "{u}");
+                assert!((a.height - b.height).abs() < REST_SAMPLE_ABS, "{u}");
+                assert!((a.normal - b.normal).length() < REST_SAMPLE_ABS, "{u}");
+                assert!((a.velocity - b.velocity).length() < REST_SAMPLE_ABS, "{u}");
+                assert!((a.jacobian - b.jacobian).abs() < REST_SAMPLE_ABS, "{u}");
+                assert!((a.displacement - b.displacement).length() < REST_SAMPLE_ABS, "{u}");
+            }
         }
     }
 

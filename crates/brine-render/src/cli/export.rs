@@ -425,12 +425,16 @@ pub fn grid_limit_json(l: &crate::export::GridLimit, up: UpAxis) -> serde_json::
     })
 }
 
-/// The keys in which two scene files differ, as `key: old → new` (at most four, then how many
-/// more), or `None` if either is not TOML (a scene recorded in its Rust form) or they hold the
-/// same keys and values.
+/// The keys in which two scene files differ, as `baked → now: key old → new` (the `[sea]` keys
+/// first, then the others; at most four, then how many more), or `None` if either is not TOML
+/// (a scene recorded in its Rust form) or they hold the same keys and values. A table on one
+/// side only is listed key by key.
 fn scene_differences(before: &str, now: &str) -> Option<String> {
     fn walk(prefix: &str, a: Option<&toml::Value>, b: Option<&toml::Value>, out: &mut Vec<String>) {
+        let empty = toml::Value::Table(toml::Table::new());
         match (a, b) {
+            (Some(toml::Value::Table(_)), None) => walk(prefix, a, Some(&empty), out),
+            (None, Some(toml::Value::Table(_))) => walk(prefix, Some(&empty), b, out),
             (Some(toml::Value::Table(x)), Some(toml::Value::Table(y))) => {
                 let mut keys: Vec<&String> = x.keys().chain(y.keys()).collect();
                 keys.sort();
@@ -442,7 +446,7 @@ fn scene_differences(before: &str, now: &str) -> Option<String> {
             }
             (a, b) if a != b => {
                 let show = |v: Option<&toml::Value>| v.map_or_else(|| "absent".to_owned(), |v| v.to_string());
-                out.push(format!("{prefix}: {} → {}", show(a), show(b)));
+                out.push(format!("{prefix} {} → {}", show(a), show(b)));
             }
             _ => {}
         }
@@ -454,12 +458,14 @@ fn scene_differences(before: &str, now: &str) -> Option<String> {
     if out.is_empty() {
         return None;
     }
+    // The waves' keys first: the maps are made of them (stable: each group stays sorted).
+    out.sort_by_key(|line| !line.starts_with("sea."));
     let more = out.len().saturating_sub(4);
     out.truncate(4);
     if more > 0 {
         out.push(format!("and {more} more"));
     }
-    Some(out.join("; "))
+    Some(format!("baked → now: {}", out.join("; ")))
 }
 
 /// The file beside a bake's maps that records what they were baked with (the scene, the
@@ -591,14 +597,22 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
     if args.resume {
         crate::output::remove_stale_temporaries(&args.output.join("bake.json"));
         crate::output::remove_stale_temporaries(&settings_path);
+        // The scenes are compared as TOML tables: the same keys written another way are the same.
+        let same = |before: &serde_json::Value, k: &str| match (before.get(k), settings.get(k)) {
+            (Some(serde_json::Value::String(a)), Some(serde_json::Value::String(b))) if k == "scene" => {
+                match (toml::from_str::<toml::Value>(a), toml::from_str::<toml::Value>(b)) {
+                    (Ok(x), Ok(y)) => x == y,
+                    _ => a == b,
+                }
+            }
+            (a, b) => a == b,
+        };
+        const KEYS: [&str; 7] = ["scene", "size", "tile_m", "loop_s", "up", "format", "png16_range_m"];
         if let Some(before) =
             std::fs::read(&settings_path).ok().and_then(|b| serde_json::from_slice::<serde_json::Value>(&b).ok())
-            && before != settings
+            && !KEYS.iter().all(|k| same(&before, k))
         {
-            let differs: Vec<&str> = ["scene", "size", "tile_m", "loop_s", "up", "format", "png16_range_m"]
-                .into_iter()
-                .filter(|k| before.get(k) != settings.get(k))
-                .collect();
+            let differs: Vec<&str> = KEYS.into_iter().filter(|k| !same(&before, k)).collect();
             let mut named = differs.join(", ").replace("tile_m", "--tile-m").replace("loop_s", "--loop-s").replace(
                 "png16_range_m",
                 "16-bit displacement range (that of the frames asked for, which needs another)",
@@ -706,21 +720,30 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
 mod tests {
     use super::scene_differences;
 
-    /// The keys that differ are named with both values, nested tables by their dotted path, a key
-    /// set on one side only as absent on the other; the same scene, or one that is not TOML,
+    /// The keys that differ are named with both values, the `[sea]` keys first and each group
+    /// sorted, nested tables by their dotted path, a key set on one side only as absent on the
+    /// other and a table on one side only key by key; the same scene, or one that is not TOML,
     /// names none.
     #[test]
     fn a_resumed_bake_names_the_scene_keys_that_changed() {
         let before = "[camera]\nwidth = 8\n[sea]\nwaves = 5\n[sea.fft]\nresolution = 64\n";
-        let now = "[camera]\nwidth = 9\n[sea]\nwaves = 5\nseed = 2\n[sea.fft]\nresolution = 128\n";
+        let now =
+            "[camera]\nwidth = 9\n[sea]\nwaves = 5\nseed = 2\n[sea.fft]\nresolution = 128\n[sea.swell]\nwaves = 3\n";
         assert_eq!(
             scene_differences(before, now).as_deref(),
-            Some("camera.width: 8 → 9; sea.fft.resolution: 64 → 128; sea.seed: absent → 2")
+            Some(
+                "baked → now: sea.fft.resolution 64 → 128; sea.seed absent → 2; sea.swell.waves absent → 3; \
+                 camera.width 8 → 9"
+            )
         );
         assert_eq!(scene_differences(before, before), None);
+        assert_eq!(
+            scene_differences(before, "camera = { width = 8 }\nsea = { waves = 5, fft = { resolution = 64 } }"),
+            None
+        );
         assert_eq!(scene_differences("Scene { camera: .. }", now), None);
         let many: String = (0..6).map(|i| format!("k{i} = {i}\n")).collect();
         let listed = scene_differences("", &many).unwrap();
-        assert!(listed.ends_with("; and 2 more") && listed.starts_with("k0: absent → 0"), "{listed}");
+        assert!(listed.ends_with("; and 2 more") && listed.starts_with("baked → now: k0 absent → 0"), "{listed}");
     }
 }

@@ -69,8 +69,8 @@ impl SpectrumParams {
         if self.fetch_m.is_some() && !matches!(self.model, M::Jonswap | M::Tma | M::Elfouhaily) {
             return Err(only("fetch-m", "jonswap, tma and elfouhaily"));
         }
-        // A parameter the fetch laws derive (the peak frequency, Phillips' α) out of its range is
-        // said with the fetch and wind that gave it.
+        // A parameter the fetch laws derive out of its range (the Phillips constant α of a very
+        // short fetch under a strong wind) is said with the fetch and wind that gave it.
         let fetch = self.fetch_m.unwrap_or(DEFAULT_FETCH_M);
         let from_fetch = |e: brine_waves::WaveError| {
             let m = e.to_string();

@@ -207,9 +207,8 @@ fn bake_sea(world: &World, frame: &SeaFrame, t: f64, options: &BakeOptions) -> B
             let mut lost = DVec3::ZERO;
             for i in 0..n {
                 let u = DVec2::new(i as f64, j as f64) * texel;
-                let d = frame.rest_displacement(u);
+                let (d, s) = frame.sample_at_rest(u);
                 let x = u + d;
-                let s = frame.sample(x.x, x.y);
                 let p = DVec3::new(x.x, s.height, x.y);
                 let cover = world.cover_at_time(p, s.normal, t, texel);
                 let (mu, e) = s.minor_eigen();

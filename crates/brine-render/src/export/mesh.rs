@@ -81,7 +81,17 @@ impl MeshGrid {
 /// One vertex of the surface: the point of rest position `u` (see brine-waves
 /// `SeaFrame::rest_displacement`) with its normal and cover.
 fn vertex(world: &World, frame: &brine_waves::SeaFrame, x: DVec2, footprint_m: f64) -> ([f32; 3], [f32; 3], f32, f32) {
-    let s = frame.sample(x.x, x.y);
+    vertex_of(world, frame, x, &frame.sample(x.x, x.y), footprint_m)
+}
+
+/// [`vertex`] of a sample already taken at `x`.
+fn vertex_of(
+    world: &World,
+    frame: &brine_waves::SeaFrame,
+    x: DVec2,
+    s: &brine_waves::SurfaceSample,
+    footprint_m: f64,
+) -> ([f32; 3], [f32; 3], f32, f32) {
     let p = DVec3::new(x.x, s.height, x.y);
     let c = world.cover_at_time(p, s.normal, frame.time(), footprint_m);
     (p.as_vec3().to_array(), s.normal.as_vec3().to_array(), c.foam as f32, c.whitecap as f32)
@@ -167,8 +177,8 @@ fn grid_mesh_of(world: &World, frame: &brine_waves::SeaFrame, grid: &MeshGrid) -
         .with_min_len(1024)
         .map(|k| {
             let u = origin + DVec2::new((k % n) as f64, (k / n) as f64) * grid.spacing_m;
-            let x = u + frame.rest_displacement(u);
-            vertex(world, frame, x, grid.spacing_m)
+            let (d, s) = frame.sample_at_rest(u);
+            vertex_of(world, frame, u + d, &s, grid.spacing_m)
         })
         .collect();
     grid_of(n, n, vertices)
@@ -246,8 +256,7 @@ fn faded_vertex(
     angle: f64,
 ) -> ([f32; 3], [f32; 3], f32, f32) {
     let c = world.camera.position;
-    let s = frame.sample(x.x, x.y);
-    let ray = DVec3::new(x.x, s.height, x.y) - c;
+    let ray = DVec3::new(x.x, frame.height(x.x, x.y), x.y) - c;
     let (t, d) = (ray.length(), ray.normalize_or_zero());
     let h = traced.faded_height(x.x, x.y, d, angle, t);
     // The shading gradient of the drawn waves (the sine sea's bump-mapped detail waves included,

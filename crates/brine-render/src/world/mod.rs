@@ -617,8 +617,11 @@ impl World {
         } else {
             None
         };
-        let spray =
-            if ph.spray && s.wind_speed_m_s > 0.0 { Some(spray::spray(s, &sky, &variance_total)?) } else { None };
+        let spray = if ph.spray && s.wind_speed_m_s > sea::CALM_WIND_M_S {
+            Some(spray::spray(s, &sky, &variance_total)?)
+        } else {
+            None
+        };
         let crest = if scene.phenomena.subsurface {
             let m = |i: usize| DipoleMaterial::new(water.a[i], water.b[i], CREST_PHASE_G, WATER_IOR);
             Some([m(0)?, m(1)?, m(2)?])

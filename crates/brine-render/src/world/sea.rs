@@ -65,6 +65,12 @@ pub(super) struct SeaSpectra {
     pub(super) wind_sea: bool,
 }
 
+/// Winds at or under this (m/s) are a flat calm without building their spectrum. Every spectrum's
+/// fit would start at waves far under a millimetre there (Pierson–Moskowitz peaks at 8×10⁶ rad/s
+/// at 10⁻⁶ m/s), which the rule of [`sea_spectra`] makes a calm anyway, and the peak laws `∝ 1/U₁₀`
+/// overflow at the lightest winds the scene accepts (JONSWAP's under 5×10⁻³⁰⁸ m/s).
+pub(super) const CALM_WIND_M_S: f64 = 1e-6;
+
 /// Shortest wave any surface draws when the spectrum holds less slope than Cox & Munk's total
 /// above it (m): 1 mm, the end of the capillary range.
 pub(super) const SHORTEST_WAVE_M: f64 = 1e-3;
@@ -93,7 +99,7 @@ pub(super) fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, 
     let mut spreadings: Vec<Box<dyn Spreading>> = Vec::new();
     let mut counts = Vec::new();
     let mut options = Vec::new();
-    let wind_sea = if s.wind_speed_m_s > 0.0 && (any_count || s.waves > 0) {
+    let wind_sea = if s.wind_speed_m_s > CALM_WIND_M_S && (any_count || s.waves > 0) {
         let spectrum = sea_spectrum(s)?;
         // A wind so light that even the fit's longest waves, at half the peak frequency, are
         // shorter than the shortest wave any surface draws has no wind sea to draw: its waves

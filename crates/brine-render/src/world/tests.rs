@@ -188,8 +188,8 @@ fn shared_parts_of_another_scene_are_refused() {
     assert!(e.to_string().contains("another scene"), "{e}");
 }
 
-/// A sea the spectrum's model refuses is reported with the scene keys that made it. No scene in
-/// the documented ranges reaches a refusal (the next test), so the message is built from a model
+/// A sea the spectrum's model refuses is reported with the scene keys that made it. A scene in
+/// the documented ranges reaches no refusal (the next test), so the message is built from a model
 /// error directly.
 #[test]
 fn a_refused_spectrum_names_the_scene_keys() {
@@ -207,28 +207,42 @@ fn a_refused_spectrum_names_the_scene_keys() {
     }
 }
 
-/// Every spectrum builds a sea at the lightest winds of the scene's range: a calm where the wind
-/// is too light to raise millimetre waves, ripples above. JONSWAP and TMA peak at
-/// `0.855 g/U₁₀` there (279 rad/s at 0.03 m/s), as Pierson–Moskowitz.
+/// Every spectrum and surface builds a sea at the lightest winds of the scene's range, down to
+/// 10⁻³⁰⁰ m/s. Pierson–Moskowitz, JONSWAP and TMA (whose fully developed peak is PM's,
+/// `0.855 g/U₁₀`) are a calm, with no wave fitted, where even half the peak frequency is a wave
+/// under the shortest drawn, 1 mm (in deep water `k = ω²/g` at `ω_p/2` = 419 rad/s for 0.01 m/s:
+/// 0.35 mm), and draw ripples from 0.03 m/s (`ω_p/2` = 140 rad/s: a 3 mm wave).
 #[test]
 fn the_lightest_winds_build_a_sea_with_every_spectrum() {
-    for spectrum in [
+    let spectra = [
         SpectrumKind::PiersonMoskowitz,
         SpectrumKind::Jonswap,
-        SpectrumKind::Phillips,
         SpectrumKind::Tma,
+        SpectrumKind::Phillips,
         SpectrumKind::Elfouhaily,
-    ] {
-        for wind in [1e-4, 0.01, 0.021, 0.03, 0.05, 0.08] {
-            let mut scene = Scene::default_scene();
-            scene.sea.spectrum = spectrum;
-            scene.sea.wind_speed_m_s = wind;
-            scene.sea.depth_m = Some(20.0);
-            scene.camera.width = 8;
-            scene.camera.height = 6;
-            (scene.phenomena.whitecaps, scene.phenomena.foam) = (false, false);
-            if let Err(e) = World::new(&scene) {
-                panic!("{spectrum:?} at {wind} m/s: {e}");
+    ];
+    for surface in [SurfaceKind::Trochoids, SurfaceKind::Gerstner, SurfaceKind::Sine, SurfaceKind::Fft] {
+        for spectrum in spectra {
+            for wind in [1e-300, 1e-4, 0.01, 0.03, 0.05, 0.08] {
+                let mut scene = Scene::default_scene();
+                scene.sea.spectrum = spectrum;
+                scene.sea.surface = surface;
+                scene.sea.wind_speed_m_s = wind;
+                scene.sea.depth_m = Some(20.0);
+                scene.sea.fft.resolution = 64;
+                scene.camera.width = 8;
+                scene.camera.height = 6;
+                (scene.phenomena.whitecaps, scene.phenomena.foam) = (false, false);
+                let world = match World::new(&scene) {
+                    Ok(w) => w,
+                    Err(e) => panic!("{surface:?}, {spectrum:?} at {wind} m/s: {e}"),
+                };
+                let pm_like =
+                    matches!(spectrum, SpectrumKind::PiersonMoskowitz | SpectrumKind::Jonswap | SpectrumKind::Tma);
+                if pm_like && surface != SurfaceKind::Fft {
+                    let calm = world.fitted_set().is_empty();
+                    assert_eq!(calm, wind <= 0.01, "{surface:?}, {spectrum:?} at {wind} m/s: calm = {calm}");
+                }
             }
         }
     }

@@ -76,8 +76,9 @@ impl Jonswap {
     /// # Arguments
     /// - `alpha`: Phillips constant (dimensionless), `(0, 1)`.
     /// - `omega_p`: peak angular frequency (rad s⁻¹), `(0, ∞)`, finite: as for
-    ///   Pierson–Moskowitz, any peak [`Jonswap::from_fetch`] gives at a wind of `(0, 60]` m/s
-    ///   (a peak above about 500 rad/s is a ripple of millimetres, which a renderer treats as calm).
+    ///   Pierson–Moskowitz, the peak [`Jonswap::from_fetch`] gives at a wind of `(0, 60]` m/s
+    ///   down to 5×10⁻³⁰⁸ m/s, where `0.855 g/U₁₀` overflows (a peak of 500 rad/s is a wave a
+    ///   quarter of a millimetre long).
     ///
     /// # Errors
     /// [`WaveError::OutOfRange`] naming the first parameter outside its range.

@@ -51,11 +51,20 @@ impl Tma {
     /// - `depth_m`: water depth `h` (m), `(0, 10⁴]`.
     ///
     /// # Errors
-    /// [`WaveError::OutOfRange`] for a depth outside `(0, 10⁴]` m.
+    /// [`WaveError::OutOfRange`] for a depth outside `(0, 10⁴]` m, or a JONSWAP peak so high
+    /// (over about 10⁶¹ rad/s) that the spectrum underflows to 0.
     pub fn new(jonswap: Jonswap, depth_m: f64) -> Result<Self, WaveError> {
         let depth = check("depth_m", depth_m, depth_m > 0.0 && depth_m <= 1e4, "(0, 1e4] m")?;
         let mut tma = Self { jonswap, depth, peak: jonswap.peak_omega() };
         tma.peak = argmax_log(|w| tma.s_omega(w), 0.5 * tma.peak, 4.0 * tma.peak);
+        // A JONSWAP peak past about 10⁶¹ rad/s (a wind under 10⁻⁶⁰ m/s) leaves `ω⁻⁵` no room in
+        // f64: the spectrum underflows to 0 and has no maximum to find.
+        check(
+            "peak_omega_rad_s",
+            tma.peak,
+            tma.peak.is_finite() && tma.peak > 0.0 && tma.s_omega(tma.peak) > 0.0,
+            "a finite peak of a spectrum that does not underflow",
+        )?;
         Ok(tma)
     }
 
