@@ -712,10 +712,10 @@ mod tests {
     /// `point` inverts once and gives each field of the single functions: the height bit for bit
     /// (the same lane inversion, an identity of the code), the others from a rest position that
     /// meets the same stopping rule. Derived bound: the two rest positions lie within
-    /// `2τ/(1 − ΣQ)` (τ ≤ 2.4×10⁻¹² m at these points, ΣQ = 0.9: 5×10⁻¹¹ m), and the fastest
-    /// field, the gradient, moves by at most `Σ kᵢ²Aᵢ/(1 − ΣQ)³` (about 1.6×10³ m⁻¹ here) per
-    /// metre of it: 8×10⁻⁸. A point taken at another rest position (a wrong root, a stale
-    /// state) differs by the fields' own size, 10⁻³ and more.
+    /// `2τ/(1 − ΣQ)` (τ about 3×10⁻¹² m at these points, ΣQ = 0.9), and the fastest field, the
+    /// gradient, moves by at most `Σ kᵢ²Aᵢ/(1 − ΣQ)³` per metre of it; the test computes that
+    /// product for its set and checks it is within this tolerance. A point taken at another rest
+    /// position (a wrong root, a stale state) differs by the fields' own size, 10⁻³ and more.
     const POINT_FIELDS_ABS: f64 = 1e-7;
 
     #[test]
