@@ -85,6 +85,10 @@ impl<'a> SeaField<'a> {
             _ => self.sea.faded_gradient_and_covariance(p.x, p.z, d, angle, t),
         };
         if let Some(detail) = &world.detail {
+            // The detail waves ride on the drawn surface: the pixel covers them as it covers the
+            // facet it meets, longer along the view on a face tilted away from the eye.
+            let facet = DVec3::new(-g.x, 1.0, -g.y).normalize();
+            let footprint = EllipticalFootprint::on_facet(across, d, facet);
             let f = detail.filtered_elliptical(p.x, p.z, &footprint);
             g += f.gradient;
             c += f.covariance;

@@ -389,10 +389,9 @@ pub(super) fn white_water(
     if world.foam.is_none() && world.whitecaps.is_none() && world.white_water.is_none() {
         return shade;
     }
-    // Sample footprint on the sea: the sample's angle at distance t across the view, stretched by
-    // the grazing view along it.
+    // Sample footprint on the sea: the sample's angle at distance t across the view, stretched
+    // along it by the grazing view of the facet met.
     let across = t * world.sample_angle();
-    let along = across / d.y.abs().max(MIN_FOOTPRINT_GRAZING);
     let sun = world.sky.sun();
     let cos_sun = n.dot(sun.direction);
     let e_sky = world.sky.horizontal_irradiance_rgb();
@@ -402,7 +401,7 @@ pub(super) fn white_water(
         let f = |c: usize| brine_foam::foam_radiance(r, e_sun[c], cos_sun, e_sky[c] + e_moon[c]);
         DVec3::new(f(0), f(1), f(2))
     };
-    let cover = world.cover_seen(p, n, across, along, d);
+    let cover = world.cover_seen(p, n, across, d);
     if let Some((white, brightness)) = cover.memory {
         // Fresh foam (Koepke's R_f) where the crest breaks; ageing foam thins (Koepke's falling
         // reflectance): the water shows through it, through holes where the pixel resolves its

@@ -256,16 +256,13 @@ pub struct Cover {
 }
 
 impl World {
-    /// The white water at surface point `p` of upward normal `n` (unit), seen through a pixel
-    /// footprint of sides `across_m` across the view and `along_m ≥ across_m` along the view's
-    /// horizontal direction `d` (m, `≥ 0`; 0 for a point).
-    pub fn cover_seen(&self, p: DVec3, n: DVec3, across_m: f64, along_m: f64, d: DVec3) -> Cover {
+    /// The white water at surface point `p` of upward normal `n` (unit), seen along `d` (unit)
+    /// through a pixel of side `across_m` across the view (m, `≥ 0`; 0 for a point): the pixel's
+    /// footprint on the facet of normal `n` (brine-core `EllipticalFootprint::on_facet`), longer
+    /// along the view the more the facet turns away from the eye.
+    pub fn cover_seen(&self, p: DVec3, n: DVec3, across_m: f64, d: DVec3) -> Cover {
         // A Gaussian footprint of a box's spread has σ = ℓ/√12 on each axis.
-        let footprint = EllipticalFootprint::new(
-            across_m / BOX_WIDTH_PER_SIGMA,
-            along_m / BOX_WIDTH_PER_SIGMA,
-            DVec2::new(d.x, d.z),
-        );
+        let footprint = EllipticalFootprint::on_facet(across_m / BOX_WIDTH_PER_SIGMA, d, n);
         self.cover_over(p, n, self.time, &footprint)
     }
 
