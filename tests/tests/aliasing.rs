@@ -60,7 +60,8 @@ const MAX_NOISE_RATIO: f64 = 1.08;
 /// alias there; filtered over the facet's, one sample per pixel is as smooth as sixteen.
 #[test]
 fn a_grazing_storm_sea_aliases_no_more_at_one_sample_than_at_sixteen() {
-    // The near field: the lowest three eighths of the rows, 5–16 m from the eye.
+    // The near field: the lowest three eighths of the rows, 5.5–16 m from the eye on the mean
+    // plane in the centre column.
     let rows = 113..179;
     let one = high_pass(&storm(1), rows.clone());
     let many = high_pass(&storm(16), rows);

@@ -166,14 +166,17 @@ impl EllipticalFootprint {
     /// a facet of normal `n`: the pixel's round cone of standard deviation `σ` (m, at the hit,
     /// across the ray) cut by the facet's plane and projected on the horizontal.
     ///
-    /// A ray of the pixel, `d + δ` with `δ ⊥ d`, meets the facet's plane displaced by
-    /// `t (δ − d (n·δ)/(n·d))`; with `δ = σ u₁`, `σ u₂` (`u₁, u₂, d` orthonormal) the footprint's
-    /// covariance in `(x, z)` is `σ² (a₁a₁ᵀ + a₂a₂ᵀ)`, `aᵢ` the horizontal part of
-    /// `uᵢ − d (n·uᵢ)/(n·d)`, whose axes are its eigenvectors. On a level facet (`n = ŷ`) it is
-    /// `σ` across the view and `σ/|d_y|` along it. A facet tilted away from the eye is seen at a
-    /// lower grazing angle than the mean plane, and the pixel covers more of it along the view;
-    /// one tilted toward the eye, less. `|n·d|` is floored at [`MIN_FOOTPRINT_GRAZING`], as
-    /// `|d_y|` is for the mean plane.
+    /// A ray of the pixel, `d + δ` with `δ ⊥ d`, meets the facet's plane, `t` metres from the
+    /// eye, displaced by `t (δ − d (n·δ)/(n·d))` to first order; with `δ = (σ/t) u₁`, `(σ/t) u₂`
+    /// (`u₁, u₂, d` orthonormal) the footprint's covariance in `(x, z)` is
+    /// `C = σ² (a₁a₁ᵀ + a₂a₂ᵀ)`, `aᵢ` the horizontal part of `uᵢ − d (n·uᵢ)/(n·d)`, whose
+    /// eigenvectors are its axes; the minor eigenvalue is taken as `det C/λ_major`,
+    /// `det C = σ⁴ (a₁ × a₂)²`, which keeps its precision when the ellipse is long. On a level
+    /// facet (`n = ŷ`) it is `σ` across the view and `σ/|d_y|` along it. A facet whose normal
+    /// leans along the view (a face turned away from the eye) is seen at a lower grazing angle
+    /// than the mean plane, and the pixel covers more of it along the view; one turned toward the
+    /// eye, less. `|n·d|` is floored at [`MIN_FOOTPRINT_GRAZING`], as `|d_y|` is for the mean
+    /// plane (keeping its sign, so that `n` and `−n` give the same footprint).
     ///
     /// # Arguments
     /// - `sigma_m`: `σ` (m), `≥ 0`.
@@ -183,8 +186,8 @@ impl EllipticalFootprint {
     /// The footprint ([`EllipticalFootprint::new`] of the eigen-axes).
     ///
     /// # References
-    /// Heckbert P. 1989, "Fundamentals of texture mapping and image warping" §3.5.5 (a pixel's
-    /// footprint through the Jacobian of the screen-to-texture map); Igehy H. 1999, "Tracing ray
+    /// Heckbert P. 1989, "Fundamentals of texture mapping and image warping", UCB/CSD-89-516 (a
+    /// pixel's footprint through the Jacobian of the screen-to-texture map); Igehy H. 1999, "Tracing ray
     /// differentials" (the displacement of a ray's neighbour on the surface's tangent plane).
     pub fn on_facet(sigma_m: f64, d: DVec3, n: DVec3) -> Self {
         debug_assert!(sigma_m >= 0.0 && d.is_normalized() && n.is_normalized(), "σ {sigma_m}, d {d}, n {n}");
@@ -199,7 +202,9 @@ impl EllipticalFootprint {
         let (xx, xz, zz) = (a1.x * a1.x + a2.x * a2.x, a1.x * a1.y + a2.x * a2.y, a1.y * a1.y + a2.y * a2.y);
         let (mean, half) = (0.5 * (xx + zz), 0.5 * (xx - zz));
         let r = half.hypot(xz);
-        let (major, minor) = (mean + r, (mean - r).max(0.0));
+        let major = mean + r;
+        let det = a1.perp_dot(a2).powi(2);
+        let minor = if major > 0.0 { det / major } else { 0.0 };
         // The major eigenvector, from whichever row of `C − λI` is the better conditioned.
         let axis = if half >= 0.0 { DVec2::new(major - zz, xz) } else { DVec2::new(xz, major - xx) };
         Self::new(sigma_m * minor.sqrt(), sigma_m * major.sqrt(), axis)
@@ -261,19 +266,28 @@ mod tests {
     #[test]
     fn a_facet_turned_away_stretches_the_footprint_along_the_view() {
         let sigma = 0.02;
-        for (gamma_deg, beta_deg) in [(10.0, 0.0), (10.0, 5.0), (10.0, -5.0), (30.0, 20.0), (60.0, -25.0), (2.0, 0.0)] {
+        for (gamma_deg, beta_deg) in
+            [(10.0, 0.0), (10.0, 5.0), (10.0, -5.0), (30.0, 20.0), (60.0, -25.0), (2.0, 0.0), (12.0, 10.0)]
+        {
             let (g, b) = (f64::to_radians(gamma_deg), f64::to_radians(beta_deg));
             for yaw in [0.0, 1.0, 2.5] {
                 let along = DVec2::from_angle(yaw);
                 let d = DVec3::new(g.cos() * along.x, -g.sin(), g.cos() * along.y);
                 let n = DVec3::new(b.sin() * along.x, b.cos(), b.sin() * along.y);
                 let e = EllipticalFootprint::on_facet(sigma, d, n);
-                // Under the floor (γ = 2°, β = 0) the along axis is `u₂ − d (n·u₂)/(−0.05)`
-                // projected: `sin γ + cos²γ/0.05`, 20.01 where the mean plane's stretch stops at 20.
+                // Seen from below the facet (`n·d > 0`) the footprint is the same.
+                let below = EllipticalFootprint::on_facet(sigma, d, -n);
+                assert!((below.major_m() - e.major_m()).abs() <= 1e-15 * e.major_m(), "γ {gamma_deg}, β {beta_deg}");
+                assert!((below.minor_m() - e.minor_m()).abs() <= 1e-15 * e.major_m(), "γ {gamma_deg}, β {beta_deg}");
+                // Under the floor the along axis is `u₂ − d (n·u₂)/(−0.05)` projected, `u₂` the
+                // unit vector across `d` in the vertical plane: `n·u₂ = cos(γ − β)`, so
+                // `cos(γ − β)/0.05` along the facet, whose horizontal part is
+                // `(sin γ + cos γ cos(γ − β)/0.05)`. On a level facet (γ = 2°, β = 0) that is
+                // `sin γ + cos²γ/0.05`, 20.01 where the mean plane's stretch stops at 20.
                 let expected = if (g - b).sin() >= MIN_FOOTPRINT_GRAZING {
                     sigma * b.cos() / (g - b).sin()
                 } else {
-                    sigma * (g.sin() + g.cos() * g.cos() / MIN_FOOTPRINT_GRAZING)
+                    sigma * (g.sin() + g.cos() * (g - b).cos() / MIN_FOOTPRINT_GRAZING)
                 };
                 let level = EllipticalFootprint::new(sigma, expected, along);
                 assert!(
@@ -330,17 +344,21 @@ mod tests {
             let (xx, xz, zz) = (a1.x * a1.x + a2.x * a2.x, a1.x * a1.y + a2.x * a2.y, a1.y * a1.y + a2.y * a2.y);
             let r = (0.5 * (xx - zz)).hypot(xz);
             let (major, minor) = ((0.5 * (xx + zz) + r).sqrt() * sigma, (0.5 * (xx + zz) - r).max(0.0).sqrt() * sigma);
-            proptest::prop_assume!(major <= 7.9 * minor);
             let e = EllipticalFootprint::on_facet(sigma, d, n);
+            // The area's closed form against the formula's: rounding only.
             let area = sigma * (n.y / n.dot(d)).abs().sqrt();
-            proptest::prop_assert!((e.area_sigma_m() - area).abs() <= RAY_DIFFERENCE * area, "{e:?} against area {area}");
-            // A nearly round footprint (`major² ≤ 1.01 minor²`) is read as the round one of its minor axis.
+            proptest::prop_assert!((e.area_sigma_m() - area).abs() <= 1e-12 * area, "{e:?} against area {area}");
+            // A nearly round footprint (`major² ≤ 1.01 minor²`) is read as the round one of its
+            // minor axis; beyond a ratio of 8 the minor axis is widened.
             if major > 1.006 * minor {
                 proptest::prop_assert!((e.major_m() - major).abs() <= RAY_DIFFERENCE * major, "{e:?} against {major}");
-                proptest::prop_assert!((e.minor_m() - minor).abs() <= RAY_DIFFERENCE * major, "{e:?} against {minor}");
+                if major <= 7.9 * minor {
+                    proptest::prop_assert!((e.minor_m() - minor).abs() <= RAY_DIFFERENCE * major, "{e:?} against {minor}");
+                }
             }
             if e.probes() > 1 && major > 1.01 * minor {
-                // Along the major eigenvector: `C v = λ v`.
+                // Along the major eigenvector: `C v = λ v`, within 10⁻⁴ λ (the differences' error
+                // is about 10⁻⁸; an axis 0.3° off the eigenvector of a ratio of 1.01 fails).
                 let v = e.step.normalize();
                 let cv = DVec2::new(xx * v.x + xz * v.y, xz * v.x + zz * v.y) * sigma * sigma;
                 proptest::prop_assert!((cv - v * major * major).length() <= 1e-4 * major * major, "{e:?}");

@@ -68,8 +68,10 @@ impl<'a> SeaField<'a> {
     /// primary hit `t` along `d`, in one pass over the waves where the surface allows it.
     ///
     /// The detail normals (the waves between the traced band and the pixel) add their gradient,
-    /// read through the pixel's footprint, and the slopes the footprint hides join the BRDF's.
-    pub(super) fn hit_geometry(&self, p: DVec3, d: DVec3, t: f64, world: &World) -> (DVec3, SlopeVariance) {
+    /// read through the pixel's footprint on the drawn facet, and the slopes the footprint hides
+    /// join the BRDF's. The third value is the drawn facet's normal (without the detail), on
+    /// which the textures laid on the surface are read.
+    pub(super) fn hit_geometry(&self, p: DVec3, d: DVec3, t: f64, world: &World) -> (DVec3, SlopeVariance, DVec3) {
         let angle = world.filtering_angle();
         // The pixel on the sea: `αt` across the view, `αt/max(|d_y|, 0.05)` along it, as Gaussians of the
         // same spread as those boxes.
@@ -84,16 +86,17 @@ impl<'a> SeaField<'a> {
             }
             _ => self.sea.faded_gradient_and_covariance(p.x, p.z, d, angle, t),
         };
+        // The facet of the drawn surface the ray meets.
+        let facet = DVec3::new(-g.x, 1.0, -g.y).normalize();
         if let Some(detail) = &world.detail {
             // The detail waves ride on the drawn surface: the pixel covers them as it covers the
-            // facet it meets, longer along the view on a face tilted away from the eye.
-            let facet = DVec3::new(-g.x, 1.0, -g.y).normalize();
+            // facet it meets, longer along the view on a face turned away from the eye.
             let footprint = EllipticalFootprint::on_facet(across, d, facet);
             let f = detail.filtered_elliptical(p.x, p.z, &footprint);
             g += f.gradient;
             c += f.covariance;
         }
-        (DVec3::new(-g.x, 1.0, -g.y).normalize(), Self::variance_with(world, c))
+        (DVec3::new(-g.x, 1.0, -g.y).normalize(), Self::variance_with(world, c), facet)
     }
 
     /// The unresolved variances plus a faded world-axes covariance `c = (xx, xz, zz)`, in the wind

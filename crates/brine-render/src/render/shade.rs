@@ -11,23 +11,23 @@ pub(super) fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, hit: Optio
     }
     let faded;
     let mut weight = 1.0;
-    let (t, p, n, variance) = match hit {
+    let (t, p, n, facet, variance) = match hit {
         Some(hit) => {
-            let (n, v) = field.hit_geometry(hit.point, d, hit.t, world);
+            let (n, v, facet) = field.hit_geometry(hit.point, d, hit.t, world);
             faded = v;
             if world.reference && world.detail.is_some() {
                 // The detail normals are not displaced geometry: a sample of the traced surface
                 // stands for a facet of area dA/(n·n_g) seen at v·n, against dA seen at v·n_g.
                 weight = projected_area_weight(-d, n, field.normal(hit.point, d, 0.0, world));
             }
-            (hit.t, hit.point, n, &faded)
+            (hit.t, hit.point, n, facet, &faded)
         }
         // Beyond the trace distance: the Earth's curved mean sea (brine-core), with every wave's
         // slopes in the BRDF about its tilted normal; the point is on the sea (height 0).
         None if let Some(t) = brine_core::mean_sea_distance(origin.y, d.y) => {
             let p = origin + t * d;
             let n = DVec3::from_array(brine_core::mean_sea_normal(origin.y, d.to_array(), t));
-            (t, DVec3::new(p.x, 0.0, p.z), n, &world.variance_total)
+            (t, DVec3::new(p.x, 0.0, p.z), n, n, &world.variance_total)
         }
         None => {
             // The sky's own aerosol is Preetham's turbidity: only the spume layer over the sea is
@@ -38,7 +38,7 @@ pub(super) fn radiance(world: &World, field: &SeaField<'_>, d: DVec3, hit: Optio
             return Sample { radiance: l, aov: Aov { depth: f32::INFINITY, ..Aov::default() }, weight: 1.0 };
         }
     };
-    let shade = shade_surface(world, field, &SeenPoint { p, d, t, normal: n }, variance, cx);
+    let shade = shade_surface(world, field, &SeenPoint { p, d, t, normal: n, facet }, variance, cx);
     let aov = Aov {
         depth: t as f32,
         normal: n.as_vec3().to_array(),
@@ -191,6 +191,9 @@ pub(super) struct SeenPoint {
     pub(super) d: DVec3,
     pub(super) t: f64,
     pub(super) normal: DVec3,
+    /// The drawn surface's normal there, without the detail normals: the facet on which the
+    /// pixel's footprint is taken for the textures laid on the surface.
+    pub(super) facet: DVec3,
 }
 
 /// Radiance leaving the sea surface toward the camera at `p`: Fresnel-weighted sky reflection, the
@@ -203,7 +206,7 @@ pub(super) fn shade_surface(
     variance: &SlopeVariance,
     cx: &mut Counters,
 ) -> SurfaceShade {
-    let SeenPoint { p, d, t, normal } = *seen;
+    let SeenPoint { p, d, normal, .. } = *seen;
     let started = cx.clock();
     let v = -d;
     // Grazing views can see a facet from behind; tilt its normal toward the viewer just enough.
@@ -275,7 +278,7 @@ pub(super) fn shade_surface(
     cx.lap(Stage::Surface, started);
     let sea = f_sky * sky + f_met * met + sun + (1.0 - f_sky - f_met) * below / (WATER_IOR * WATER_IOR) + crest;
     let started = cx.clock();
-    let shade = white_water(world, p, d, t, normal, sea, light);
+    let shade = white_water(world, seen, sea, light);
     cx.lap(Stage::WhiteWater, started);
     SurfaceShade { glint: glint_aov, ..shade }
 }
@@ -375,16 +378,9 @@ pub(super) fn met_wave_radiance(world: &World, r: DVec3, below: DVec3, light: &D
 }
 
 /// Foam (Darles et al. 2007 §4.1, Koepke 1984) and active whitecaps (Dupuy & Bruneton 2012) over
-/// the sea radiance at `p`, seen along `d` from `t` metres.
-pub(super) fn white_water(
-    world: &World,
-    p: DVec3,
-    d: DVec3,
-    t: f64,
-    n: DVec3,
-    sea: DVec3,
-    light: DirectLight,
-) -> SurfaceShade {
+/// the sea radiance `sea` at the point `seen`, lit through `light`.
+pub(super) fn white_water(world: &World, seen: &SeenPoint, sea: DVec3, light: DirectLight) -> SurfaceShade {
+    let SeenPoint { p, d, t, normal: n, facet } = *seen;
     let mut shade = SurfaceShade { radiance: sea, foam: 0.0, whitecap: 0.0, glint: 0.0 };
     if world.foam.is_none() && world.whitecaps.is_none() && world.white_water.is_none() {
         return shade;
@@ -401,7 +397,7 @@ pub(super) fn white_water(
         let f = |c: usize| brine_foam::foam_radiance(r, e_sun[c], cos_sun, e_sky[c] + e_moon[c]);
         DVec3::new(f(0), f(1), f(2))
     };
-    let cover = world.cover_seen(p, n, across, d);
+    let cover = world.cover_seen(p, n, facet, across, d);
     if let Some((white, brightness)) = cover.memory {
         // Fresh foam (Koepke's R_f) where the crest breaks; ageing foam thins (Koepke's falling
         // reflectance): the water shows through it, through holes where the pixel resolves its

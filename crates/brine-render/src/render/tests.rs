@@ -163,8 +163,8 @@ fn detail_normals_shade_the_near_field_and_keep_their_slopes() {
             let ray = Ray::new(with.camera.position, d).expect("unit direction");
             let Some(h) = field.trace_primary(&ray, &with, &mut TraceStats::default()) else { continue };
             let slope = |n: DVec3| DVec2::new(-n.x / n.y, -n.z / n.y);
-            let (n1, v1) = field.hit_geometry(h.point, d, h.t, &with);
-            let (n0, v0) = field.hit_geometry(h.point, d, h.t, &without);
+            let (n1, v1, _) = field.hit_geometry(h.point, d, h.t, &with);
+            let (n0, v0, _) = field.hit_geometry(h.point, d, h.t, &without);
             let drawn = slope(n1) - slope(n0);
             kept += drawn.length_squared() + (v1.sigma_x2() + v1.sigma_y2()) - (v0.sigma_x2() + v0.sigma_y2());
             slopes.0.push(slope(n1));

@@ -258,11 +258,12 @@ pub struct Cover {
 impl World {
     /// The white water at surface point `p` of upward normal `n` (unit), seen along `d` (unit)
     /// through a pixel of side `across_m` across the view (m, `≥ 0`; 0 for a point): the pixel's
-    /// footprint on the facet of normal `n` (brine-core `EllipticalFootprint::on_facet`), longer
-    /// along the view the more the facet turns away from the eye.
-    pub fn cover_seen(&self, p: DVec3, n: DVec3, across_m: f64, d: DVec3) -> Cover {
+    /// footprint on the facet of normal `facet` (unit; the drawn surface's, brine-core
+    /// `EllipticalFootprint::on_facet`), longer along the view the more the facet turns away
+    /// from the eye.
+    pub fn cover_seen(&self, p: DVec3, n: DVec3, facet: DVec3, across_m: f64, d: DVec3) -> Cover {
         // A Gaussian footprint of a box's spread has σ = ℓ/√12 on each axis.
-        let footprint = EllipticalFootprint::on_facet(across_m / BOX_WIDTH_PER_SIGMA, d, n);
+        let footprint = EllipticalFootprint::on_facet(across_m / BOX_WIDTH_PER_SIGMA, d, facet);
         self.cover_over(p, n, self.time, &footprint)
     }
 
