@@ -96,7 +96,10 @@ pub use aerial::{
 };
 pub use cie::{CIE_1931_2DEG, CMF_START_NM, CMF_STEP_NM, MAX_LUMINOUS_EFFICACY, cmf};
 pub use clouds::{CloudLayers, CloudParams};
-pub use colour::{chromaticity, daylight_locus_y, linear_srgb_to_xyz, xyy_to_xyz, xyz_to_linear_srgb};
+pub use colour::{
+    bradford_adaptation, chromaticity, daylight_locus_y, linear_srgb_to_xyz, white_balance_linear_srgb, xyy_to_xyz,
+    xyz_to_linear_srgb,
+};
 pub use dome::{fisheye_direction, fisheye_pixel_direction};
 pub use error::SkyError;
 pub use filtered::{FILTERED_SKY_BASE_SIGMA, FILTERED_SKY_LEVELS, FilteredSky};

@@ -319,6 +319,11 @@ pub fn render_world_cancellable(
         let l = crate::world::log_average_luminance_cd_m2(&pixels);
         (crate::world::auto_exposure_ev(l, world.illuminance_lx) - world.exposure_compensation_ev).clamp(-10.0, 30.0)
     });
+    if let Some(m) = world.white_balance {
+        for p in &mut pixels {
+            *p = m * *p;
+        }
+    }
     if scene.phenomena.glare {
         let white = 1.0 / crate::tonemap::exposure_scale(exposure_ev);
         glare_filter(w as usize, h as usize, world.camera.pixel_angle())

@@ -292,3 +292,40 @@ fn crests_do_not_mirror_the_horizon() {
     }
     assert!(bright / all < THREADS, "{bright} of {all} pixels are threads");
 }
+
+/// `[output] white_balance = "scene"` is a camera's white balance to the scene's light: each
+/// pixel is the unbalanced frame's through one matrix, the one that shows the light of sun and
+/// sky on a level surface as neutral (brine-sky `white_balance_linear_srgb`); the exposure is
+/// metered on the unbalanced frame, so it does not move.
+#[test]
+fn the_scene_white_balance_shows_the_scenes_light_as_white() {
+    // One 3 × 3 product of values of order 1, against pixels of order 10⁻²…10 kcd m⁻².
+    const ROUNDING: f64 = 1e-12;
+    let mut scene = Scene::default_scene();
+    (scene.camera.width, scene.camera.height) = (96, 54);
+    scene.sky.sun_elevation_deg = Some(8.0);
+    // The glare clips whites before it spreads them: not a linear map of the pixels.
+    scene.phenomena.glare = false;
+    let plain = render(&scene, &RenderOptions::default(), &|| {}).expect("a valid scene");
+    assert!(World::new(&scene).expect("a valid scene").white_balance.is_none());
+    scene.output.white_balance = crate::scene::WhiteBalance::Scene;
+    let world = World::new(&scene).expect("a valid scene");
+    let m = world.white_balance.expect("daylight is a white to adapt to");
+    let balanced = render(&scene, &RenderOptions::default(), &|| {}).expect("a valid scene");
+    assert_eq!(plain.exposure_ev.to_bits(), balanced.exposure_ev.to_bits());
+    for (p, q) in plain.pixels.iter().zip(&balanced.pixels) {
+        let expected = m * *p;
+        assert!(
+            (*q - expected).abs().max_element() <= ROUNDING * expected.abs().max_element().max(1.0),
+            "{q} vs {expected}"
+        );
+    }
+    // The light: the sky's irradiance on a level surface plus the sun's and the moon's.
+    let disc = |d: &brine_sky::Disc| d.irradiance_rgb * d.direction.y.max(0.0);
+    let light =
+        world.sky.horizontal_irradiance_rgb() + disc(world.sky.sun()) + world.sky.moon().map_or(DVec3::ZERO, disc);
+    let (x, y) = brine_sky::chromaticity(brine_sky::linear_srgb_to_xyz(light)).expect("daylight");
+    assert!((x - 0.3127).abs().max((y - 0.3290).abs()) > 3e-3, "the light is not D65 already: ({x}, {y})");
+    let seen = m * light;
+    assert!((seen - DVec3::splat(seen.y)).abs().max_element() < ROUNDING * seen.y, "{seen}");
+}

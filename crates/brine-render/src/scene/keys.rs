@@ -535,6 +535,14 @@ pub const KEYS: &[KeySpec] = &[
         "0",
         "brighter (+) or darker (−) than the automatic exposure",
     ),
+    k(
+        "output",
+        "white_balance",
+        Kind::Enum { values: &["none", "scene"], ignore_case: false },
+        "—",
+        "`\"none\"`",
+        "`\"scene\"`: the light of sun, moon and sky on a level surface shown as white (Bradford adaptation to D65, as a camera's white balance; the EXR too); `\"none\"`: the radiance as it is on a D65 display",
+    ),
     with_note(
         k(
             "output",

@@ -489,11 +489,32 @@ pub struct OutputConfig {
     /// Write the output variables (depth, normal, foam, whitecap, evaluations) as extra EXR
     /// channels (`.exr` only).
     pub aovs: bool,
+    /// The white the image is balanced to.
+    pub white_balance: WhiteBalance,
+}
+
+/// The white balance of `[output] white_balance`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum WhiteBalance {
+    /// None: the scene's radiance shown as it is on a D65 display, a warm low sun warm.
+    #[default]
+    None,
+    /// The scene's light shown as white: the image adapted (Bradford) from the colour of the
+    /// irradiance of sun, moon and sky on a horizontal plane to D65, as a camera's white balance
+    /// or the eye's adaptation would.
+    Scene,
 }
 
 impl Default for OutputConfig {
     fn default() -> Self {
-        Self { path: PathBuf::from("ocean.png"), exposure_ev: None, exposure_compensation_ev: 0.0, aovs: false }
+        Self {
+            path: PathBuf::from("ocean.png"),
+            exposure_ev: None,
+            exposure_compensation_ev: 0.0,
+            aovs: false,
+            white_balance: WhiteBalance::None,
+        }
     }
 }
 

@@ -141,6 +141,9 @@ pub struct World {
     pub(crate) exposure_compensation_ev: f64,
     /// Horizontal illuminance of sun, moon and sky at sea level (lx).
     pub(crate) illuminance_lx: f64,
+    /// The white balance applied to the frame (linear sRGB to linear sRGB), when asked for and
+    /// the light is one it can adapt to.
+    pub(crate) white_balance: Option<glam::DMat3>,
     /// The reference rendering: no wave faded with the pixel footprint, no normal read through
     /// it (the slopes a footprint would hide stay in the normals, for many samples per pixel to
     /// average), so that a supersampled frame shows what the filtering is meant to preserve.
@@ -561,6 +564,14 @@ impl World {
         let e_horizontal = sky_e.y
             + sky.sun().irradiance_rgb.y * sky.sun().direction.y.max(0.0)
             + sky.moon().map_or(0.0, |m| m.irradiance_rgb.y * m.direction.y.max(0.0));
+        let white_balance = match scene.output.white_balance {
+            crate::scene::WhiteBalance::None => None,
+            crate::scene::WhiteBalance::Scene => {
+                let disc = |d: &brine_sky::Disc| d.irradiance_rgb * d.direction.y.max(0.0);
+                let light = sky_e + disc(sky.sun()) + sky.moon().map_or(DVec3::ZERO, disc);
+                brine_sky::white_balance_linear_srgb(light)
+            }
+        };
         let sun_below = brine_optics::refract(-sky.sun().direction, DVec3::Y, 1.0, WATER_IOR)
             .filter(|_| sky.sun().direction.y > 0.0)
             .unwrap_or(DVec3::NEG_Y);
@@ -677,6 +688,7 @@ impl World {
             exposure_ev,
             exposure_compensation_ev: scene.output.exposure_compensation_ev,
             illuminance_lx: e_horizontal * 1000.0,
+            white_balance,
             reference: false,
             sample_scale: sample_footprint_scale(scene.camera.spp),
         };
