@@ -333,7 +333,7 @@ class Scene:
 
         A regular grid of rest positions ``spacing_m`` apart (default 0.5 m) over a square of
         side ``size_m`` (default 100 m) around ``center`` ``(x, z)`` (m); with ``band_limit``,
-        without the waves shorter than two spacings (trochoid and Gerstner seas; ``grid_limit``
+        without the waves shorter than two spacings (trochoid, Gerstner and FFT seas; ``grid_limit``
         then says what was left out). ``camera=True``: the camera-adaptive grid instead, edges
         ``pixels`` pixel footprints long (default 2, [0.125, 64]); ``faded``: the surface the
         camera's rays draw (the far waves faded with the pixel footprint). ``t``: time (s; the scene's if ``None``)."""

@@ -205,8 +205,8 @@ def test_bad_scenes_and_arguments_raise():
         brine.Scene.from_dict(SMALL).bake(size=8, up="x")
     with pytest.raises(brine.BrineError, match=r"spacing_m = 0 is out of range"):
         brine.Scene.from_dict(SMALL).mesh(spacing_m=0.0)
-    with pytest.raises(brine.BrineError, match=r"band_limit: only the trochoid and Gerstner seas"):
-        brine.Scene.from_dict({"sea": {"surface": "fft"}}).mesh(size_m=4.0, band_limit=True)
+    with pytest.raises(brine.BrineError, match=r"band_limit: the sine sea"):
+        brine.Scene.from_dict({"sea": {"surface": "sine"}}).mesh(size_m=4.0, band_limit=True)
     with pytest.raises(brine.BrineError, match=r"pixels.*0.01 is out of range"):
         brine.Scene.from_dict(SMALL).mesh(camera=True, pixels=0.01)
     with pytest.raises(brine.BrineError, match=r"'t'"):

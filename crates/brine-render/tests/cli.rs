@@ -419,11 +419,17 @@ fn a_mesh_says_which_waves_its_grid_cannot_carry() {
     let (code, err) = run(&["mesh", "-o", "fine.ply", "--size-m", "4", "--spacing-m", "0.1", "--band-limit"]);
     assert_eq!(code, Some(0), "{err}");
     assert!(err.contains("nothing left out") && !err.contains("note:"), "{err}");
-    std::fs::write(dir.path().join("fft.toml"), "[sea]\nsurface = \"fft\"\n").unwrap();
-    let (code, err) = run(&["mesh", "fft.toml", "-o", "fft.ply", "--band-limit"]);
+    // The FFT sea leaves out its modes too short for the grid.
+    std::fs::write(dir.path().join("fft.toml"), "[sea]\nsurface = \"fft\"\n\n[sea.fft]\nresolution = 64\n").unwrap();
+    let (code, err) = run(&["mesh", "fft.toml", "-o", "fft.ply", "--size-m", "20", "--spacing-m", "2", "--band-limit"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(err.contains("those under 4.000 m left out"), "{err}");
+    // The sine sea's short waves are normals: nothing a grid can leave out.
+    std::fs::write(dir.path().join("sine.toml"), "[sea]\nsurface = \"sine\"\n").unwrap();
+    let (code, err) = run(&["mesh", "sine.toml", "-o", "sine.ply", "--band-limit"]);
     assert_eq!(code, Some(2));
-    assert!(err.starts_with("error: --band-limit: only the trochoid and Gerstner seas"), "{err}");
-    assert!(!dir.path().join("fft.ply").exists());
+    assert!(err.starts_with("error: --band-limit: the sine sea"), "{err}");
+    assert!(!dir.path().join("sine.ply").exists());
 }
 
 /// `brine mesh --frames`: frame `f` of a sequence is the mesh `--time sea.time_s + f/fps` makes
@@ -546,13 +552,13 @@ fn a_png_bake_holds_its_values_or_says_which_it_cannot() {
             "texel {k}: EXR {v} m, PNG {decoded} m"
         );
     }
-    // Frame 0 fits; one texel of frame 1 has J = 3.08: the sequence is refused before frame 0 is
+    // Frame 0 fits; one texel of frame 1 has J = 3.25: the sequence is refused before frame 0 is
     // written (it was once refused after, leaving frame 0's maps without `bake.json`).
-    let choppy = "[sea]\nsurface = \"fft\"\nwind_speed_m_s = 20.0\n[sea.fft]\nresolution = 64\nchoppiness = 3.5\n\
+    let choppy = "[sea]\nsurface = \"fft\"\nwind_speed_m_s = 30.0\n[sea.fft]\nresolution = 64\nchoppiness = 4\n\
                   [animation]\nfps = 1.0\n";
     std::fs::write(dir.path().join("choppy.toml"), choppy).unwrap();
     let out = brine(
-        &["bake", "choppy.toml", "-q", "-o", "choppy", "--size", "64", "--frames", "0..3", "--png16"],
+        &["bake", "choppy.toml", "-q", "-o", "choppy", "--size", "512", "--frames", "0..3", "--png16"],
         dir.path(),
     );
     let stderr = String::from_utf8_lossy(&out.stderr);

@@ -125,7 +125,7 @@ pub use brine_trace::RayTile;
 pub use error::WaveError;
 pub use fft::blend::{BLEND_SPACING_PER_TILE, BLEND_TRANSITION, BlendCorner, TileBlend};
 pub use fft::frame::{FftCascade, FftFrame};
-pub use fft::ocean::{FftKinematics, FftOcean, FftRestFields, FftRestJacobian, ParticleState};
+pub use fft::ocean::{FftGridBand, FftKinematics, FftOcean, FftRestFields, FftRestJacobian, ParticleState};
 pub use fft::options::{
     FFT_CASCADE_CUT_INDEX, FFT_DEFAULT_TILE_RATIO, FFT_MAX_CASCADES, FFT_MAX_CHOPPINESS, FFT_MAX_LOOP_PERIOD_S,
     FFT_MAX_RESOLUTION, FFT_MIN_RESOLUTION, FFT_PEAK_WAVELENGTHS_PER_TILE, FftOptions,

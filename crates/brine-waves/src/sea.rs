@@ -124,6 +124,23 @@ impl Ocean {
         })
     }
 
+    /// The FFT sea at time `t` as a square grid of spacing `spacing_m` (m, `> 0`) samples it
+    /// without aliasing (brine-waves `FftOcean::at_time_on_grid`: its modes shorter than two
+    /// spacings left out, those up to three faded), for baked maps; `None` for the other seas
+    /// (see [`Self::grid_band`]).
+    ///
+    /// # Returns
+    /// The frame and what was left out.
+    pub fn fft_frame_on_grid(&self, t: f64, spacing_m: f64) -> Option<(SeaFrame, crate::FftGridBand)> {
+        debug_assert!(t.is_finite(), "time {t} must be finite");
+        let Ocean::Fft { ocean } = self else { return None };
+        let (frame, band) = ocean.at_time_on_grid(t, spacing_m);
+        let surface = FrameSurface::Fft(Box::new(frame));
+        let frame =
+            SeaFrame { time: t, surface, waves: None, fft: Some(Arc::clone(ocean)), kinematics: OnceLock::new() };
+        Some((frame, band))
+    }
+
     /// The sea frozen at time `t`.
     ///
     /// # Arguments

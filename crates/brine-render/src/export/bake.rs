@@ -94,8 +94,8 @@ pub struct BakedFrame {
 pub struct GridLimit {
     /// Waves shorter than this are left out (m): two texels.
     pub shortest_wave_m: f64,
-    /// Waves faded (shorter than three texels), of which those under two are left out; `None`
-    /// for the FFT sea, whose normals are filtered instead.
+    /// Waves faded (shorter than three texels), of which those under two are left out; for the
+    /// FFT sea, its modes (each pair of wave vectors `±k` once).
     pub faded_waves: Option<usize>,
     /// Slope covariance `(⟨ζx²⟩, ⟨ζx ζz⟩, ⟨ζz²⟩)` (dimensionless, Brine's axes x east, z south)
     /// of what the fade removed (for the FFT sea: what the normals' filter averaged away, the
@@ -130,8 +130,10 @@ pub struct BakeMaps {
 /// baked band-limited to the grid: its waves shorter than two texels are left out, those up to
 /// three faded (brine-waves `Ocean::grid_band`), so that no wave shows in the maps as another
 /// (sampled on the grid, a wave beyond the grid's Nyquist wavenumber reads as a longer wave of
-/// another direction); [`BakedFrame::limit`] says what was left out. The white water is the
-/// whole sea's.
+/// another direction); [`BakedFrame::limit`] says what was left out. The FFT sea is baked with
+/// the same weights on its modes (brine-waves `FftOcean::at_time_on_grid`), and its normal map
+/// read through the whole sea's slope pyramids over two texels. The white water is the whole
+/// sea's.
 ///
 /// # Arguments
 /// - `world`: the world on the lattice; `t`: time (s), finite; `options`: checked options.
@@ -142,6 +144,16 @@ pub fn bake_frame(world: &World, t: f64, options: &BakeOptions) -> BakedFrame {
     let texel = options.tile_m / options.size as f64;
     // A valid sea's faded Gerstner sum always builds (fading only lowers ΣQ); were it refused,
     // the maps would be the point samples of the sine and FFT seas.
+    // The FFT sea: its modes too short for the texels left out of its cascades; its normal map
+    // is read through the whole sea's slope pyramids (`bake_sea`), whose box filter reports the
+    // slopes it averaged away.
+    if let Some((frame, band)) = world.ocean().fft_frame_on_grid(t, texel) {
+        let mut baked = bake_frame_of(world, t, options, Some(&frame));
+        if let Some(limit) = baked.limit.as_mut() {
+            limit.faded_waves = Some(band.faded);
+        }
+        return baked;
+    }
     match world.ocean().grid_band(texel).ok().flatten() {
         Some((ocean, band)) => {
             let limit = Some(GridLimit {

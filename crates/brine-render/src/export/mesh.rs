@@ -150,12 +150,23 @@ pub fn grid_mesh(world: &World, t: f64, grid: &MeshGrid) -> Mesh {
 /// The [`Mesh`] and what the grid left out ([`GridLimit`]); a sea whose waves all fit gives the
 /// mesh of [`grid_mesh`], byte for byte.
 ///
+/// The FFT sea leaves out its modes the same way (brine-waves `FftOcean::at_time_on_grid`), and
+/// the slope covariance it returns is that of the modes removed, on the undisplaced sea.
+///
 /// # Errors
-/// A message for the sine and FFT seas, which have no band-limited sum of waves (the FFT sea's
-/// cascades are grids of their own; the sine sea's short waves are normals).
+/// A message for the sine sea, whose short waves are normals, not a sum a grid can leave out.
 pub fn grid_mesh_band_limited(world: &World, t: f64, grid: &MeshGrid) -> Result<(Mesh, GridLimit), String> {
+    if let Some((frame, band)) = world.ocean().fft_frame_on_grid(t, grid.spacing_m) {
+        let limit = GridLimit {
+            shortest_wave_m: 2.0 * grid.spacing_m,
+            faded_waves: Some(band.faded),
+            lost_slope_covariance: band.lost_slope_covariance.to_array(),
+        };
+        let mesh = if band.faded == 0 { grid_mesh(world, t, grid) } else { grid_mesh_of(world, &frame, grid) };
+        return Ok((mesh, limit));
+    }
     let unsupported = || {
-        "--band-limit: only the trochoid and Gerstner seas (sea.surface = \"trochoids\" or \"gerstner\") are sums of waves a grid can leave out (the FFT sea: `brine bake` filters its normal map)".to_owned()
+        "--band-limit: the sine sea (sea.surface = \"sine\") draws its short waves as normals, not as a sum of waves a grid can leave out; use the trochoid, Gerstner or FFT sea".to_owned()
     };
     // A valid sea's faded Gerstner sum always builds (fading only lowers ΣQ).
     let (ocean, band) = world.ocean().grid_band(grid.spacing_m).map_err(|e| e.to_string())?.ok_or_else(unsupported)?;

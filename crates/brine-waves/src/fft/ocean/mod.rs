@@ -188,6 +188,17 @@ pub struct FftOcean {
     loop_distortion: Option<LoopDistortion>,
 }
 
+/// What [`FftOcean::rest_fields_on_grid`] left out of the sea for a grid.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FftGridBand {
+    /// Modes weighted below 1 (each wave vector of the spectral grid once).
+    pub faded: usize,
+    /// Slope covariance `(⟨ζx²⟩, ⟨ζx ζz⟩, ⟨ζz²⟩)` (dimensionless) the weights removed from the
+    /// linear (undisplaced) sea at that time, `Σ (1 − w²) |ĥ(k)|² (kₓ², kₓk_z, k_z²)`, the
+    /// modes' amplitudes at the time (Parseval over the tile).
+    pub lost_slope_covariance: DVec3,
+}
+
 /// Word position of the random pair of wave vector `(nₓ, n_z)`: one `ChaCha` block (16 words) per
 /// pair, keyed by the zig-zag codes of the two integers.
 fn word_position(nx: i64, nz: i64) -> u128 {
@@ -572,6 +583,58 @@ impl FftOcean {
         let rest = self.rest_fields(t);
         FftFrame::from_rest_fields(self, &rest, t)
     }
+
+    /// [`Self::rest_fields`] of the sea a square grid of spacing `Δ` samples without aliasing:
+    /// every mode of wavelength `λ = 2π/|k|` weighted by
+    ///
+    /// `w(λ) = smoothstep(0, 1, 2 (λ/(2Δ) − 1))`
+    ///
+    /// (0 for `λ ≤ 2Δ`, 1 for `λ ≥ 3Δ`), as brine-waves `grid_band` weights a trochoid: a mode
+    /// with a wave-vector component at or beyond the grid's Nyquist wavenumber `π/Δ` would read,
+    /// sampled on the grid, as a longer wave of another direction. Each cascade is still
+    /// synthesised on its own grid; only its amplitudes change.
+    ///
+    /// # Arguments
+    /// - `t`: time (s), finite.
+    /// - `spacing_m`: `Δ` (m), `> 0` and finite.
+    ///
+    /// # Returns
+    /// The fields (bit for bit those of [`Self::rest_fields`] when no mode is shorter than
+    /// `3Δ`) and what was left out ([`FftGridBand`]).
+    ///
+    /// # References
+    /// Shannon 1949 (sampling); Tessendorf 2001, Eq. 36, 43, 44.
+    pub fn rest_fields_on_grid(&self, t: f64, spacing_m: f64) -> (Vec<FftRestFields>, FftGridBand) {
+        debug_assert!(t.is_finite(), "time {t} must be finite");
+        debug_assert!(spacing_m > 0.0 && spacing_m.is_finite(), "spacing {spacing_m} m");
+        let tau = self.phase_time(t);
+        let weight = |m: &Mode| brine_core::footprint::footprint_weight(TAU / m.k, 2.0 * spacing_m);
+        let mut band = FftGridBand { faded: 0, lost_slope_covariance: DVec3::ZERO };
+        for m in self.cascades.iter().flat_map(|c| &c.modes) {
+            let w = weight(m);
+            if w < 1.0 {
+                // Parseval: the mode adds |ĥ|² (kₓ², kₓk_z, k_z²) to the tile's mean slope products.
+                band.faded += 1;
+                band.lost_slope_covariance +=
+                    (1.0 - w * w) * evolve(m, tau).norm_sqr() * DVec3::new(m.kx * m.kx, m.kx * m.kz, m.kz * m.kz);
+            }
+        }
+        let fields = self.cascades.par_iter().map(|c| synthesise_weighted(c, tau, &weight)).collect();
+        (fields, band)
+    }
+
+    /// [`Self::at_time`] of the sea of [`Self::rest_fields_on_grid`]: what a map of texels `Δ`
+    /// can hold without aliasing.
+    ///
+    /// # Arguments
+    /// - `t`: time (s), finite; `spacing_m`: `Δ` (m), `> 0` and finite.
+    ///
+    /// # Returns
+    /// The [`FftFrame`] and what was left out.
+    pub fn at_time_on_grid(&self, t: f64, spacing_m: f64) -> (FftFrame, FftGridBand) {
+        let (rest, band) = self.rest_fields_on_grid(t, spacing_m);
+        (FftFrame::from_rest_fields(self, &rest, t), band)
+    }
 }
 
 /// `h̃(k, τ) = h̃₀(k) e^{−iωτ} + conj(h̃₀(−k)) e^{iωτ}`.
@@ -589,10 +652,20 @@ fn pack(a: Complex64, b: Complex64) -> Complex64 {
 
 /// The eight fields of one cascade at phase time `tau`.
 fn synthesise(c: &CascadeSpectrum, tau: f64) -> FftRestFields {
+    synthesise_weighted(c, tau, &|_| 1.0)
+}
+
+/// [`synthesise`] with each mode's amplitude times `weight(mode)` (`[0, 1]`; modes of weight 0
+/// left out, those of weight 1 unchanged to the bit).
+fn synthesise_weighted(c: &CascadeSpectrum, tau: f64, weight: &(dyn Fn(&Mode) -> f64 + Sync)) -> FftRestFields {
     let n = c.n;
     let mut packs: Vec<Vec<Complex64>> = (0..4).map(|_| vec![Complex64::ZERO; n * n]).collect();
     for m in &c.modes {
-        let h = evolve(m, tau);
+        let w = weight(m);
+        if w <= 0.0 {
+            continue;
+        }
+        let h = if w < 1.0 { evolve(m, tau) * w } else { evolve(m, tau) };
         let ih = Complex64::new(-h.im, h.re);
         let inv_k = 1.0 / m.k;
         let (ux, uz) = (m.kx * inv_k, m.kz * inv_k);

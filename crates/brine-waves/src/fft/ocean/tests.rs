@@ -188,3 +188,77 @@ fn shifted_jacobian_fields_are_the_sea_moved() {
         }
     }
 }
+
+/// The power of each wave vector of a cascade's height field: `|Σ h(u) e^{−ik·u}|²` over its
+/// grid, indexed as the field (`(n_z mod N)·N + (n_x mod N)`).
+fn height_power(f: &FftRestFields) -> Vec<f64> {
+    let n = f.resolution;
+    let fft = FftPlanner::new().plan_fft_forward(n);
+    let mut data: Vec<Complex64> = f.height.iter().map(|&h| Complex64::new(h, 0.0)).collect();
+    let mut scratch = vec![Complex64::ZERO; fft.get_inplace_scratch_len()];
+    fft.process_with_scratch(&mut data, &mut scratch);
+    transpose(&mut data, n);
+    fft.process_with_scratch(&mut data, &mut scratch);
+    transpose(&mut data, n);
+    data.iter().map(|c| c.norm_sqr()).collect()
+}
+
+/// A grid of spacing `Δ` cannot carry a mode shorter than `2Δ` (sampled, it would read as a
+/// longer wave of another direction). The sea synthesised for such a grid has no power at those
+/// wave vectors in any cascade, the modes of `3Δ` and longer as the whole sea has them, and on a
+/// grid finer than every mode it is the whole sea, to the bit.
+#[test]
+fn the_sea_on_a_grid_holds_no_mode_the_grid_cannot_carry() {
+    /// FFT rounding of the power of a left-out mode, relative to the field's total power
+    /// (amplitudes rounded at 10⁻¹⁵–10⁻¹³ relative, squared).
+    const LEFT_OUT: f64 = 1e-20;
+    let pm = crate::PiersonMoskowitz::from_u10(12.0).unwrap();
+    let spreading = crate::CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
+    let options = FftOptions { resolution: 64, ..FftOptions::for_spectrum(&pm, 2) };
+    let ocean = FftOcean::new(&pm, &spreading, &options).unwrap();
+    let full = ocean.rest_fields(3.7);
+    let (same, band) = ocean.rest_fields_on_grid(3.7, 1e-4);
+    assert_eq!((band.faded, band.lost_slope_covariance), (0, DVec3::ZERO));
+    for (a, b) in full.iter().zip(&same) {
+        assert!(a.height.iter().zip(&b.height).all(|(x, y)| x.to_bits() == y.to_bits()));
+        assert!(a.dxx.iter().zip(&b.dxx).all(|(x, y)| x.to_bits() == y.to_bits()));
+    }
+    // Texels of four of the finer cascade's grid spacings: most of its modes are too short.
+    let spacing = 4.0 * full[1].tile_size / full[1].resolution as f64;
+    let (limited, band) = ocean.rest_fields_on_grid(3.7, spacing);
+    assert!(band.faded > 100, "modes faded: {}", band.faded);
+    let mut removed = 0.0;
+    for (a, b) in full.iter().zip(&limited) {
+        let n = a.resolution;
+        let (pa, pb) = (height_power(a), height_power(b));
+        let total: f64 = pa.iter().sum();
+        let signed = |i: usize| if i <= n / 2 { i as f64 } else { i as f64 - n as f64 };
+        for (i, (&x, &y)) in pa.iter().zip(&pb).enumerate() {
+            let k = TAU / a.tile_size * signed(i % n).hypot(signed(i / n));
+            let wavelength = if k > 0.0 { TAU / k } else { f64::INFINITY };
+            if wavelength <= 2.0 * spacing {
+                assert!(y <= LEFT_OUT * total, "a mode of {wavelength} m kept: {y} of {total}");
+                removed += x / total;
+            } else if wavelength >= 3.0 * spacing {
+                assert!((x - y).abs() <= FFT_ROUNDING_REL * total, "a mode of {wavelength} m changed");
+            }
+        }
+    }
+    assert!(removed > 0.01, "the whole sea had little to leave out: {removed}");
+    // The slopes left out: the whole sea's mean slope products minus the limited sea's, each
+    // cascade's over its own tile (Parseval), summed over the cascades.
+    let mean_products = |fields: &[FftRestFields]| {
+        fields.iter().fold(DVec3::ZERO, |a, f| {
+            let n = f.slope_x.len() as f64;
+            a + f.slope_x.iter().zip(&f.slope_z).fold(DVec3::ZERO, |b, (&x, &z)| b + DVec3::new(x * x, x * z, z * z))
+                / n
+        })
+    };
+    let lost = mean_products(&full) - mean_products(&limited);
+    let scale = mean_products(&full).x + mean_products(&full).z;
+    assert!(
+        (lost - band.lost_slope_covariance).abs().max_element() < FFT_ROUNDING_REL * scale,
+        "{lost} against {}",
+        band.lost_slope_covariance
+    );
+}
