@@ -1,6 +1,7 @@
 //! The filtered frame at one sample per pixel against the same renderer at many: where the
 //! pixel footprint is right, one sample shows no more pixel-to-pixel noise than sixteen.
 
+use brine_render::scene::SurfaceKind;
 use brine_render::{RenderOptions, Scene, render, tonemap};
 
 /// The stormy-spray gallery scene (20 m/s, a camera 3 m up looking 4° down toward a sun 18° high)
@@ -10,14 +11,13 @@ fn storm(spp: u32) -> Scene {
     storm_on(spp, None)
 }
 
-/// [`storm`] on the surface `surface` (`[sea] surface`), or the scene's own.
-fn storm_on(spp: u32, surface: Option<&str>) -> Scene {
+/// [`storm`] on the surface `surface`, or the scene's own.
+fn storm_on(spp: u32, surface: Option<SurfaceKind>) -> Scene {
     let path = format!("{}/../docs/gallery/stormy-spray.toml", env!("CARGO_MANIFEST_DIR"));
-    let mut text = std::fs::read_to_string(&path).unwrap();
+    let mut s = Scene::from_toml_str(&std::fs::read_to_string(&path).unwrap(), &path).unwrap();
     if let Some(surface) = surface {
-        text = text.replace("[sea]\n", &format!("[sea]\nsurface = \"{surface}\"\n"));
+        s.sea.surface = surface;
     }
-    let mut s = Scene::from_toml_str(&text, &path).unwrap();
     (s.camera.width, s.camera.height, s.camera.spp) = (320, 180, spp);
     s.phenomena.foam = false;
     s.phenomena.whitecaps = false;
@@ -89,8 +89,8 @@ fn a_grazing_storm_sea_aliases_no_more_at_one_sample_than_at_sixteen() {
 #[test]
 fn a_grazing_storm_fft_sea_aliases_no_more_at_one_sample_than_at_sixteen() {
     let rows = 113..179;
-    let one = high_pass(&storm_on(1, Some("fft")), rows.clone());
-    let many = high_pass(&storm_on(16, Some("fft")), rows);
+    let one = high_pass(&storm_on(1, Some(SurfaceKind::Fft)), rows.clone());
+    let many = high_pass(&storm_on(16, Some(SurfaceKind::Fft)), rows);
     assert!(
         one <= MAX_NOISE_RATIO * many,
         "FFT: high-pass noise at 1 spp {one:.3}, at 16 spp {many:.3}: ratio {:.3}",

@@ -122,8 +122,8 @@ pub struct FoamLace {
 /// Values of the fine octave's fade at which the distribution of the sum is tabulated.
 const FADE_TABLES: usize = 9;
 
-/// Floor of the coarsest octave's border distance under its logarithm (cells): a filament's spine
-/// is cut only where a cover is below about this.
+/// Floor of the coarsest octave's border ratio `(F₂ − F₁)/(F₂ + F₁)` under its logarithm
+/// (dimensionless): a filament's spine is cut only where a cover is below about this.
 const LACE_BORDER_FLOOR: f64 = 1e-4;
 
 /// The coarsest octave's term, `ln(d₀ + d_min)`: unbounded below on a cell border, so that the

@@ -397,8 +397,9 @@ fn a_loop_that_moves_the_waves_is_warned_of() {
     assert!(json["loop_distortion"]["variance_share_moved_over_5_percent"].as_f64().unwrap() > 0.05, "{json}");
 }
 
-/// `brine mesh` says when its grid aliases waves and, with `--band-limit`, what it left out; the
-/// FFT sea, whose cascades are grids of their own, is refused with a message and nothing written.
+/// `brine mesh` says when its grid aliases waves and, with `--band-limit`, what it left out (the
+/// FFT sea's modes too); the sine sea, whose short waves are normals, is refused with a message
+/// and nothing written.
 #[test]
 fn a_mesh_says_which_waves_its_grid_cannot_carry() {
     let dir = tempfile::tempdir().unwrap();
@@ -419,8 +420,11 @@ fn a_mesh_says_which_waves_its_grid_cannot_carry() {
     let (code, err) = run(&["mesh", "-o", "fine.ply", "--size-m", "4", "--spacing-m", "0.1", "--band-limit"]);
     assert_eq!(code, Some(0), "{err}");
     assert!(err.contains("nothing left out") && !err.contains("note:"), "{err}");
-    // The FFT sea leaves out its modes too short for the grid.
+    // The FFT sea: its modes too short for the grid alias, and --band-limit leaves them out.
     std::fs::write(dir.path().join("fft.toml"), "[sea]\nsurface = \"fft\"\n\n[sea.fft]\nresolution = 64\n").unwrap();
+    let (code, err) = run(&["mesh", "fft.toml", "-o", "fft.ply", "--size-m", "20", "--spacing-m", "2"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(err.contains("modes are shorter than two spacings (4.000 m): the grid aliases them"), "{err}");
     let (code, err) = run(&["mesh", "fft.toml", "-o", "fft.ply", "--size-m", "20", "--spacing-m", "2", "--band-limit"]);
     assert_eq!(code, Some(0), "{err}");
     assert!(err.contains("those under 4.000 m left out"), "{err}");

@@ -103,7 +103,8 @@ const MIN_CONE_RESPONSE: f64 = 1e-3;
 ///
 /// # Returns
 /// The 3 × 3 matrix acting on XYZ columns; `None` when either white is black, not finite, or
-/// has a cone response below 10⁻³ of its luminance (no real daylight, moonlight or lamp does).
+/// has a cone response below 10⁻³ of its luminance (no daylight or moonlight does; a
+/// low-pressure sodium lamp does).
 ///
 /// # References
 /// Lam K. M. 1985, *Metamerism and colour constancy*, doctoral thesis, University of Bradford;

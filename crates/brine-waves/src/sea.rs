@@ -124,10 +124,19 @@ impl Ocean {
         })
     }
 
+    /// The FFT sea's ocean (its cascades' spectra), `None` for the other seas.
+    pub fn fft_ocean(&self) -> Option<&FftOcean> {
+        match self {
+            Ocean::Fft { ocean } => Some(ocean),
+            _ => None,
+        }
+    }
+
     /// The FFT sea at time `t` as a square grid of spacing `spacing_m` (m, `> 0`) samples it
-    /// without aliasing (brine-waves `FftOcean::at_time_on_grid`: its modes shorter than two
-    /// spacings left out, those up to three faded), for baked maps; `None` for the other seas
-    /// (see [`Self::grid_band`]).
+    /// without aliasing (brine-waves `FftOcean::at_time_on_grid` and
+    /// `FftOcean::kinematics_on_grid`: its modes shorter than two spacings left out, those up to
+    /// three faded, from the surface and from the particles' motion alike), for baked maps and
+    /// meshes; `None` for the other seas (see [`Self::grid_band`]).
     ///
     /// # Returns
     /// The frame and what was left out.
@@ -136,8 +145,11 @@ impl Ocean {
         let Ocean::Fft { ocean } = self else { return None };
         let (frame, band) = ocean.at_time_on_grid(t, spacing_m);
         let surface = FrameSurface::Fft(Box::new(frame));
-        let frame =
-            SeaFrame { time: t, surface, waves: None, fft: Some(Arc::clone(ocean)), kinematics: OnceLock::new() };
+        // The particles move with the same modes as the surface (the displacement read at a rest
+        // position, the velocities): their kinematics weighted alike, not the whole sea's.
+        let kinematics = OnceLock::new();
+        let _ = kinematics.set(ocean.kinematics_on_grid(t, spacing_m));
+        let frame = SeaFrame { time: t, surface, waves: None, fft: Some(Arc::clone(ocean)), kinematics };
         Some((frame, band))
     }
 

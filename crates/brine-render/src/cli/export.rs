@@ -155,7 +155,7 @@ pub struct MeshArgs {
     #[arg(long, requires = "camera")]
     pub faded: bool,
     /// With the regular grid: leave out the waves shorter than two spacings, which the grid would
-    /// show as other, longer waves, and fade those up to three (the trochoid and Gerstner seas);
+    /// show as other, longer waves, and fade those up to three (the trochoid, Gerstner and FFT seas);
     /// the slope covariance left out is printed, for a roughness on the mesh's material. Without,
     /// every vertex lies on the rendered surface, short waves included.
     #[arg(long, conflicts_with = "camera")]
@@ -338,6 +338,18 @@ fn mesh_band_summary(
     }
     if camera {
         return Vec::new();
+    }
+    if let Some(ocean) = world.ocean().fft_ocean() {
+        let short = ocean.modes_shorter_than(2.0 * grid.spacing_m);
+        return if short == 0 {
+            Vec::new()
+        } else {
+            vec![format!(
+                "note: {short} of the FFT sea's {} modes are shorter than two spacings ({:.3} m): the grid aliases them (its vertices show them as longer waves in other directions); --band-limit leaves them out",
+                ocean.mode_count(),
+                2.0 * grid.spacing_m
+            )]
+        };
     }
     match world.ocean().grid_band(grid.spacing_m) {
         Ok(Some((_, band))) => {

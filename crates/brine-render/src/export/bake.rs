@@ -82,9 +82,10 @@ pub struct BakedFrame {
     /// The maps.
     pub maps: BakeMaps,
     /// What the grid could not carry ([`GridLimit`]): for a trochoid or Gerstner sea the waves
-    /// left out, for the FFT sea the slopes its filtered normals average away (baked at the
-    /// world's own time, whose slope pyramids the world holds; at another instant its maps are
-    /// point samples); `None` for the sine sea, whose maps are point samples.
+    /// left out; for the FFT sea the modes left out, with the slopes its filtered normals average
+    /// away (baked at the world's own time, whose slope pyramids the world holds; at another
+    /// instant its normals are those of the band-limited sea, and the slopes are those of the
+    /// modes left out); `None` for the sine sea, whose maps are point samples.
     pub limit: Option<GridLimit>,
 }
 
@@ -95,7 +96,7 @@ pub struct GridLimit {
     /// Waves shorter than this are left out (m): two texels.
     pub shortest_wave_m: f64,
     /// Waves faded (shorter than three texels), of which those under two are left out; for the
-    /// FFT sea, its modes (each pair of wave vectors `±k` once).
+    /// FFT sea, its modes (each wave vector of its spectral grids once).
     pub faded_waves: Option<usize>,
     /// Slope covariance `(⟨ζx²⟩, ⟨ζx ζz⟩, ⟨ζz²⟩)` (dimensionless, Brine's axes x east, z south)
     /// of what the fade removed (for the FFT sea: what the normals' filter averaged away, the
@@ -149,9 +150,12 @@ pub fn bake_frame(world: &World, t: f64, options: &BakeOptions) -> BakedFrame {
     // slopes it averaged away.
     if let Some((frame, band)) = world.ocean().fft_frame_on_grid(t, texel) {
         let mut baked = bake_frame_of(world, t, options, Some(&frame));
-        if let Some(limit) = baked.limit.as_mut() {
-            limit.faded_waves = Some(band.faded);
-        }
+        let limit = baked.limit.get_or_insert(GridLimit {
+            shortest_wave_m: 2.0 * texel,
+            faded_waves: None,
+            lost_slope_covariance: band.lost_slope_covariance.to_array(),
+        });
+        limit.faded_waves = Some(band.faded);
         return baked;
     }
     match world.ocean().grid_band(texel).ok().flatten() {

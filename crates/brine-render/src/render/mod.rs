@@ -319,7 +319,14 @@ pub fn render_world_cancellable(
         let l = crate::world::log_average_luminance_cd_m2(&pixels);
         (crate::world::auto_exposure_ev(l, world.illuminance_lx) - world.exposure_compensation_ev).clamp(-10.0, 30.0)
     });
-    if let Some(m) = world.white_balance {
+    let balance = world.white_balance.or_else(|| {
+        let white = 1.0 / crate::tonemap::exposure_scale(exposure_ev);
+        world
+            .white_balance_to_image
+            .then(|| brine_sky::white_balance_linear_srgb(crate::world::clipped_mean_rgb(&pixels, white)))
+            .flatten()
+    });
+    if let Some(m) = balance {
         for p in &mut pixels {
             *p = m * *p;
         }

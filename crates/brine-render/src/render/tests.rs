@@ -293,17 +293,23 @@ fn crests_do_not_mirror_the_horizon() {
     assert!(bright / all < THREADS, "{bright} of {all} pixels are threads");
 }
 
-/// `[output] white_balance = "scene"` is a camera's white balance to the scene's light: each
-/// pixel is the unbalanced frame's through one matrix, the one that shows the light of sun and
-/// sky on a level surface as neutral (brine-sky `white_balance_linear_srgb`); the exposure is
-/// metered on the unbalanced frame, so it does not move.
+/// `[output] white_balance = "scene"` balances the frame to the scene's light: each pixel is the
+/// unbalanced frame's through one matrix, the one that shows the light of sun and sky on a level
+/// surface as neutral (brine-sky `white_balance_linear_srgb`); `"image"`, to the frame's mean
+/// colour (clipped at the exposure's white); the exposure is metered on the unbalanced frame,
+/// so it does not move.
 #[test]
 fn the_scene_white_balance_shows_the_scenes_light_as_white() {
     // One 3 × 3 product of values of order 1, against pixels of order 10⁻²…10 kcd m⁻².
     const ROUNDING: f64 = 1e-12;
+    // The share of the sun's direct light an overcast lets through, at most (measured 0: a
+    // cover of 1 is opaque; 1 if the shadow were not applied).
+    const OVERCAST_SUN: f64 = 0.2;
     let mut scene = Scene::default_scene();
     (scene.camera.width, scene.camera.height) = (96, 54);
     scene.sky.sun_elevation_deg = Some(8.0);
+    // A clear sky: the sun's light reaches the whole sea (clouds are below).
+    scene.sky.clouds = None;
     // The glare clips whites before it spreads them: not a linear map of the pixels.
     scene.phenomena.glare = false;
     let plain = render(&scene, &RenderOptions::default(), &|| {}).expect("a valid scene");
@@ -328,4 +334,31 @@ fn the_scene_white_balance_shows_the_scenes_light_as_white() {
     assert!((x - 0.3127).abs().max((y - 0.3290).abs()) > 3e-3, "the light is not D65 already: ({x}, {y})");
     let seen = m * light;
     assert!((seen - DVec3::splat(seen.y)).abs().max_element() < ROUNDING * seen.y, "{seen}");
+    // "image": the frame balanced to its own mean colour, each pixel clipped at the exposure's
+    // white (a grey world; summed here in order, in the renderer in runs: rounding).
+    scene.output.white_balance = crate::scene::WhiteBalance::Image;
+    let grey_world = render(&scene, &RenderOptions::default(), &|| {}).expect("a valid scene");
+    let white = 1.0 / crate::tonemap::exposure_scale(plain.exposure_ev);
+    let mean = plain.pixels.iter().fold(DVec3::ZERO, |a, p| a + p.clamp(DVec3::ZERO, DVec3::splat(white)))
+        / plain.pixels.len() as f64;
+    let m = brine_sky::white_balance_linear_srgb(mean).expect("a daylit frame's mean is a white to adapt to");
+    assert_eq!(plain.exposure_ev.to_bits(), grey_world.exposure_ev.to_bits());
+    for (p, q) in plain.pixels.iter().zip(&grey_world.pixels) {
+        let expected = m * *p;
+        assert!(
+            (*q - expected).abs().max_element() <= ROUNDING * expected.abs().max_element().max(1.0),
+            "{q} vs {expected}"
+        );
+    }
+    let grey = m * mean;
+    assert!((grey - DVec3::splat(grey.y)).abs().max_element() < ROUNDING * grey.y, "{grey}");
+    // Under an overcast sky the sun's direct light is the clouds' to take: the light balanced
+    // to is then mostly the sky's (which includes the clouds lit by the sun).
+    scene.sky.clouds = Some(crate::scene::CloudConfig { cover: 1.0, ..crate::scene::CloudConfig::default() });
+    let world = World::new(&scene).expect("a valid scene");
+    let sun = world.sky.sun();
+    let direct = sun.irradiance_rgb.y * sun.direction.y;
+    let light = crate::world::scene_light(&world.sky, DVec2::ZERO);
+    let through = light.y - world.sky.horizontal_irradiance_rgb().y;
+    assert!(through < OVERCAST_SUN * direct, "the sun through an overcast: {through} of {direct}");
 }

@@ -538,10 +538,10 @@ pub const KEYS: &[KeySpec] = &[
     k(
         "output",
         "white_balance",
-        Kind::Enum { values: &["none", "scene"], ignore_case: false },
+        Kind::Enum { values: &["none", "scene", "image"], ignore_case: false },
         "—",
         "`\"none\"`",
-        "`\"scene\"`: the light of sun, moon and sky on a level surface shown as white (Bradford adaptation to D65, as a camera's white balance; the EXR too); `\"none\"`: the radiance as it is on a D65 display",
+        "`\"scene\"`: the light of sun, moon and sky on a level surface shown as white; `\"image\"`: the image's mean colour shown as grey, as a camera's automatic white balance (both a Bradford adaptation to D65, the EXR too); `\"none\"`: the radiance as it is on a D65 display",
     ),
     with_note(
         k(

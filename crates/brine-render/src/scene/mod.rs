@@ -501,9 +501,13 @@ pub enum WhiteBalance {
     #[default]
     None,
     /// The scene's light shown as white: the image adapted (Bradford) from the colour of the
-    /// irradiance of sun, moon and sky on a horizontal plane to D65, as a camera's white balance
-    /// or the eye's adaptation would.
+    /// irradiance of sun, moon and sky on a level surface (the sun and moon through the clouds'
+    /// mean shadow) to D65, as a white card lying on the sea would show it.
     Scene,
+    /// The image's mean colour shown as grey ("grey world"), as a camera's automatic white
+    /// balance does: the frame adapted (Bradford) from the mean of its pixels, each clipped at
+    /// the exposure's white, to D65.
+    Image,
 }
 
 impl Default for OutputConfig {

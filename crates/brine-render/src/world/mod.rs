@@ -144,6 +144,8 @@ pub struct World {
     /// The white balance applied to the frame (linear sRGB to linear sRGB), when asked for and
     /// the light is one it can adapt to.
     pub(crate) white_balance: Option<glam::DMat3>,
+    /// Balance the frame to its own mean colour (`[output] white_balance = "image"`).
+    pub(crate) white_balance_to_image: bool,
     /// The reference rendering: no wave faded with the pixel footprint, no normal read through
     /// it (the slopes a footprint would hide stay in the normals, for many samples per pixel to
     /// average), so that a supersampled frame shows what the filtering is meant to preserve.
@@ -336,6 +338,40 @@ pub fn sample_footprint_scale(spp: u32) -> f64 {
     (1.0 / f64::from(spp.max(1)).sqrt()).max(0.125)
 }
 
+/// Side of the square around the camera's foot over which [`scene_light`] averages the clouds'
+/// shadow on the sun and the moon (m), and the samples per side: a few cloud features (the
+/// layers' largest are a few kilometres) over the sea a view sees most of.
+const SCENE_LIGHT_SHADOW_SPAN_M: f64 = 3000.0;
+const SCENE_LIGHT_SHADOW_SAMPLES: usize = 16;
+
+/// The light of the scene for its white balance (linear sRGB, klx): the irradiance on a level
+/// surface of the sky (clouds included) plus the sun's and the moon's, each times the sine of
+/// its elevation and the mean of the clouds' transmittance toward it over a
+/// [`SCENE_LIGHT_SHADOW_SPAN_M`] square around the camera's foot `foot` (x, z; m): under a broken
+/// cover, the share of the sea in the clouds' shadow.
+pub(crate) fn scene_light(sky: &Sky, foot: DVec2) -> DVec3 {
+    let n = SCENE_LIGHT_SHADOW_SAMPLES;
+    let step = SCENE_LIGHT_SHADOW_SPAN_M / n as f64;
+    let shadow = |toward: DVec3| {
+        let mut sum = 0.0;
+        for j in 0..n {
+            for i in 0..n {
+                let (x, z) = (
+                    foot.x + (i as f64 + 0.5 - 0.5 * n as f64) * step,
+                    foot.y + (j as f64 + 0.5 - 0.5 * n as f64) * step,
+                );
+                sum += sky.cloud_transmittance(DVec3::new(x, 0.0, z), toward);
+            }
+        }
+        sum / (n * n) as f64
+    };
+    let disc = |d: &brine_sky::Disc| {
+        let c = d.direction.y.max(0.0);
+        if c > 0.0 { d.irradiance_rgb * c * shadow(d.direction) } else { DVec3::ZERO }
+    };
+    sky.horizontal_irradiance_rgb() + disc(sky.sun()) + sky.moon().map_or(DVec3::ZERO, disc)
+}
+
 /// Illuminance below which the automatic exposure stops following the light fully (lx), about
 /// the end of civil twilight's brightest part.
 pub const NIGHT_ADAPTATION_LX: f64 = 1000.0;
@@ -360,6 +396,22 @@ pub fn auto_exposure_ev(log_average_luminance_cd_m2: f64, illuminance_lx: f64) -
     let l = log_average_luminance_cd_m2.max(1e-9);
     let e = illuminance_lx.max(1e-9);
     (l * 100.0 / METER_K).log2() + (NIGHT_ADAPTATION_LX / e).log2().max(0.0) / 3.0
+}
+
+/// Mean of linear sRGB pixels (kcd m⁻²), each channel clipped at `white` (the exposure's
+/// saturation, kcd m⁻²) as a camera's sensor clips it: the colour an automatic white balance
+/// takes for grey. Summed in runs of 4096 pixels in parallel, then over the runs in pixel order
+/// (the same bits at any thread count).
+pub fn clipped_mean_rgb(pixels: &[DVec3], white: f64) -> DVec3 {
+    use rayon::prelude::*;
+    if pixels.is_empty() {
+        return DVec3::ZERO;
+    }
+    let runs: Vec<DVec3> = pixels
+        .par_chunks(4096)
+        .map(|run| run.iter().fold(DVec3::ZERO, |a, p| a + p.clamp(DVec3::ZERO, DVec3::splat(white))))
+        .collect();
+    runs.iter().fold(DVec3::ZERO, |a, r| a + *r) / pixels.len() as f64
 }
 
 /// Log-average luminance `exp(mean ln(Y + 10⁻⁶))` of linear sRGB pixels in kcd m⁻², returned in
@@ -565,12 +617,11 @@ impl World {
             + sky.sun().irradiance_rgb.y * sky.sun().direction.y.max(0.0)
             + sky.moon().map_or(0.0, |m| m.irradiance_rgb.y * m.direction.y.max(0.0));
         let white_balance = match scene.output.white_balance {
-            crate::scene::WhiteBalance::None => None,
-            crate::scene::WhiteBalance::Scene => {
-                let disc = |d: &brine_sky::Disc| d.irradiance_rgb * d.direction.y.max(0.0);
-                let light = sky_e + disc(sky.sun()) + sky.moon().map_or(DVec3::ZERO, disc);
-                brine_sky::white_balance_linear_srgb(light)
-            }
+            crate::scene::WhiteBalance::None | crate::scene::WhiteBalance::Image => None,
+            crate::scene::WhiteBalance::Scene => brine_sky::white_balance_linear_srgb(scene_light(
+                &sky,
+                DVec2::new(scene.camera.position[0], scene.camera.position[2]),
+            )),
         };
         let sun_below = brine_optics::refract(-sky.sun().direction, DVec3::Y, 1.0, WATER_IOR)
             .filter(|_| sky.sun().direction.y > 0.0)
@@ -689,6 +740,7 @@ impl World {
             exposure_compensation_ev: scene.output.exposure_compensation_ev,
             illuminance_lx: e_horizontal * 1000.0,
             white_balance,
+            white_balance_to_image: scene.output.white_balance == crate::scene::WhiteBalance::Image,
             reference: false,
             sample_scale: sample_footprint_scale(scene.camera.spp),
         };

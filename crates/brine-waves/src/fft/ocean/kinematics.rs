@@ -12,11 +12,25 @@ pub(super) fn evolve_rate(m: &Mode, tau: f64) -> Complex64 {
 
 /// The kinematic fields of one cascade at phase time `tau`.
 pub(super) fn synthesise_kinematics(c: &CascadeSpectrum, tau: f64) -> CascadeKinematics {
+    synthesise_kinematics_weighted(c, tau, &|_| 1.0)
+}
+
+/// [`synthesise_kinematics`] with each mode's amplitude times `weight(mode)` (`[0, 1]`; modes
+/// of weight 0 left out, those of weight 1 unchanged to the bit).
+pub(super) fn synthesise_kinematics_weighted(
+    c: &CascadeSpectrum,
+    tau: f64,
+    weight: &(dyn Fn(&Mode) -> f64 + Sync),
+) -> CascadeKinematics {
     let n = c.n;
     let mut packs: Vec<Vec<Complex64>> = (0..5).map(|_| vec![Complex64::ZERO; n * n]).collect();
     for m in &c.modes {
-        let h = evolve(m, tau);
-        let r = evolve_rate(m, tau);
+        let w = weight(m);
+        if w <= 0.0 {
+            continue;
+        }
+        let (h, r) =
+            if w < 1.0 { (evolve(m, tau) * w, evolve_rate(m, tau) * w) } else { (evolve(m, tau), evolve_rate(m, tau)) };
         let ih = Complex64::new(-h.im, h.re);
         let ir = Complex64::new(-r.im, r.re);
         let inv_k = 1.0 / m.k;
@@ -50,9 +64,9 @@ pub(super) fn synthesise_kinematics(c: &CascadeSpectrum, tau: f64) -> CascadeKin
 /// unit choppiness for the displacements.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) struct CascadeKinematics {
-    n: usize,
-    tile: f64,
-    displacement_x: Vec<f32>,
+    pub(super) n: usize,
+    pub(super) tile: f64,
+    pub(super) displacement_x: Vec<f32>,
     displacement_z: Vec<f32>,
     dxx: Vec<f32>,
     dzz: Vec<f32>,

@@ -561,6 +561,24 @@ impl FftOcean {
         FftKinematics { choppiness: self.options.choppiness, cascades, blends }
     }
 
+    /// [`Self::kinematics`] of the sea of [`Self::rest_fields_on_grid`]: the same mode weights,
+    /// so that the displacement a grid of spacing `Δ` reads holds no mode it cannot carry.
+    ///
+    /// # Arguments
+    /// - `t`: time (s), finite; `spacing_m`: `Δ` (m), `> 0` and finite.
+    ///
+    /// # Returns
+    /// The [`FftKinematics`].
+    pub fn kinematics_on_grid(&self, t: f64, spacing_m: f64) -> FftKinematics {
+        debug_assert!(t.is_finite(), "time {t} must be finite");
+        debug_assert!(spacing_m > 0.0 && spacing_m.is_finite(), "spacing {spacing_m} m");
+        let tau = self.phase_time(t);
+        let weight = |m: &Mode| grid_weight(m, spacing_m);
+        let cascades = self.cascades.par_iter().map(|c| synthesise_kinematics_weighted(c, tau, &weight)).collect();
+        let blends = (0..self.cascades.len()).map(|c| self.tile_blend(c)).collect();
+        FftKinematics { choppiness: self.options.choppiness, cascades, blends }
+    }
+
     /// The tile-and-blend of cascade `c` (`None` for a tiled sea, [`FftOptions::tiled`]): the
     /// same for the traced surface, the shading, the white water and the kinematics, keyed by
     /// the seed and the cascade.
@@ -591,8 +609,10 @@ impl FftOcean {
     ///
     /// (0 for `λ ≤ 2Δ`, 1 for `λ ≥ 3Δ`), as brine-waves `grid_band` weights a trochoid: a mode
     /// with a wave-vector component at or beyond the grid's Nyquist wavenumber `π/Δ` would read,
-    /// sampled on the grid, as a longer wave of another direction. Each cascade is still
-    /// synthesised on its own grid; only its amplitudes change.
+    /// sampled on the grid, as a longer wave of another direction. The cut is on `|k|`, not on
+    /// the components: it also leaves out the diagonal modes between `π/Δ` and `√2 π/Δ` a square
+    /// grid could carry, so that the band does not depend on the grid's orientation. Each cascade
+    /// is still synthesised on its own grid; only its amplitudes change.
     ///
     /// # Arguments
     /// - `t`: time (s), finite.
@@ -608,7 +628,7 @@ impl FftOcean {
         debug_assert!(t.is_finite(), "time {t} must be finite");
         debug_assert!(spacing_m > 0.0 && spacing_m.is_finite(), "spacing {spacing_m} m");
         let tau = self.phase_time(t);
-        let weight = |m: &Mode| brine_core::footprint::footprint_weight(TAU / m.k, 2.0 * spacing_m);
+        let weight = |m: &Mode| grid_weight(m, spacing_m);
         let mut band = FftGridBand { faded: 0, lost_slope_covariance: DVec3::ZERO };
         for m in self.cascades.iter().flat_map(|c| &c.modes) {
             let w = weight(m);
@@ -623,6 +643,18 @@ impl FftOcean {
         (fields, band)
     }
 
+    /// The number of modes shorter than `wavelength_m` (m): those a grid of half that spacing
+    /// would alias.
+    pub fn modes_shorter_than(&self, wavelength_m: f64) -> usize {
+        let k = TAU / wavelength_m;
+        self.cascades.iter().flat_map(|c| &c.modes).filter(|m| m.k > k).count()
+    }
+
+    /// The number of modes of the sea (each wave vector of its spectral grids once).
+    pub fn mode_count(&self) -> usize {
+        self.cascades.iter().map(|c| c.modes.len()).sum()
+    }
+
     /// [`Self::at_time`] of the sea of [`Self::rest_fields_on_grid`]: what a map of texels `Δ`
     /// can hold without aliasing.
     ///
@@ -635,6 +667,12 @@ impl FftOcean {
         let (rest, band) = self.rest_fields_on_grid(t, spacing_m);
         (FftFrame::from_rest_fields(self, &rest, t), band)
     }
+}
+
+/// The weight of a mode on a grid of spacing `Δ`: `smoothstep(0, 1, 2 (λ/(2Δ) − 1))`,
+/// `λ = 2π/|k|` (brine-core `footprint_weight` with a footprint of `2Δ`).
+fn grid_weight(m: &Mode, spacing_m: f64) -> f64 {
+    brine_core::footprint::footprint_weight(TAU / m.k, 2.0 * spacing_m)
 }
 
 /// `h̃(k, τ) = h̃₀(k) e^{−iωτ} + conj(h̃₀(−k)) e^{iωτ}`.

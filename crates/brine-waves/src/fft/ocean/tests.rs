@@ -189,12 +189,11 @@ fn shifted_jacobian_fields_are_the_sea_moved() {
     }
 }
 
-/// The power of each wave vector of a cascade's height field: `|Σ h(u) e^{−ik·u}|²` over its
-/// grid, indexed as the field (`(n_z mod N)·N + (n_x mod N)`).
-fn height_power(f: &FftRestFields) -> Vec<f64> {
-    let n = f.resolution;
+/// The power of each wave vector of a field on an `N × N` grid: `|Σ v(u) e^{−ik·u}|²`, indexed
+/// as the field (`(n_z mod N)·N + (n_x mod N)`).
+fn power(values: &[f64], n: usize) -> Vec<f64> {
     let fft = FftPlanner::new().plan_fft_forward(n);
-    let mut data: Vec<Complex64> = f.height.iter().map(|&h| Complex64::new(h, 0.0)).collect();
+    let mut data: Vec<Complex64> = values.iter().map(|&h| Complex64::new(h, 0.0)).collect();
     let mut scratch = vec![Complex64::ZERO; fft.get_inplace_scratch_len()];
     fft.process_with_scratch(&mut data, &mut scratch);
     transpose(&mut data, n);
@@ -203,15 +202,39 @@ fn height_power(f: &FftRestFields) -> Vec<f64> {
     data.iter().map(|c| c.norm_sqr()).collect()
 }
 
+/// Checks one field of the band-limited sea against the whole sea's on a cascade's grid: no
+/// power at wave vectors under `2Δ`, `w²` times the whole sea's between `2Δ` and `3Δ`, the same
+/// from `3Δ`, to `rounding` of the field's total power. Returns the share of the whole field's
+/// power left out.
+fn check_band(whole: &[f64], limited: &[f64], n: usize, tile: f64, spacing: f64, rounding: f64) -> f64 {
+    let (pa, pb) = (power(whole, n), power(limited, n));
+    let total: f64 = pa.iter().sum();
+    let signed = |i: usize| if i <= n / 2 { i as f64 } else { i as f64 - n as f64 };
+    let mut removed = 0.0;
+    for (i, (&x, &y)) in pa.iter().zip(&pb).enumerate() {
+        let k = TAU / tile * signed(i % n).hypot(signed(i / n));
+        let wavelength = if k > 0.0 { TAU / k } else { f64::INFINITY };
+        let w = brine_core::footprint::footprint_weight(wavelength, 2.0 * spacing);
+        assert!((y - w * w * x).abs() <= rounding * total, "a mode of {wavelength} m: {y} against {w}² × {x}");
+        if wavelength <= 2.0 * spacing {
+            removed += x / total;
+        }
+    }
+    removed
+}
+
 /// A grid of spacing `Δ` cannot carry a mode shorter than `2Δ` (sampled, it would read as a
 /// longer wave of another direction). The sea synthesised for such a grid has no power at those
-/// wave vectors in any cascade, the modes of `3Δ` and longer as the whole sea has them, and on a
-/// grid finer than every mode it is the whole sea, to the bit.
+/// wave vectors in any cascade, `w²` times the whole sea's between `2Δ` and `3Δ`, the modes of
+/// `3Δ` and longer as the whole sea has them — in its surface and in its particles' motion —
+/// and on a grid finer than every mode it is the whole sea, to the bit.
 #[test]
 fn the_sea_on_a_grid_holds_no_mode_the_grid_cannot_carry() {
-    /// FFT rounding of the power of a left-out mode, relative to the field's total power
-    /// (amplitudes rounded at 10⁻¹⁵–10⁻¹³ relative, squared).
-    const LEFT_OUT: f64 = 1e-20;
+    /// FFT rounding of a mode's power, relative to the field's total power (amplitudes rounded
+    /// at 10⁻¹⁵–10⁻¹³ relative; their products with the other modes' at 10⁻¹²).
+    const LEFT_OUT: f64 = FFT_ROUNDING_REL;
+    /// The same for fields stored in f32 (rounded at 6×10⁻⁸ relative, times `N` values).
+    const F32_LEFT_OUT: f64 = 1e-9;
     let pm = crate::PiersonMoskowitz::from_u10(12.0).unwrap();
     let spreading = crate::CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
     let options = FftOptions { resolution: 64, ..FftOptions::for_spectrum(&pm, 2) };
@@ -229,22 +252,16 @@ fn the_sea_on_a_grid_holds_no_mode_the_grid_cannot_carry() {
     assert!(band.faded > 100, "modes faded: {}", band.faded);
     let mut removed = 0.0;
     for (a, b) in full.iter().zip(&limited) {
-        let n = a.resolution;
-        let (pa, pb) = (height_power(a), height_power(b));
-        let total: f64 = pa.iter().sum();
-        let signed = |i: usize| if i <= n / 2 { i as f64 } else { i as f64 - n as f64 };
-        for (i, (&x, &y)) in pa.iter().zip(&pb).enumerate() {
-            let k = TAU / a.tile_size * signed(i % n).hypot(signed(i / n));
-            let wavelength = if k > 0.0 { TAU / k } else { f64::INFINITY };
-            if wavelength <= 2.0 * spacing {
-                assert!(y <= LEFT_OUT * total, "a mode of {wavelength} m kept: {y} of {total}");
-                removed += x / total;
-            } else if wavelength >= 3.0 * spacing {
-                assert!((x - y).abs() <= FFT_ROUNDING_REL * total, "a mode of {wavelength} m changed");
-            }
-        }
+        removed += check_band(&a.height, &b.height, a.resolution, a.tile_size, spacing, LEFT_OUT);
     }
     assert!(removed > 0.01, "the whole sea had little to leave out: {removed}");
+    // The particles' displacement (f32 fields: their rounding, squared, against the total).
+    let (whole_k, limited_k) = (ocean.kinematics(3.7), ocean.kinematics_on_grid(3.7, spacing));
+    for (a, b) in whole_k.cascades.iter().zip(&limited_k.cascades) {
+        let f64s = |v: &[f32]| v.iter().map(|&x| f64::from(x)).collect::<Vec<_>>();
+        let (x, y) = (f64s(&a.displacement_x), f64s(&b.displacement_x));
+        check_band(&x, &y, a.n, a.tile, spacing, F32_LEFT_OUT);
+    }
     // The slopes left out: the whole sea's mean slope products minus the limited sea's, each
     // cascade's over its own tile (Parseval), summed over the cascades.
     let mean_products = |fields: &[FftRestFields]| {
