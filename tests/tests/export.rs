@@ -231,6 +231,26 @@ fn an_fft_bake_holds_no_mode_the_grid_cannot_carry() {
     assert!(vc <= FFT_JACOBIAN_ALIASING * vb, "coarse {vc} against the fine map averaged {vb}");
 }
 
+/// Every seventh vertex of `mesh` lies on the band-limited sea `band` (to the f32 vertices'
+/// rounding), and the short waves are really gone: somewhere the mesh is over 1 mm off the
+/// world's full sea.
+fn assert_vertices_on_the_band_sea(mesh: &brine_render::export::Mesh, band: &brine_waves::SeaFrame, world: &World) {
+    let mut off_full = 0.0_f64;
+    for p in mesh.positions.iter().step_by(7) {
+        let (x, y, z) = (f64::from(p[0]), f64::from(p[1]), f64::from(p[2]));
+        assert!((band.height(x, z) - y).abs() < 1e-5, "vertex off the band-limited surface");
+        off_full = off_full.max((world.sea().height(x, z) - y).abs());
+    }
+    assert!(off_full > 1e-3, "the coarse mesh is the full surface (off by at most {off_full} m)");
+}
+
+/// The normals of the vertices of one tile of a square grid mesh `spacing` apart over `tile`
+/// (its far row and column left out: the points a bake samples).
+fn one_tile_normals(m: &brine_render::export::Mesh, tile: f64, spacing: f64) -> Vec<[f32; 3]> {
+    let n = (tile / spacing) as usize + 1;
+    (0..(n - 1) * (n - 1)).map(|k| m.normals[(k / (n - 1)) * n + k % (n - 1)]).collect()
+}
+
 /// `brine mesh --band-limit`: a grid of vertices `Δ` apart leaves out the waves shorter than
 /// `2Δ` (which its vertices would show as other, longer waves), like a bake. Its vertices lie on
 /// the band-limited sea, not on the full one; its normals' slopes plus the ones it says it left
@@ -243,25 +263,15 @@ fn a_band_limited_mesh_holds_no_wave_its_grid_cannot_carry() {
     let (tile, world) = (GRID_TILE_M, default_sea_on_a_tile());
     let t = Scene::default_scene().sea.time_s;
     let grid = |spacing_m| MeshGrid { center: DVec2::splat(0.5 * tile), size_m: tile, spacing_m };
-    let one_tile = |m: &brine_render::export::Mesh, spacing: f64| {
-        let n = (tile / spacing) as usize + 1;
-        (0..(n - 1) * (n - 1)).map(|k| m.normals[(k / (n - 1)) * n + k % (n - 1)]).collect::<Vec<_>>()
-    };
+    let one_tile = |m: &brine_render::export::Mesh, spacing: f64| one_tile_normals(m, tile, spacing);
     let (fine, fine_limit) = grid_mesh_band_limited(&world, t, &grid(0.125)).unwrap();
     assert_eq!(fine_limit.faded_waves, Some(0));
     assert!(fine == grid_mesh(&world, t, &grid(0.125)), "a grid that carries every wave changed the mesh");
     let (coarse, limit) = grid_mesh_band_limited(&world, t, &grid(2.0)).unwrap();
     assert!(limit.faded_waves.unwrap() > 10, "{limit:?}");
-    // The vertices are on the band-limited sea, and the short waves are really gone from them.
     let (band_sea, _) = world.ocean().grid_band(2.0).unwrap().unwrap();
     let band_frame = band_sea.at_time(t);
-    let mut off_full = 0.0_f64;
-    for p in coarse.positions.iter().step_by(7) {
-        let (x, y, z) = (f64::from(p[0]), f64::from(p[1]), f64::from(p[2]));
-        assert!((band_frame.height(x, z) - y).abs() < 1e-5, "vertex off the band-limited surface");
-        off_full = off_full.max((world.sea().height(x, z) - y).abs());
-    }
-    assert!(off_full > 1e-3, "the coarse mesh is the full surface (off by at most {off_full} m)");
+    assert_vertices_on_the_band_sea(&coarse, &band_frame, &world);
     let f = map_mean_square_slope(&one_tile(&fine, 0.125));
     let c = map_mean_square_slope(&one_tile(&coarse, 2.0));
     let lost = limit.lost_slope_covariance[0] + limit.lost_slope_covariance[2];
@@ -281,20 +291,11 @@ fn a_band_limited_fft_mesh_holds_no_mode_its_grid_cannot_carry() {
     let world = World::on_lattice(&scene, Some(&brine_waves_lattice(tile, None))).unwrap();
     let t = scene.sea.time_s;
     let grid = |spacing_m| MeshGrid { center: DVec2::splat(0.5 * tile), size_m: tile, spacing_m };
-    let one_tile = |m: &brine_render::export::Mesh, spacing: f64| {
-        let n = (tile / spacing) as usize + 1;
-        (0..(n - 1) * (n - 1)).map(|k| m.normals[(k / (n - 1)) * n + k % (n - 1)]).collect::<Vec<_>>()
-    };
+    let one_tile = |m: &brine_render::export::Mesh, spacing: f64| one_tile_normals(m, tile, spacing);
     let (coarse, limit) = grid_mesh_band_limited(&world, t, &grid(2.0)).unwrap();
     assert!(limit.faded_waves.unwrap() > 100, "{limit:?}");
     let (band_frame, _) = world.ocean().fft_frame_on_grid(t, 2.0).unwrap();
-    let mut off_full = 0.0_f64;
-    for p in coarse.positions.iter().step_by(7) {
-        let (x, y, z) = (f64::from(p[0]), f64::from(p[1]), f64::from(p[2]));
-        assert!((band_frame.height(x, z) - y).abs() < 1e-5, "vertex off the band-limited surface");
-        off_full = off_full.max((world.sea().height(x, z) - y).abs());
-    }
-    assert!(off_full > 1e-3, "the coarse mesh is the full surface (off by at most {off_full} m)");
+    assert_vertices_on_the_band_sea(&coarse, &band_frame, &world);
     // At 12.5 cm the mesh still leaves out the shortest modes: the totals are compared.
     let (fine, fine_limit) = grid_mesh_band_limited(&world, t, &grid(0.125)).unwrap();
     let fine_limit_lost = fine_limit.lost_slope_covariance[0] + fine_limit.lost_slope_covariance[2];

@@ -293,6 +293,20 @@ fn crests_do_not_mirror_the_horizon() {
     assert!(bright / all < THREADS, "{bright} of {all} pixels are threads");
 }
 
+/// `balanced` is `plain` through the white balance `m`: the same exposure, every pixel `m` times
+/// the unbalanced one (one 3 × 3 product of values of order 1: 10⁻¹² relative).
+fn assert_balanced(plain: &Frame, balanced: &Frame, m: glam::DMat3) {
+    const ROUNDING: f64 = 1e-12;
+    assert_eq!(plain.exposure_ev.to_bits(), balanced.exposure_ev.to_bits());
+    for (p, q) in plain.pixels.iter().zip(&balanced.pixels) {
+        let expected = m * *p;
+        assert!(
+            (*q - expected).abs().max_element() <= ROUNDING * expected.abs().max_element().max(1.0),
+            "{q} vs {expected}"
+        );
+    }
+}
+
 /// `[output] white_balance = "scene"` balances the frame to the scene's light: each pixel is the
 /// unbalanced frame's through one matrix, the one that shows the light of sun and sky on a level
 /// surface as neutral (brine-sky `white_balance_linear_srgb`); `"image"`, to the frame's mean
@@ -318,14 +332,7 @@ fn the_scene_white_balance_shows_the_scenes_light_as_white() {
     let world = World::new(&scene).expect("a valid scene");
     let m = world.white_balance.expect("daylight is a white to adapt to");
     let balanced = render(&scene, &RenderOptions::default(), &|| {}).expect("a valid scene");
-    assert_eq!(plain.exposure_ev.to_bits(), balanced.exposure_ev.to_bits());
-    for (p, q) in plain.pixels.iter().zip(&balanced.pixels) {
-        let expected = m * *p;
-        assert!(
-            (*q - expected).abs().max_element() <= ROUNDING * expected.abs().max_element().max(1.0),
-            "{q} vs {expected}"
-        );
-    }
+    assert_balanced(&plain, &balanced, m);
     // The light: the sky's irradiance on a level surface plus the sun's and the moon's.
     let disc = |d: &brine_sky::Disc| d.irradiance_rgb * d.direction.y.max(0.0);
     let light =
@@ -342,14 +349,7 @@ fn the_scene_white_balance_shows_the_scenes_light_as_white() {
     let mean = plain.pixels.iter().fold(DVec3::ZERO, |a, p| a + p.clamp(DVec3::ZERO, DVec3::splat(white)))
         / plain.pixels.len() as f64;
     let m = brine_sky::white_balance_linear_srgb(mean).expect("a daylit frame's mean is a white to adapt to");
-    assert_eq!(plain.exposure_ev.to_bits(), grey_world.exposure_ev.to_bits());
-    for (p, q) in plain.pixels.iter().zip(&grey_world.pixels) {
-        let expected = m * *p;
-        assert!(
-            (*q - expected).abs().max_element() <= ROUNDING * expected.abs().max_element().max(1.0),
-            "{q} vs {expected}"
-        );
-    }
+    assert_balanced(&plain, &grey_world, m);
     let grey = m * mean;
     assert!((grey - DVec3::splat(grey.y)).abs().max_element() < ROUNDING * grey.y, "{grey}");
     // Under an overcast sky the sun's direct light is the clouds' to take: the light balanced
