@@ -296,6 +296,19 @@ fn a_band_limited_fft_mesh_holds_no_mode_its_grid_cannot_carry() {
     assert!(limit.faded_waves.unwrap() > 100, "{limit:?}");
     let (band_frame, _) = world.ocean().fft_frame_on_grid(t, 2.0).unwrap();
     assert_vertices_on_the_band_sea(&coarse, &band_frame, &world);
+    // The vertices moved with the band-limited water (each rest point `u` to `u + D(u)`), not
+    // with the whole sea's, whose short modes move them by more than a millimetre somewhere.
+    let (spacing, n) = (2.0, (tile / 2.0) as usize + 1);
+    let origin = DVec2::splat(0.5 * tile) - DVec2::splat(0.5 * (n - 1) as f64 * spacing);
+    let mut moved = 0.0_f64;
+    for (k, p) in coarse.positions.iter().enumerate().step_by(7) {
+        let u = origin + DVec2::new((k % n) as f64, (k / n) as f64) * spacing;
+        let x = u + band_frame.rest_displacement(u);
+        let at = DVec2::new(f64::from(p[0]), f64::from(p[2]));
+        assert!((at - x).length() < 1e-4, "vertex {k} at {at}, the band-limited water at {x}");
+        moved = moved.max((world.sea().rest_displacement(u) - band_frame.rest_displacement(u)).length());
+    }
+    assert!(moved > 1e-3, "the band-limited water moves as the whole sea (by at most {moved} m)");
     // At 12.5 cm the mesh still leaves out the shortest modes: the totals are compared.
     let (fine, fine_limit) = grid_mesh_band_limited(&world, t, &grid(0.125)).unwrap();
     let fine_limit_lost = fine_limit.lost_slope_covariance[0] + fine_limit.lost_slope_covariance[2];

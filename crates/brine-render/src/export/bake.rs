@@ -148,6 +148,17 @@ pub fn bake_frame(world: &World, t: f64, options: &BakeOptions) -> BakedFrame {
     // The FFT sea: its modes too short for the texels left out of its cascades; its normal map
     // is read through the whole sea's slope pyramids (`bake_sea`), whose box filter reports the
     // slopes it averaged away.
+    if world.ocean().fft_ocean().is_some_and(|o| o.modes_faded_on_grid(texel) == 0) {
+        // Every mode fits: the world's own sea, unchanged (no second synthesis).
+        let mut baked = bake_frame_of(world, t, options, None);
+        let limit = baked.limit.get_or_insert(GridLimit {
+            shortest_wave_m: 2.0 * texel,
+            faded_waves: None,
+            lost_slope_covariance: [0.0; 3],
+        });
+        limit.faded_waves = Some(0);
+        return baked;
+    }
     if let Some((frame, band)) = world.ocean().fft_frame_on_grid(t, texel) {
         let mut baked = bake_frame_of(world, t, options, Some(&frame));
         let limit = baked.limit.get_or_insert(GridLimit {

@@ -156,14 +156,19 @@ pub fn grid_mesh(world: &World, t: f64, grid: &MeshGrid) -> Mesh {
 /// # Errors
 /// A message for the sine sea, whose short waves are normals, not a sum a grid can leave out.
 pub fn grid_mesh_band_limited(world: &World, t: f64, grid: &MeshGrid) -> Result<(Mesh, GridLimit), String> {
+    if world.ocean().fft_ocean().is_some_and(|o| o.modes_faded_on_grid(grid.spacing_m) == 0) {
+        // Every mode fits: the plain mesh, byte for byte (no second synthesis).
+        let limit =
+            GridLimit { shortest_wave_m: 2.0 * grid.spacing_m, faded_waves: Some(0), lost_slope_covariance: [0.0; 3] };
+        return Ok((grid_mesh(world, t, grid), limit));
+    }
     if let Some((frame, band)) = world.ocean().fft_frame_on_grid(t, grid.spacing_m) {
         let limit = GridLimit {
             shortest_wave_m: 2.0 * grid.spacing_m,
             faded_waves: Some(band.faded),
             lost_slope_covariance: band.lost_slope_covariance.to_array(),
         };
-        let mesh = if band.faded == 0 { grid_mesh(world, t, grid) } else { grid_mesh_of(world, &frame, grid) };
-        return Ok((mesh, limit));
+        return Ok((grid_mesh_of(world, &frame, grid), limit));
     }
     let unsupported = || {
         "--band-limit: the sine sea (sea.surface = \"sine\") draws its short waves as normals, not as a sum of waves a grid can leave out; use the trochoid, Gerstner or FFT sea".to_owned()

@@ -321,8 +321,7 @@ pub fn render_world_cancellable(
     });
     let balance = world.white_balance.or_else(|| {
         let white = 1.0 / crate::tonemap::exposure_scale(exposure_ev);
-        world
-            .white_balance_to_image
+        (world.white_balance_mode == crate::scene::WhiteBalance::Image)
             .then(|| brine_sky::white_balance_linear_srgb(crate::world::clipped_mean_rgb(&pixels, white)))
             .flatten()
     });

@@ -350,15 +350,32 @@ fn the_scene_white_balance_shows_the_scenes_light_as_white() {
         / plain.pixels.len() as f64;
     let m = brine_sky::white_balance_linear_srgb(mean).expect("a daylit frame's mean is a white to adapt to");
     assert_balanced(&plain, &grey_world, m);
-    let grey = m * mean;
-    assert!((grey - DVec3::splat(grey.y)).abs().max_element() < ROUNDING * grey.y, "{grey}");
-    // Under an overcast sky the sun's direct light is the clouds' to take: the light balanced
-    // to is then mostly the sky's (which includes the clouds lit by the sun).
-    scene.sky.clouds = Some(crate::scene::CloudConfig { cover: 1.0, ..crate::scene::CloudConfig::default() });
-    let world = World::new(&scene).expect("a valid scene");
-    let sun = world.sky.sun();
-    let direct = sun.irradiance_rgb.y * sun.direction.y;
-    let light = crate::world::scene_light(&world.sky, DVec2::ZERO);
-    let through = light.y - world.sky.horizontal_irradiance_rgb().y;
-    assert!(through < OVERCAST_SUN * direct, "the sun through an overcast: {through} of {direct}");
+    // The clip is reached (the sun's glitter), and moves the mean the balance takes.
+    let unclipped = plain.pixels.iter().fold(DVec3::ZERO, |a, p| a + *p) / plain.pixels.len() as f64;
+    assert!(plain.pixels.iter().any(|p| p.max_element() > white), "no pixel above the exposure's white");
+    assert!((unclipped - mean).abs().max_element() > 1e-3 * mean.y, "{unclipped} against {mean}");
+    // Under an overcast sky the sun's direct light is the clouds' to take; under a broken cover,
+    // the share of the sea the clouds leave in the sun (a cloud scale of 4 km, a 16 km square).
+    let sun_share = |cover: f64, position: [f64; 3], yaw_deg: f64| {
+        let mut s = scene.clone();
+        s.output.white_balance = crate::scene::WhiteBalance::Scene;
+        s.sky.clouds = Some(crate::scene::CloudConfig { cover, ..crate::scene::CloudConfig::default() });
+        (s.camera.position, s.camera.yaw_deg) = (position, Some(yaw_deg));
+        let world = World::new(&s).expect("a valid scene");
+        let sun = world.sky.sun();
+        let direct = sun.irradiance_rgb * sun.direction.y;
+        // The square ahead of the camera: its foot the middle of the near edge.
+        let forward = world.camera.forward;
+        let ahead = DVec2::new(forward.x, forward.z).normalize() * 0.5 * world.white_balance_span_m;
+        let centre = DVec2::new(position[0], position[2]) + ahead;
+        let light = crate::world::scene_light(&world.sky, centre, world.white_balance_span_m);
+        let m = world.white_balance.expect("daylight");
+        let seen = m * light;
+        assert!((seen - DVec3::splat(seen.y)).abs().max_element() < ROUNDING * seen.y, "{seen}");
+        (light.y - world.sky.horizontal_irradiance_rgb().y) / direct.y
+    };
+    let overcast = sun_share(1.0, [0.0, 10.0, 0.0], 0.0);
+    assert!(overcast < OVERCAST_SUN, "the sun through an overcast: {overcast}");
+    let broken = sun_share(0.5, [3000.0, 10.0, -2000.0], 70.0);
+    assert!((0.05..0.95).contains(&broken), "the sun through a broken cover: {broken}");
 }

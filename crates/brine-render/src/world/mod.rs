@@ -141,11 +141,13 @@ pub struct World {
     pub(crate) exposure_compensation_ev: f64,
     /// Horizontal illuminance of sun, moon and sky at sea level (lx).
     pub(crate) illuminance_lx: f64,
-    /// The white balance applied to the frame (linear sRGB to linear sRGB), when asked for and
-    /// the light is one it can adapt to.
+    /// The white balance applied to the frame (linear sRGB to linear sRGB) for
+    /// `[output] white_balance = "scene"`, when the light is one it can adapt to.
     pub(crate) white_balance: Option<glam::DMat3>,
-    /// Balance the frame to its own mean colour (`[output] white_balance = "image"`).
-    pub(crate) white_balance_to_image: bool,
+    /// `[output] white_balance`.
+    pub(crate) white_balance_mode: crate::scene::WhiteBalance,
+    /// Side of the square of sea over which the scene light averages the clouds' shadow (m).
+    pub(crate) white_balance_span_m: f64,
     /// The reference rendering: no wave faded with the pixel footprint, no normal read through
     /// it (the slopes a footprint would hide stay in the normals, for many samples per pixel to
     /// average), so that a supersampled frame shows what the filtering is meant to preserve.
@@ -244,6 +246,30 @@ impl World {
         self.sample_scale = sample_footprint_scale(camera.spp);
         let c = self.camera.position;
         self.underwater = c.y < self.sea.height(c.x, c.z);
+        self.white_balance = self.scene_white_balance();
+    }
+
+    /// The white balance of `[output] white_balance = "scene"` for this world's camera: the
+    /// [`scene_light`] over the square of [`SCENE_LIGHT_SPAN_CLOUD_SCALES`] cloud scales ahead
+    /// of the camera ([`Self::scene_light_centre`]); `None` in the other modes or for a light
+    /// it cannot adapt to.
+    pub(crate) fn scene_white_balance(&self) -> Option<glam::DMat3> {
+        if self.white_balance_mode != crate::scene::WhiteBalance::Scene {
+            return None;
+        }
+        let light = scene_light(&self.sky, self.scene_light_centre(), self.white_balance_span_m);
+        brine_sky::white_balance_linear_srgb(light)
+    }
+
+    /// The centre of the square of sea whose clouds' shadow the scene light averages (x, z; m):
+    /// half its side ahead of the camera's foot along the view's bearing, so that the camera's
+    /// foot is the middle of its near edge (the foot itself for a view straight down).
+    pub(crate) fn scene_light_centre(&self) -> DVec2 {
+        let c = self.camera.position;
+        let ahead = DVec2::new(self.camera.forward.x, self.camera.forward.z);
+        let ahead =
+            if ahead.length() > 0.1 { ahead.normalize() * 0.5 * self.white_balance_span_m } else { DVec2::ZERO };
+        DVec2::new(c.x, c.z) + ahead
     }
 }
 
@@ -338,29 +364,29 @@ pub fn sample_footprint_scale(spp: u32) -> f64 {
     (1.0 / f64::from(spp.max(1)).sqrt()).max(0.125)
 }
 
-/// Side of the square around the camera's foot over which [`scene_light`] averages the clouds'
-/// shadow on the sun and the moon (m), and the samples per side: a few cloud features (the
-/// layers' largest are a few kilometres) over the sea a view sees most of.
-const SCENE_LIGHT_SHADOW_SPAN_M: f64 = 3000.0;
+/// Side of the square of sea over which [`scene_light`] averages the clouds' shadow on the sun
+/// and the moon, in cloud scales (`[sky.clouds] scale_m`, the size of the layers' largest
+/// features): a few features, so that the mean is the cover's share of shadow rather than
+/// whether one cloud shades the camera.
+pub(crate) const SCENE_LIGHT_SPAN_CLOUD_SCALES: f64 = 4.0;
+
+/// Samples per side of [`scene_light`]'s square.
 const SCENE_LIGHT_SHADOW_SAMPLES: usize = 16;
 
 /// The light of the scene for its white balance (linear sRGB, klx): the irradiance on a level
 /// surface of the sky (clouds included) plus the sun's and the moon's, each times the sine of
-/// its elevation and the mean of the clouds' transmittance toward it over a
-/// [`SCENE_LIGHT_SHADOW_SPAN_M`] square around the camera's foot `foot` (x, z; m): under a broken
-/// cover, the share of the sea in the clouds' shadow.
-pub(crate) fn scene_light(sky: &Sky, foot: DVec2) -> DVec3 {
+/// its elevation and the mean of the clouds' transmittance toward it over a square of sea of
+/// side `span_m` (m) centred on `centre` (x, z; m), on a 16 × 16 grid: under a broken cover,
+/// the share of the sea in the clouds' shadow.
+pub(crate) fn scene_light(sky: &Sky, centre: DVec2, span_m: f64) -> DVec3 {
     let n = SCENE_LIGHT_SHADOW_SAMPLES;
-    let step = SCENE_LIGHT_SHADOW_SPAN_M / n as f64;
+    let step = span_m / n as f64;
+    let offset = |k: usize| (k as f64 + 0.5 - 0.5 * n as f64) * step;
     let shadow = |toward: DVec3| {
         let mut sum = 0.0;
         for j in 0..n {
             for i in 0..n {
-                let (x, z) = (
-                    foot.x + (i as f64 + 0.5 - 0.5 * n as f64) * step,
-                    foot.y + (j as f64 + 0.5 - 0.5 * n as f64) * step,
-                );
-                sum += sky.cloud_transmittance(DVec3::new(x, 0.0, z), toward);
+                sum += sky.cloud_transmittance(DVec3::new(centre.x + offset(i), 0.0, centre.y + offset(j)), toward);
             }
         }
         sum / (n * n) as f64
@@ -616,13 +642,8 @@ impl World {
         let e_horizontal = sky_e.y
             + sky.sun().irradiance_rgb.y * sky.sun().direction.y.max(0.0)
             + sky.moon().map_or(0.0, |m| m.irradiance_rgb.y * m.direction.y.max(0.0));
-        let white_balance = match scene.output.white_balance {
-            crate::scene::WhiteBalance::None | crate::scene::WhiteBalance::Image => None,
-            crate::scene::WhiteBalance::Scene => brine_sky::white_balance_linear_srgb(scene_light(
-                &sky,
-                DVec2::new(scene.camera.position[0], scene.camera.position[2]),
-            )),
-        };
+        let white_balance_span_m = SCENE_LIGHT_SPAN_CLOUD_SCALES
+            * scene.sky.clouds.as_ref().map_or(crate::scene::CloudConfig::default().scale_m, |c| c.scale_m);
         let sun_below = brine_optics::refract(-sky.sun().direction, DVec3::Y, 1.0, WATER_IOR)
             .filter(|_| sky.sun().direction.y > 0.0)
             .unwrap_or(DVec3::NEG_Y);
@@ -739,14 +760,16 @@ impl World {
             exposure_ev,
             exposure_compensation_ev: scene.output.exposure_compensation_ev,
             illuminance_lx: e_horizontal * 1000.0,
-            white_balance,
-            white_balance_to_image: scene.output.white_balance == crate::scene::WhiteBalance::Image,
+            white_balance: None,
+            white_balance_mode: scene.output.white_balance,
+            white_balance_span_m,
             reference: false,
             sample_scale: sample_footprint_scale(scene.camera.spp),
         };
         let mut world = world;
         let c = camera.position;
         world.underwater = c.y < world.sea.height(c.x, c.z);
+        world.white_balance = world.scene_white_balance();
         Ok(world)
     }
 }

@@ -71,7 +71,7 @@ pub(super) struct CascadeKinematics {
     dxx: Vec<f32>,
     dzz: Vec<f32>,
     dxz: Vec<f32>,
-    height_rate: Vec<f32>,
+    pub(super) height_rate: Vec<f32>,
     displacement_x_rate: Vec<f32>,
     displacement_z_rate: Vec<f32>,
     height_acceleration: Vec<f32>,

@@ -643,11 +643,17 @@ impl FftOcean {
         (fields, band)
     }
 
-    /// The number of modes shorter than `wavelength_m` (m): those a grid of half that spacing
-    /// would alias.
+    /// The number of modes of wavelength `wavelength_m` (m) or shorter: those a grid of half
+    /// that spacing aliases (and [`Self::rest_fields_on_grid`] leaves out).
     pub fn modes_shorter_than(&self, wavelength_m: f64) -> usize {
         let k = TAU / wavelength_m;
-        self.cascades.iter().flat_map(|c| &c.modes).filter(|m| m.k > k).count()
+        self.cascades.iter().flat_map(|c| &c.modes).filter(|m| m.k >= k).count()
+    }
+
+    /// The number of modes [`Self::rest_fields_on_grid`] weights below 1 for a grid of spacing
+    /// `spacing_m` (m, `> 0`): without any, the sea on the grid is the sea itself.
+    pub fn modes_faded_on_grid(&self, spacing_m: f64) -> usize {
+        self.cascades.iter().flat_map(|c| &c.modes).filter(|m| grid_weight(m, spacing_m) < 1.0).count()
     }
 
     /// The number of modes of the sea (each wave vector of its spectral grids once).

@@ -203,10 +203,16 @@ fn power(values: &[f64], n: usize) -> Vec<f64> {
 }
 
 /// Checks one field of the band-limited sea against the whole sea's on a cascade's grid: no
-/// power at wave vectors under `2Δ`, `w²` times the whole sea's between `2Δ` and `3Δ`, the same
-/// from `3Δ`, to `rounding` of the field's total power. Returns the share of the whole field's
-/// power left out.
-fn check_band(whole: &[f64], limited: &[f64], n: usize, tile: f64, spacing: f64, rounding: f64) -> f64 {
+/// power at wave vectors under `2Δ` (to `zero` of the field's total power), `w²` times the whole
+/// sea's between `2Δ` and `3Δ`, the same from `3Δ` (to `rounding`). Returns the share of the
+/// whole field's power left out.
+fn check_band(
+    whole: &[f64],
+    limited: &[f64],
+    n: usize,
+    (tile, spacing): (f64, f64),
+    (zero, rounding): (f64, f64),
+) -> f64 {
     let (pa, pb) = (power(whole, n), power(limited, n));
     let total: f64 = pa.iter().sum();
     let signed = |i: usize| if i <= n / 2 { i as f64 } else { i as f64 - n as f64 };
@@ -217,6 +223,7 @@ fn check_band(whole: &[f64], limited: &[f64], n: usize, tile: f64, spacing: f64,
         let w = brine_core::footprint::footprint_weight(wavelength, 2.0 * spacing);
         assert!((y - w * w * x).abs() <= rounding * total, "a mode of {wavelength} m: {y} against {w}² × {x}");
         if wavelength <= 2.0 * spacing {
+            assert!(y <= zero * total, "a mode of {wavelength} m kept: {y} of {total}");
             removed += x / total;
         }
     }
@@ -230,11 +237,15 @@ fn check_band(whole: &[f64], limited: &[f64], n: usize, tile: f64, spacing: f64,
 /// and on a grid finer than every mode it is the whole sea, to the bit.
 #[test]
 fn the_sea_on_a_grid_holds_no_mode_the_grid_cannot_carry() {
-    /// FFT rounding of a mode's power, relative to the field's total power (amplitudes rounded
-    /// at 10⁻¹⁵–10⁻¹³ relative; their products with the other modes' at 10⁻¹²).
-    const LEFT_OUT: f64 = FFT_ROUNDING_REL;
-    /// The same for fields stored in f32 (rounded at 6×10⁻⁸ relative, times `N` values).
-    const F32_LEFT_OUT: f64 = 1e-9;
+    /// Power left at a left-out mode, relative to the field's total: the FFT's rounding of
+    /// the other modes (amplitudes rounded at 10⁻¹⁶–10⁻¹³ relative, squared).
+    const LEFT_OUT: f64 = 1e-20;
+    /// The same for fields stored in f32 (values rounded at 6×10⁻⁸ relative: the noise's power
+    /// per bin is about 10⁻¹⁵/N² of the total; 10⁻¹² with margin).
+    const F32_LEFT_OUT: f64 = 1e-12;
+    /// Difference of a kept mode's power for f32 fields (its amplitude rounded at 6×10⁻⁸
+    /// relative, against the total).
+    const F32_ROUNDING: f64 = 1e-9;
     let pm = crate::PiersonMoskowitz::from_u10(12.0).unwrap();
     let spreading = crate::CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
     let options = FftOptions { resolution: 64, ..FftOptions::for_spectrum(&pm, 2) };
@@ -252,15 +263,16 @@ fn the_sea_on_a_grid_holds_no_mode_the_grid_cannot_carry() {
     assert!(band.faded > 100, "modes faded: {}", band.faded);
     let mut removed = 0.0;
     for (a, b) in full.iter().zip(&limited) {
-        removed += check_band(&a.height, &b.height, a.resolution, a.tile_size, spacing, LEFT_OUT);
+        removed += check_band(&a.height, &b.height, a.resolution, (a.tile_size, spacing), (LEFT_OUT, FFT_ROUNDING_REL));
     }
     assert!(removed > 0.01, "the whole sea had little to leave out: {removed}");
     // The particles' displacement (f32 fields: their rounding, squared, against the total).
     let (whole_k, limited_k) = (ocean.kinematics(3.7), ocean.kinematics_on_grid(3.7, spacing));
     for (a, b) in whole_k.cascades.iter().zip(&limited_k.cascades) {
         let f64s = |v: &[f32]| v.iter().map(|&x| f64::from(x)).collect::<Vec<_>>();
-        let (x, y) = (f64s(&a.displacement_x), f64s(&b.displacement_x));
-        check_band(&x, &y, a.n, a.tile, spacing, F32_LEFT_OUT);
+        for (x, y) in [(&a.displacement_x, &b.displacement_x), (&a.height_rate, &b.height_rate)] {
+            check_band(&f64s(x), &f64s(y), a.n, (a.tile, spacing), (F32_LEFT_OUT, F32_ROUNDING));
+        }
     }
     // The slopes left out: the whole sea's mean slope products minus the limited sea's, each
     // cascade's over its own tile (Parseval), summed over the cascades.
