@@ -569,6 +569,9 @@ impl FftOcean {
     ///
     /// # Returns
     /// The [`FftKinematics`].
+    ///
+    /// # References
+    /// Shannon 1949 (sampling); Tessendorf 2001, Eq. 36, 44 (height and choppy displacement).
     pub fn kinematics_on_grid(&self, t: f64, spacing_m: f64) -> FftKinematics {
         debug_assert!(t.is_finite(), "time {t} must be finite");
         debug_assert!(spacing_m > 0.0 && spacing_m.is_finite(), "spacing {spacing_m} m");
@@ -669,6 +672,9 @@ impl FftOcean {
     ///
     /// # Returns
     /// The [`FftFrame`] and what was left out.
+    ///
+    /// # References
+    /// As [`Self::rest_fields_on_grid`].
     pub fn at_time_on_grid(&self, t: f64, spacing_m: f64) -> (FftFrame, FftGridBand) {
         let (rest, band) = self.rest_fields_on_grid(t, spacing_m);
         (FftFrame::from_rest_fields(self, &rest, t), band)
