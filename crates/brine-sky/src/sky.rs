@@ -497,11 +497,22 @@ impl Sky {
         sky + discs * (1.0 - alpha)
     }
 
+    /// The cloud layers, when the sky has clouds.
+    pub fn clouds(&self) -> Option<&CloudLayers> {
+        self.clouds.as_ref()
+    }
+
+    /// The time (s) at which the clouds are drawn ([`SkyParams::time_s`]).
+    pub fn time_s(&self) -> f64 {
+        self.time_s
+    }
+
     /// Fraction of the sun's (or the moon's) direct light that reaches the sea point `point`
     /// through the clouds, `1 − α_shadow` ([`CloudLayers::shadow`]); 1 without clouds.
     ///
     /// # Arguments
-    /// - `point`: the sea point (m; the layers' origin is the camera's horizontal position 0).
+    /// - `point`: the sea point (m, in the sea's frame; the clouds' [`CloudParams::origin_m`] is
+    ///   the eye's position in that frame).
     /// - `toward`: unit direction of the light.
     ///
     /// # Returns

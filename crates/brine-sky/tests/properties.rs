@@ -140,7 +140,7 @@ proptest! {
         wind_e in -100.0f64..=100.0, wind_s in -100.0f64..=100.0, seed in any::<u64>(),
         view_e in -90.0f64..=90.0, view_a in 0.0f64..360.0, time in -1e6f64..1e6,
     ) {
-        let params = CloudParams { cover, altitude_m: altitude, scale_m: scale, wind_m_s: DVec2::new(wind_e, wind_s), seed };
+        let params = CloudParams { cover, altitude_m: altitude, scale_m: scale, wind_m_s: DVec2::new(wind_e, wind_s), seed, ..CloudParams::default() };
         let c = CloudLayers::new(&params).unwrap();
         let a = c.opacity(dir(view_e, view_a), time);
         prop_assert!((0.0..=1.0).contains(&a), "α = {a}");

@@ -2,7 +2,8 @@
 //! the schedule asks for, and hands each finished image to the window.
 //!
 //! What a change costs depends on what changed. A camera move only swaps the world's camera
-//! ([`World::set_camera`]). A new hour or date builds the world at that instant on the parts
+//! ([`World::set_camera`]); with clouds, a move over the sea builds the world again before the
+//! refining passes, so that the clouds are seen from the camera. A new hour or date builds the world at that instant on the parts
 //! that do not change with time ([`World::at_instant`]). A new sea (wind, surface, spectrum,
 //! phenomena) builds those parts again ([`Timeless::new`]).
 
@@ -123,10 +124,16 @@ pub fn run(shared: &Shared, repaint: &(dyn Fn() + Sync)) {
         let Some(request) = current.as_ref() else { continue };
         let Some(pass) = schedule.next() else { continue };
 
-        // The world of the request: rebuilt only as far as what changed requires.
+        // The world of the request: rebuilt only as far as what changed requires. A move over the
+        // sea with clouds keeps the clouds seen from where the world was built for the view's
+        // first pass, which follows the mouse; the refining passes see them from the camera.
         let started = Instant::now();
         let key = without_camera(&request.scene);
-        if world.as_ref().is_none_or(|(k, _)| *k != key) {
+        let clouds_from_elsewhere = |w: &World| {
+            let p = request.scene.camera.position;
+            w.cloud_origin().is_some_and(|o| o != glam::DVec2::new(p[0], p[2]))
+        };
+        if world.as_ref().is_none_or(|(k, w)| *k != key || (!schedule.is_first() && clouds_from_elsewhere(w))) {
             world = None;
             if !timeless.as_ref().is_some_and(|t| t.fits(&request.scene)) {
                 timeless = None;

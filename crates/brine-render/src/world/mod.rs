@@ -202,6 +202,12 @@ impl World {
         &self.filtered_sky
     }
 
+    /// Where the sky's clouds are seen from: the horizontal position `(x, z)` (m) of the camera
+    /// the world was built for; `None` without clouds.
+    pub fn cloud_origin(&self) -> Option<DVec2> {
+        self.sky.clouds().map(|c| c.params().origin_m)
+    }
+
     /// The camera.
     pub fn camera(&self) -> &Camera {
         &self.camera
@@ -240,7 +246,9 @@ impl World {
     /// The same world seen through another camera: what a camera move changes (the camera,
     /// whether it is under the sea, the samples' footprint for its samples per pixel); the sea,
     /// the sky and the white water stay. The world is then the one [`World::new`] builds for the
-    /// scene with that camera.
+    /// scene with that camera, but for the clouds: the sky keeps them as seen from where the
+    /// world was built ([`World::cloud_origin`]; their shadows on the sea do not move). After a
+    /// move over the sea with clouds, build the world again for the exact sky.
     pub fn set_camera(&mut self, camera: &crate::scene::CameraConfig) {
         self.camera = crate::camera::from_config(camera);
         self.sample_scale = sample_footprint_scale(camera.spp);
@@ -600,6 +608,8 @@ impl World {
                 scale_m: c.scale_m,
                 wind_m_s: DVec2::from_array(c.wind_m_s),
                 seed: c.seed,
+                // The layers are fixed over the sea and seen from the camera.
+                origin_m: DVec2::new(scene.camera.position[0], scene.camera.position[2]),
             }),
             _ => None,
         };

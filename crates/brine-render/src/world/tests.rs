@@ -268,3 +268,35 @@ fn a_gale_has_spume_over_it() {
     let down = spray.light.lookup([0.0, -1.0, 0.0]);
     assert!(along[1] > down[1], "{along:?} {down:?}");
 }
+
+/// The clouds are fixed over the sea and seen from the camera: a camera kilometres off the origin
+/// sees straight up the cloud whose shadow a zenith sun casts at its foot, wherever it stands, and
+/// a world moved by `set_camera` keeps the clouds seen from where it was built.
+#[test]
+fn the_clouds_over_an_off_origin_camera_are_those_that_shade_it() {
+    // Rounding of the view's distance fade, divided out.
+    const ROUNDING: f64 = 1e-12;
+    let mut scene = Scene::default_scene();
+    scene.sky.clouds = Some(crate::scene::CloudConfig { cover: 0.5, ..crate::scene::CloudConfig::default() });
+    let (mut cloudy, mut clear) = (0, 0);
+    for i in 0..12 {
+        let (x, z) = (6000.0 + 1733.0 * f64::from(i), -2500.0 + 911.0 * f64::from(i));
+        scene.camera.position = [x, 10.0, z];
+        let world = World::new(&scene).expect("a valid scene");
+        assert_eq!(world.cloud_origin(), Some(DVec2::new(x, z)));
+        let clouds = world.sky.clouds().expect("clouds");
+        let fade = (-clouds.distance(DVec3::Y) / 80_000.0).exp();
+        let seen = clouds.opacity(DVec3::Y, world.sky.time_s());
+        let shade = 1.0 - world.sky.cloud_transmittance(DVec3::new(x, 0.0, z), DVec3::Y);
+        assert!((shade * fade - seen).abs() < ROUNDING, "camera at ({x}, {z}): seen {seen}, shade {shade}");
+        cloudy += usize::from(shade > 0.5);
+        clear += usize::from(shade < 0.5);
+    }
+    // Half the sky is covered: the cameras stand both under clouds and under clear sky.
+    assert!(cloudy > 0 && clear > 0, "{cloudy} under clouds, {clear} under clear sky");
+    let mut moved = World::new(&scene).expect("a valid scene");
+    let built_at = moved.cloud_origin();
+    scene.camera.position = [0.0, 10.0, 0.0];
+    moved.set_camera(&scene.camera);
+    assert_eq!(moved.cloud_origin(), built_at, "set_camera keeps the clouds seen from where the world was built");
+}
