@@ -193,6 +193,46 @@ fn an_interrupted_bake_resumed_gives_the_same_maps() {
     }
 }
 
+/// The camera and the output do not enter a bake's maps (those of two cameras are the same
+/// bytes): `--resume` keeps the maps of a scene that differs from theirs only there, and still
+/// refuses one whose sea differs, naming its key and not the camera's.
+#[test]
+fn a_bake_resumes_over_another_camera_but_not_another_sea() {
+    let dir = tempfile::tempdir().unwrap();
+    let root = dir.path();
+    std::fs::write(root.join("a.toml"), "[camera]\nyaw_deg = 10.0\n").unwrap();
+    std::fs::write(root.join("b.toml"), "[camera]\nyaw_deg = 200.0\nfov_deg = 30.0\n[output]\npath = \"x.png\"\n")
+        .unwrap();
+    std::fs::write(root.join("c.toml"), "[camera]\nyaw_deg = 200.0\n[sea]\nwind_speed_m_s = 12.0\n").unwrap();
+    let bake = |scene: &str, resume: bool| {
+        let mut args = vec!["bake", "-o", "maps", "--size", "8", "--tile-m", "40", "--frames", "0..2", scene];
+        if resume {
+            args.push("--resume");
+        }
+        brine(&args, root)
+    };
+    let o = bake("a.toml", false);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = bake("b.toml", true);
+    let log = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{log}");
+    assert!(log.contains("every frame (2) kept from an earlier run"), "{log}");
+    // The maps are those of a fresh bake of the other camera's scene, byte for byte.
+    let o = brine(&["bake", "-o", "fresh", "--size", "8", "--tile-m", "40", "--frames", "0..2", "b.toml"], root);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    for name in ["displacement_0001.exr", "normal_0000.exr", "foam_0001.exr", "spray_0000.exr"] {
+        let (x, y) = (
+            std::fs::read(root.join("maps").join(name)).unwrap(),
+            std::fs::read(root.join("fresh").join(name)).unwrap(),
+        );
+        assert!(x == y, "{name}: the camera changed the maps");
+    }
+    let o = bake("c.toml", true);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("sea.wind_speed_m_s") && !err.contains("camera."), "{err}");
+}
+
 /// `brine mesh --frames … --resume` keeps the meshes written in full and makes again those cut
 /// short (and a `.gltf` whose `.bin` is gone), in every format: the files are then the
 /// uninterrupted run's.

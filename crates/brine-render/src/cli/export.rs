@@ -438,7 +438,8 @@ pub fn grid_limit_json(l: &crate::export::GridLimit, up: UpAxis) -> serde_json::
 }
 
 /// The keys in which two scene files differ, as `baked → now: key old → new` (the `[sea]` keys
-/// first, then the others; at most four, then how many more), or `None` if either is not TOML
+/// first, then the others but the camera's and the output's, which do not enter the maps; at
+/// most four, then how many more), or `None` if either is not TOML
 /// (a scene recorded in its Rust form) or they hold the same keys and values. A table on one
 /// side only is listed key by key.
 fn scene_differences(before: &str, now: &str) -> Option<String> {
@@ -467,6 +468,8 @@ fn scene_differences(before: &str, now: &str) -> Option<String> {
     let b: toml::Value = toml::from_str(now).ok()?;
     let mut out = Vec::new();
     walk("", Some(&a), Some(&b), &mut out);
+    // The camera and the output do not enter the maps.
+    out.retain(|line| !line.starts_with("camera.") && !line.starts_with("output."));
     if out.is_empty() {
         return None;
     }
@@ -610,9 +613,17 @@ pub fn run_bake(args: &BakeArgs) -> Result<(), CliError> {
         crate::output::remove_stale_temporaries(&args.output.join("bake.json"));
         crate::output::remove_stale_temporaries(&settings_path);
         // The scenes are compared as TOML tables: the same keys written another way are the same.
+        // The camera and the output do not enter the maps and are left out.
+        let baked = |text: &str| {
+            toml::from_str::<toml::Table>(text).map(|mut t| {
+                t.remove("camera");
+                t.remove("output");
+                t
+            })
+        };
         let same = |before: &serde_json::Value, k: &str| match (before.get(k), settings.get(k)) {
             (Some(serde_json::Value::String(a)), Some(serde_json::Value::String(b))) if k == "scene" => {
-                match (toml::from_str::<toml::Value>(a), toml::from_str::<toml::Value>(b)) {
+                match (baked(a), baked(b)) {
                     (Ok(x), Ok(y)) => x == y,
                     _ => a == b,
                 }
@@ -734,21 +745,25 @@ mod tests {
 
     /// The keys that differ are named with both values, the `[sea]` keys first and each group
     /// sorted, nested tables by their dotted path, a key set on one side only as absent on the
-    /// other and a table on one side only key by key; the same scene, or one that is not TOML,
-    /// names none.
+    /// other and a table on one side only key by key; the camera's and the output's keys are not
+    /// named (the maps do not depend on them); the same scene, or one that is not TOML, names none.
     #[test]
     fn a_resumed_bake_names_the_scene_keys_that_changed() {
         let before = "[camera]\nwidth = 8\n[sea]\nwaves = 5\n[sea.fft]\nresolution = 64\n";
-        let now =
-            "[camera]\nwidth = 9\n[sea]\nwaves = 5\nseed = 2\n[sea.fft]\nresolution = 128\n[sea.swell]\nwaves = 3\n";
+        let now = "[camera]\nwidth = 9\n[sea]\nwaves = 5\nseed = 2\n[sea.fft]\nresolution = 128\n[sea.swell]\nwaves = 3\n\
+                   [water]\ntype = \"II\"\n[output]\npath = \"o.png\"\n";
         assert_eq!(
             scene_differences(before, now).as_deref(),
             Some(
                 "baked → now: sea.fft.resolution 64 → 128; sea.seed absent → 2; sea.swell.waves absent → 3; \
-                 camera.width 8 → 9"
+                 water.type absent → \"II\""
             )
         );
         assert_eq!(scene_differences(before, before), None);
+        assert_eq!(
+            scene_differences(before, "[camera]\nwidth = 9\n[sea]\nwaves = 5\n[sea.fft]\nresolution = 64\n"),
+            None
+        );
         assert_eq!(
             scene_differences(before, "camera = { width = 8 }\nsea = { waves = 5, fft = { resolution = 64 } }"),
             None
