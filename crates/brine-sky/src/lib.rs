@@ -7,7 +7,7 @@
 //! mixed-gas and water-vapour transmittances, integrated against the CIE 1931 matching
 //! functions). The aerial perspective of Hoffman & Preetham (2002) used by Chen et al. 2007
 //! (§3.2). Beyond the papers, for the time-and-place-driven scenes of Li Ying et al. 2018
-//! (§2.1, §3.1): twilight (the sunset sky darkened and coloured by a single-scattering sky), the night-sky
+//! (§2.1, §3.1): twilight (the sunset sky darkened and coloured by a sky of single and second scattering), the night-sky
 //! glow and moonlight (Krisciunas & Schaefer 1991; Jensen et al. 2001), and procedural cloud
 //! layers after Chen et al.'s texture perturbation (§3.1). As an alternative clear day sky, the
 //! Hosek & Wilkie (2012) model of pbrt-v4, Mitsuba 3 and Blender Cycles ([`HosekWilkieSky`],
@@ -39,7 +39,7 @@
 //! Hosek–Wilkie: clear skies, turbidity 1–10, sun elevation 0–90°, ground albedo 0–1.
 //! Preetham's sky: clear skies, turbidity 1.7–10 (best 2–6), sun elevation 0–90°, view
 //! directions above the horizon (clamped at `cos θ = 0.01`). [`Sky`] accepts any sun elevation:
-//! below the horizon the twilight ratio (single scattering) and the night glow are
+//! below the horizon the twilight ratio (single and second scattering) and the night glow are
 //! approximations, documented in `docs/models/brine-sky.md`.
 //!
 //! ## Example

@@ -3,9 +3,9 @@
 //! The daylight models stop at the horizon. Below it, Brine keeps the luminance of the daylight
 //! model's sky at sunset (Preetham's, or Hosek–Wilkie's when chosen; the sun at elevation 0 in its
 //! azimuth) and scales it, per view direction, by the ratio
-//! of two *single-scattering* luminances computed in a spherical atmosphere: with the sun at its
-//! true depression, and with the sun on the horizon. The colour moves from the sunset sky's
-//! colour to the single-scattering sky's own over the first 2° of depression,
+//! of two luminances of a *scattered* sky (single and second order) computed in a spherical
+//! atmosphere: with the sun at its true depression, and with the sun on the horizon. The colour
+//! moves from the sunset sky's colour to the scattered sky's own over the first 2° of depression,
 //!
 //! `L(v, e) = Y_D(v; 0) · (Y_ss(v; e)/Y_ss(v; 0)) · ((1 − w) c_D(v; 0) + w c_ss(v; e))`,
 //!
@@ -71,7 +71,7 @@ const N_AZIMUTH: usize = 19;
 const N_VIEW: usize = 40;
 const N_SUN: usize = 32;
 /// Depression of the sun (rad) over which the sky's colour moves from the sunset sky's colour to
-/// the single-scattering sky's: 2° (Brine's choice, about eight minutes at mid-latitudes).
+/// the scattered sky's: 2° (Brine's choice, about eight minutes at mid-latitudes).
 pub const TWILIGHT_COLOUR_DEPRESSION: f64 = 2.0 * PI / 180.0;
 /// Wavelengths of the spectral single scattering: 400, 420, …, 700 nm.
 const N_LAMBDA: usize = 16;
@@ -218,33 +218,52 @@ fn second_order(
     l
 }
 
-/// `∫ Φ(ω·v) L(ω) dω` over the upper hemisphere for the Rayleigh and the haze phase functions,
-/// `L` the single-scattered sky tabulated over the table's directions (mirrored about the sun's
-/// vertical plane), each cell weighted by its solid angle. The lower hemisphere is dark.
-fn phase_weighted(sky: &[Spectrum], view: DVec3) -> (Spectrum, Spectrum) {
-    let (mut r, mut m) = ([0.0; N_LAMBDA], [0.0; N_LAMBDA]);
+/// The table's directions as a quadrature of the upper hemisphere: each cell's direction and its
+/// mirror about the sun's vertical plane, with half the cell's solid angle each (the weights sum
+/// to 2π).
+fn hemisphere_cells() -> Vec<(DVec3, DVec3, f64)> {
     let d_phi = PI / (N_AZIMUTH - 1) as f64;
-    for i in 0..N_ELEVATION {
-        let (lo, hi) = elevation_band(i);
-        let a = elevation_of(i);
-        for j in 0..N_AZIMUTH {
+    (0..N_ELEVATION * N_AZIMUTH)
+        .map(|c| {
+            let (i, j) = (c / N_AZIMUTH, c % N_AZIMUTH);
+            let (lo, hi) = elevation_band(i);
+            let (a, phi) = (elevation_of(i), d_phi * j as f64);
             let w = (hi.sin() - lo.sin()) * d_phi * if j == 0 || j + 1 == N_AZIMUTH { 0.5 } else { 1.0 };
-            let phi = d_phi * j as f64;
-            let (mut pr, mut pm) = (0.0, 0.0);
-            for side in [1.0, -1.0] {
-                let omega = DVec3::new(a.cos() * phi.cos(), a.sin(), side * a.cos() * phi.sin());
-                let c = omega.dot(view);
-                pr += rayleigh_phase(c) * w;
-                pm += henyey_greenstein(c, HAZE_ASYMMETRY) * w;
-            }
-            let l = &sky[i * N_AZIMUTH + j];
+            let (x, y, z) = (a.cos() * phi.cos(), a.sin(), a.cos() * phi.sin());
+            (DVec3::new(x, y, z), DVec3::new(x, y, -z), w)
+        })
+        .collect()
+}
+
+/// `∫ Φ(ω·v) L(ω) dω` over the upper hemisphere for the Rayleigh and the haze phase functions,
+/// for each of the `skies` (single-scattered skies tabulated over the table's directions,
+/// mirrored about the sun's vertical plane), on the quadrature of [`hemisphere_cells`]. The lower
+/// hemisphere is dark.
+fn phase_weighted<const N: usize>(
+    skies: [&[Spectrum]; N],
+    cells: &[(DVec3, DVec3, f64)],
+    view: DVec3,
+) -> [(Spectrum, Spectrum); N] {
+    let g = HAZE_ASYMMETRY;
+    // Henyey–Greenstein as `henyey_greenstein`, with `x^{3/2}` as `x √x`.
+    let hg = |c: f64| {
+        let x = 1.0 + g * g - 2.0 * g * c;
+        (1.0 - g * g) / (4.0 * PI * x * x.sqrt())
+    };
+    let mut out = [([0.0; N_LAMBDA], [0.0; N_LAMBDA]); N];
+    for (cell, &(plus, minus, w)) in cells.iter().enumerate() {
+        let (c1, c2) = (plus.dot(view), minus.dot(view));
+        let pr = (rayleigh_phase(c1) + rayleigh_phase(c2)) * w;
+        let pm = (hg(c1) + hg(c2)) * w;
+        for (sky, (r, m)) in skies.iter().zip(out.iter_mut()) {
+            let l = &sky[cell];
             for k in 0..N_LAMBDA {
                 r[k] += pr * l[k];
                 m[k] += pm * l[k];
             }
         }
     }
-    (r, m)
+    out
 }
 
 /// A spectral radiance (relative to the solar spectrum) in linear sRGB.
@@ -255,6 +274,12 @@ fn to_rgb(l: &[f64; N_LAMBDA], sp: &Spectral) -> DVec3 {
     let rgb = xyz_to_linear_srgb(xyz);
     rgb.max(DVec3::splat(1e-3 * rgb.max_element().max(0.0)))
 }
+
+/// Below this sun elevation, −21°, no air the view rays cross is lit: the Earth's shadow stands
+/// `R(1/cos e − 1)` above the ground, 100 km (the model's top) at 10.1° of depression, and the
+/// farthest air a view reaches lies about 10° of arc away, where the sun stands up to 10.2°
+/// higher.
+const DARK_AIR: f64 = -21.0 * PI / 180.0;
 
 /// Rows and columns of the coarse domes whose mean single scattering is the ambient field.
 const N_AMBIENT_ELEVATION: usize = 6;
@@ -307,8 +332,9 @@ impl Ambient {
         Self { e0, means }
     }
 
-    /// The mean at local sun elevation `e` (rad), linear in the table; 0 below its first row,
-    /// the sunset value above 0°.
+    /// The mean at local sun elevation `e` (rad), interpolated geometrically between the rows (it
+    /// changes tenfold over about 2°; linearly where a row is 0); 0 below the first row, the
+    /// sunset value above 0°.
     fn at(&self, e: f64) -> [f64; N_LAMBDA] {
         if e < self.e0 {
             return [0.0; N_LAMBDA];
@@ -317,20 +343,22 @@ impl Ambient {
         let j = (u as usize).min(self.means.len().saturating_sub(2));
         let f = u - j as f64;
         let (a, b) = (self.means[j], self.means[(j + 1).min(self.means.len() - 1)]);
-        std::array::from_fn(|i| a[i] + (b[i] - a[i]) * f)
+        std::array::from_fn(|i| {
+            if a[i] > 0.0 && b[i] > 0.0 { a[i] * (b[i] / a[i]).powf(f) } else { a[i] + (b[i] - a[i]) * f }
+        })
     }
 }
 
-/// The tabulated single-scattering skies (the second order included) with the
+/// The tabulated scattered skies (single and second order) with the
 /// sun at one depression `e` and on the horizon, which turn the daylight model's sunset sky into the
 /// twilight sky.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TwilightRatio {
-    /// `L_ss(v; e)` per cell (linear sRGB, relative units).
+    /// `L₁ + L₂` with the sun at `e`, per cell (linear sRGB, relative units).
     num: Vec<DVec3>,
-    /// `L_ss(v; 0)` per cell.
+    /// `L₁ + L₂` with the sun on the horizon, per cell.
     den: Vec<DVec3>,
-    /// `w`, the share of the single-scattering sky's colour.
+    /// `w`, the share of the scattered sky's colour.
     colour_weight: f64,
 }
 
@@ -338,7 +366,7 @@ impl TwilightRatio {
     /// Tabulates the ratio for a sun at elevation `sun_elevation` (rad, ≤ 0) and turbidity `T`
     /// (16 × 19 view directions, each with the single and second order for both suns, 16
     /// wavelengths from 400 to 700 nm weighted by the solar spectrum and the CIE matching
-    /// functions, then linear sRGB; about 35 ms on two threads).
+    /// functions, then linear sRGB; about 40 ms on two threads).
     ///
     /// # Arguments
     /// - `sun_elevation`: `e` (rad), `[−π/2, π/2]`; above 0 it is treated as 0 (the ratio is 1).
@@ -358,8 +386,15 @@ impl TwilightRatio {
     pub fn new(sun_elevation: f64, turbidity: f64) -> Result<Self, SkyError> {
         check("sun_elevation", sun_elevation, sun_elevation.abs() <= PI / 2.0, "[-π/2, π/2] rad")?;
         check("turbidity", turbidity, (1.7..=10.0).contains(&turbidity), "[1.7, 10]")?;
-        let sp = Spectral::new(turbidity);
         let e = sun_elevation.min(0.0);
+        let u = (-e / TWILIGHT_COLOUR_DEPRESSION).clamp(0.0, 1.0);
+        let colour_weight = u * u * (3.0 - 2.0 * u);
+        if e < DARK_AIR {
+            // No air the view rays cross is lit: both orders are 0 (`apply` gives black).
+            let dark = vec![DVec3::ZERO; N_ELEVATION * N_AZIMUTH];
+            return Ok(Self { num: dark.clone(), den: dark, colour_weight });
+        }
+        let sp = Spectral::new(turbidity);
         // The view rays reach about 10° of arc of the Earth away; the ambient table spans the
         // local sun elevations they meet, for both skies.
         let ambient = Ambient::new(e - 11.0 * PI / 180.0, &sp);
@@ -369,23 +404,24 @@ impl TwilightRatio {
                 DVec3::new(a.cos() * phi.cos(), a.sin(), a.cos() * phi.sin())
             })
             .collect();
-        let sky = |e: f64| -> Vec<DVec3> {
-            use rayon::prelude::*;
-            let sun = DVec3::new(e.cos(), e.sin(), 0.0);
-            let first: Vec<Spectrum> = views.par_iter().map(|&v| single_scattering(v, sun, &sp)).collect();
-            views
-                .par_iter()
-                .zip(&first)
-                .map(|(&v, l1)| {
-                    let around = phase_weighted(&first, v);
-                    let l2 = second_order(v, sun, e, &around, &ambient, &sp);
-                    to_rgb(&std::array::from_fn(|k| l1[k] + l2[k]), &sp)
-                })
-                .collect()
-        };
-        let (num, den) = (sky(e), sky(0.0));
-        let u = (-e / TWILIGHT_COLOUR_DEPRESSION).clamp(0.0, 1.0);
-        Ok(Self { num, den, colour_weight: u * u * (3.0 - 2.0 * u) })
+        use rayon::prelude::*;
+        let (sun, sunset) = (DVec3::new(e.cos(), e.sin(), 0.0), DVec3::X);
+        let first = |s: DVec3| -> Vec<Spectrum> { views.par_iter().map(|&v| single_scattering(v, s, &sp)).collect() };
+        let (first_num, first_den) = (first(sun), first(sunset));
+        let cells = hemisphere_cells();
+        let (num, den): (Vec<DVec3>, Vec<DVec3>) = views
+            .par_iter()
+            .enumerate()
+            .map(|(c, &v)| {
+                let [around_num, around_den] = phase_weighted([&first_num, &first_den], &cells, v);
+                let total = |l1: &Spectrum, l2: Spectrum| to_rgb(&std::array::from_fn(|k| l1[k] + l2[k]), &sp);
+                (
+                    total(&first_num[c], second_order(v, sun, e, &around_num, &ambient, &sp)),
+                    total(&first_den[c], second_order(v, sunset, 0.0, &around_den, &ambient, &sp)),
+                )
+            })
+            .unzip();
+        Ok(Self { num, den, colour_weight })
     }
 
     /// The twilight sky toward a view, from the daylight model's sunset sky there:
@@ -443,7 +479,7 @@ impl TwilightRatio {
     /// The ratio per linear sRGB channel, `[0, 1]`; exactly 1 when the sun is on the horizon.
     ///
     /// # References
-    /// Nishita T. et al. 1993 (single scattering), tabulated here.
+    /// Nishita T. et al. 1993 (single scattering), with the second order, tabulated here.
     pub fn ratio(&self, elevation: f64, relative_azimuth: f64) -> DVec3 {
         let (num, den) = self.cells(elevation, relative_azimuth);
         (num / den).min(DVec3::ONE)
@@ -550,12 +586,14 @@ mod tests {
     /// colour of the twilight arch it scatters forward, warmer than daylight white, not the pale
     /// lavender of the dome's mean; away from it the Earth's shadow is bluer than the Belt of Venus
     /// above it (Lee 2015). The shares follow from the phase functions of the second order and
-    /// from its integration over the thick hazy segments along the horizon. With the earlier
-    /// isotropic second order (half the dome's mean, added to every direction) the glow 1° up
-    /// measured x = 0.304, a lavender white.
+    /// from its integration over the thick hazy segments along the horizon. Measured at T = 3:
+    /// x = 0.340 at 1° toward the sun, 0.396 at 3°; away from it 0.289 at 2° and 0.306 at 10°.
+    /// With the earlier isotropic second order (half the dome's mean, added to every direction)
+    /// the glow 1° up measured x = 0.304, a lavender white: the bound 0.325 lies between, above
+    /// D65's 0.313. The shadow's margin, 0.01, is about half the measured 0.017.
     #[test]
     fn the_horizon_glows_toward_the_set_sun_and_the_earths_shadow_is_blue() {
-        /// x of daylight white (D65 0.313) plus one step of the twilight's colours near it.
+        /// Between the isotropic term's 0.304 and this model's 0.340, above D65's 0.313.
         const WARMER_THAN_WHITE: f64 = 0.325;
         let tw = TwilightRatio::new(-3.6f64.to_radians(), 3.0).unwrap();
         let (glow, _) = table_xy(&tw, 1.0, 0.0);
@@ -565,6 +603,17 @@ mod tests {
         let (shadow, _) = table_xy(&tw, 2.0, 180.0);
         let (belt, _) = table_xy(&tw, 10.0, 180.0);
         assert!(shadow < 0.3 && shadow < belt - 0.01, "away from the sun: shadow x = {shadow:.3}, belt x = {belt:.3}");
+    }
+
+    /// Below `DARK_AIR` the tables are not computed: just above it they come out black already
+    /// (no lit air on any view ray, and so no second order either), so the shortcut changes
+    /// nothing.
+    #[test]
+    fn the_dark_air_shortcut_changes_nothing() {
+        let just_above = TwilightRatio::new(DARK_AIR + 1e-3, 3.0).unwrap();
+        assert!(just_above.num.iter().all(|c| *c == DVec3::ZERO), "lit air above −21°");
+        let below = TwilightRatio::new(DARK_AIR - 1e-3, 3.0).unwrap();
+        assert_eq!(below.apply(DVec3::ONE, 0.01, 0.0), DVec3::ZERO);
     }
 
     #[test]

@@ -203,9 +203,9 @@ impl World {
     }
 
     /// Where the sky's clouds are seen from: the horizontal position `(x, z)` (m) of the camera
-    /// the world was built for; `None` without clouds.
+    /// the world was built for; `None` without clouds (or with a cover of 0, which draws none).
     pub fn cloud_origin(&self) -> Option<DVec2> {
-        self.sky.clouds().map(|c| c.params().origin_m)
+        self.sky.clouds().filter(|c| c.params().cover > 0.0).map(|c| c.params().origin_m)
     }
 
     /// The camera.
