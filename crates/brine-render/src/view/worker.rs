@@ -241,8 +241,9 @@ mod tests {
     }
 
     /// The render thread refines a view to its final pass, which is `brine render`'s image of
-    /// the scene at the preview's size and that pass's samples; a camera move, a new hour and a
-    /// new wind are drawn the same way on what it keeps of the world.
+    /// the scene at the preview's size and that pass's samples; a camera move, a new hour, a
+    /// new wind and a move over the sea under clouds are drawn the same way on what it keeps of
+    /// the world.
     #[test]
     fn the_preview_ends_on_the_still_of_the_scene() {
         let (shared, handle) = spawn(|| {}).expect("the render thread starts");
@@ -269,6 +270,13 @@ mod tests {
         // A new sea builds the instant-free parts again.
         scene.sea.wind_speed_m_s = 14.0;
         check(&scene, 4);
+        // With clouds, a move over the sea ends on the clouds seen from where the camera stands
+        // (the world is built again before the refining passes).
+        scene.sky.clouds =
+            Some(crate::scene::CloudConfig { cover: 0.5, scale_m: 300.0, ..crate::scene::CloudConfig::default() });
+        check(&scene, 5);
+        scene.camera.position = [700.0, 10.0, -400.0];
+        check(&scene, 6);
         shared.stop();
         handle.join().expect("the thread ends");
     }
