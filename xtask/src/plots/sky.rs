@@ -60,6 +60,30 @@ pub fn plot(dir_out: &Path) -> Result<(), String> {
     );
     dome_grid(&dir_out.join("sky-dusk-to-night.png"), &dusk, 5, 256)?;
 
+    // The twilight along the horizon: the sky's chromaticity x over the view's elevation toward
+    // the set sun, to its side and away from it, with the sun 3.6° down (the dusk of the gallery).
+    let twilight = Sky::new(&SkyParams::new(3.0, dir(-3.6, 180.0))).map_err(|e| e.to_string())?;
+    let mut horizon = Vec::new();
+    for (label, bearing) in [("toward the set sun", 180.0), ("90° from it", 90.0), ("away from it", 0.0)] {
+        let points = (0..=60)
+            .filter_map(|k| {
+                let e = 0.6 + 0.5 * k as f64;
+                brine_sky::chromaticity(twilight.radiance_xyz(dir(e, bearing))).map(|(x, _)| (e, x))
+            })
+            .collect();
+        horizon.push((label.to_owned(), points));
+    }
+    horizon.push(("D65 white (x = 0.3127)".to_owned(), vec![(0.6, 0.3127), (30.6, 0.3127)]));
+    LineChart {
+        title: "Twilight along the horizon, sun 3.6° down, T = 3: chromaticity x",
+        x_label: "view elevation (°)",
+        y_label: "x (CIE 1931)",
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+        series: horizon,
+    }
+    .write(&dir_out.join("sky-twilight-horizon.svg"))?;
+
     // Zenith luminance and horizontal illuminance from −20° to 90°.
     let mut zenith = Vec::new();
     let mut illuminance = Vec::new();
