@@ -25,6 +25,7 @@
 //! | `m(u)`, `θ(a)` | [`FoamMemory::survivals`] | 1 | uniform patch variable, survival threshold of foam of age `a` |
 //! | `A₀` | [`FOAM_DENSITY`] | 1 | share of the swept water that the foam left behind covers |
 //! | `m_L(u)`, `λ₀` | [`FoamLace`], [`LACE_CELL_M`] | 1, m | uniform lace variable, its coarsest cell |
+//! | `q_L(u)` | [`FoamLace::local_cover`] | 1 | the cover the lace draws, mean the foam cover, `[0, 1]` |
 //! | `v` | [`FoamMemoryParams::drift_m_s`] | m s⁻¹ | foam drift relative to the water |
 //! | `r₈₀` | `r80_um` | µm | spray drop radius at 80 % humidity |
 //! | `dF/dr₈₀` | [`msd86_flux`] | m⁻² s⁻¹ µm⁻¹ | spray source function |

@@ -397,11 +397,12 @@ impl FoamMemory {
     /// drawn as holes opening in the foam rather than as a uniform dimming: a second lace,
     /// independent of the first (a few hundred cells away), of cover `b`, so that where a
     /// pixel resolves it old foam is a net of bright filaments around open water and where it does
-    /// not the pixel sees the mean `b`. Both laces' thickness shading
+    /// not the pixel sees its local cover ([`FoamLace::local_cover`]; `b` itself where the
+    /// footprint does not resolve that either). Both laces' thickness shading
     /// ([`FoamLace::cover_and_shade`], mean 1 over the foam) multiply the brightness. The area
     /// means of the cover and of `cover × brightness` are unchanged. Unchanged without a lace.
     /// Where the lace leaves open water (`c = 0`) the brightness is the mean's, `b`, and the
-    /// second lace is not read. Through an elliptical footprint both laces are read at its probes
+    /// second lace is not read (only its local cover, at the centre). Through an elliptical footprint both laces are read at its probes
     /// ([`FoamLace::cover_and_shade_over`]), the second only at those that hold foam, and the
     /// brightness is the foam-weighted mean of the probes'.
     pub fn laced(&self, ww: WhiteWater, x: f64, z: f64, footprint: &EllipticalFootprint) -> WhiteWater {
@@ -412,17 +413,19 @@ impl FoamMemory {
         // Read at the footprint's probes along its long axis ([`FoamLace::cover_and_shade_over`]),
         // the ageing lace only at the probes that hold foam.
         let [dx, dz] = AGEING_LACE_OFFSET_M;
-        let (sigma, b) = (footprint.minor_m(), ww.brightness.clamp(0.0, 1.0));
+        let (sigma, major, b) = (footprint.minor_m(), footprint.major_m(), ww.brightness.clamp(0.0, 1.0));
+        // Each lace's local cover, read once at the centre (it varies over cells).
+        let (white, aged) = (lace.local_cover(x, z, major, ww.white), lace.local_cover(x + dx, z + dz, major, b));
         // Where both laces' features are wider than the footprint is long, its centre stands for
         // it (one probe).
-        let whole = lace.draws_whole(footprint.major_m(), ww.white) && lace.draws_whole(footprint.major_m(), b);
+        let whole = lace.draws_whole(major, white) && lace.draws_whole(major, aged);
         let centre = EllipticalFootprint::round(sigma);
         let footprint = if whole { &centre } else { footprint };
         let (mut cover, mut lit) = (0.0, 0.0);
         for o in footprint.offsets() {
-            let (c, shade) = lace.cover_and_shade(x + o.x, z + o.y, sigma, ww.white);
+            let (c, shade) = lace.laced_cover_and_shade(x + o.x, z + o.y, sigma, white);
             if c > 0.0 {
-                let (thick, thick_shade) = lace.cover_and_shade(x + o.x + dx, z + o.y + dz, sigma, b);
+                let (thick, thick_shade) = lace.laced_cover_and_shade(x + o.x + dx, z + o.y + dz, sigma, aged);
                 cover += c;
                 lit += c * shade * thick * thick_shade;
             }
