@@ -17,6 +17,11 @@ const BENCHES: &[(&str, &str, &[&str])] = &[
         &["bench", "-p", "brine-render", "--bench", "wave_count"],
     ),
     (
+        "grid-band",
+        "study: the primary rays at N = 50 and 400 with the short waves traced or gathered into one grid (brine-waves GriddedTrochoids)",
+        &["bench", "-p", "brine-waves", "--bench", "grid_band"],
+    ),
+    (
         "animation",
         "a 24-frame animation of the reference frame against a still of it, per frame, both surfaces; frames checked equal to stills (brine-render)",
         &["bench", "-p", "brine-render", "--bench", "animation"],

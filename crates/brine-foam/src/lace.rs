@@ -275,6 +275,11 @@ impl FoamLace {
     ///
     /// # Returns
     /// `q_L`, `[0, 1]`.
+    ///
+    /// # References
+    /// Perlin K. 2002, "Improving noise", SIGGRAPH (the gradient noise `ν`); Darles et al. 2007
+    /// §4.1 (noise filtered by the footprint). The spread and the gain are Brine's choice, from
+    /// photographs of foam patches.
     pub fn local_cover(&self, x: f64, z: f64, sigma_m: f64, mean_cover: f64) -> f64 {
         debug_assert!(sigma_m >= 0.0);
         let q = mean_cover.clamp(0.0, 1.0);
@@ -481,10 +486,22 @@ impl FoamLace {
         self.laced_cover_and_shade(x, z, sigma_m, self.local_cover(x, z, sigma_m, mean_cover))
     }
 
-    /// [`Self::cover_and_shade`] for the local cover `q_L` ([`Self::local_cover`], `[0, 1]`)
-    /// already read: the lace alone. A caller that reads a footprint at several probes reads the
-    /// local cover once, at its centre (it varies over cells, not within a footprint the lace is
-    /// read through).
+    /// [`Self::cover_and_shade`] for the local cover `q_L` ([`Self::local_cover`]) already read:
+    /// the lace alone. A caller that reads a footprint at several probes reads the local cover
+    /// once, at its centre (it varies over cells, not within a footprint the lace is read
+    /// through).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: rest position (m), finite.
+    /// - `sigma_m`: the Gaussian footprint `σ` (m), `≥ 0`.
+    /// - `local_cover`: `q_L`, `[0, 1]`.
+    ///
+    /// # Returns
+    /// `(c, b)`: the cover `c ∈ [0, 1]`, of area mean `q_L` where `q_L` is held fixed, and the
+    /// brightness factor `b ∈ [1 − β, 1 + β]`.
+    ///
+    /// # References
+    /// Worley 1996 (the cellular variable); see [`FoamLace`].
     pub fn laced_cover_and_shade(&self, x: f64, z: f64, sigma_m: f64, local_cover: f64) -> (f64, f64) {
         debug_assert!(sigma_m >= 0.0 && (0.0..=1.0).contains(&local_cover));
         let q = local_cover.clamp(0.0, 1.0);

@@ -445,7 +445,68 @@ pub struct FftFrame {
     cascades: Vec<FftCascade>,
 }
 
+impl FftCascade {
+    /// A periodic cascade from heights already on its grid (`n × n` row by row, `[j·n + i]` at
+    /// `(iΔ, jΔ)`, `Δ = tile/n`): the traced surface is their cubic B-spline (read through
+    /// `blend` if any), its shading gradient the spline's own, its Jacobian 1 (no displacement of
+    /// its own). What the
+    /// gridded-band study grids the short trochoids into (brine-waves `GriddedTrochoids`).
+    ///
+    /// # Arguments
+    /// - `tile`: the tile's side (m), `> 0`; `n`: its resolution, a power of two `≥ 4`.
+    /// - `heights`: the grid heights (m).
+    /// - `band`: the band `[k_lo, k_hi)` (rad m⁻¹) the heights hold; `k_longest` its longest wave's
+    ///   wavenumber (rad m⁻¹), `> 0`: the cascade's feature size for footprint fading.
+    /// - `variance` (m²), `slope_covariance`: what the heights hold, for the statistics.
+    /// - `blend`: the tile-and-blend that keeps it from repeating, or `None` (periodic).
+    #[cfg(feature = "tracing")]
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn from_heights(
+        tile: f64,
+        n: usize,
+        heights: Vec<f32>,
+        band: (f64, f64),
+        k_longest: f64,
+        variance: f64,
+        slope_covariance: DVec3,
+        blend: Option<TileBlend>,
+    ) -> Self {
+        debug_assert!(n.is_power_of_two() && n >= 4 && heights.len() == n * n && tile > 0.0 && k_longest > 0.0);
+        let dx = tile / n as f64;
+        let spline = SplineGrid::new(&heights, n, dx);
+        let gradient = (0..n * n)
+            .map(|idx| {
+                let (_, gx, gz) = spline.value_and_gradient((idx % n) as f64 * dx, (idx / n) as f64 * dx);
+                [gx as f32, gz as f32]
+            })
+            .collect();
+        FftCascade {
+            tile,
+            n,
+            mask: n as i64 - 1,
+            inv_spacing: 1.0 / dx,
+            height: heights,
+            spline,
+            gradient,
+            jacobian: vec![1.0; n * n],
+            band,
+            k_longest,
+            variance,
+            slope_covariance,
+            uncovered: 0,
+            blend,
+        }
+    }
+}
+
 impl FftFrame {
+    /// A frame of the given cascades at time `time` (s), without displacement of its own
+    /// (choppiness 0): the gridded-band study's band.
+    #[cfg(feature = "tracing")]
+    pub(crate) fn from_cascades(time: f64, cascades: Vec<FftCascade>) -> Self {
+        Self { time, choppiness: 0.0, cascades }
+    }
+
     /// Builds the frame from the rest fields of `ocean` at time `time` (s).
     pub(crate) fn from_rest_fields(ocean: &FftOcean, rest: &[FftRestFields], time: f64) -> Self {
         let lambda = ocean.options().choppiness;

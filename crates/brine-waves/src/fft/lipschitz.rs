@@ -95,7 +95,7 @@ thread_local! {
 
 /// One cascade along one ray.
 #[derive(Debug, Clone, Copy)]
-struct CascadeOnRay {
+pub(crate) struct CascadeOnRay {
     cascade: usize,
     /// `−max H`, `−min H`.
     min: f64,
@@ -116,7 +116,7 @@ struct CascadeOnRay {
 /// [`RayTiers`] of an [`FftFrame`] along one ray: tier 0 is `y`, then one tier per cascade, in
 /// decreasing order of `(max − min)/L(d̂)` (the longest cascades first: far from the surface only
 /// they are evaluated).
-struct CascadeTiers<'a> {
+pub(crate) struct CascadeTiers<'a> {
     frame: &'a FftFrame,
     cascades: &'a [CascadeOnRay],
     origin: DVec3,
@@ -129,7 +129,7 @@ impl<'a> CascadeTiers<'a> {
     /// The tiers along `ray` up to `t_exit`, faded for a pixel of `footprint_angle` rad; with
     /// `cone > 0`, tiers that bound every ray within `cone` rad of `ray` (see
     /// [`FftFrame::certify_cone`]).
-    fn new(
+    pub(crate) fn new(
         frame: &'a FftFrame,
         state: &'a mut Vec<CascadeOnRay>,
         ray: &Ray,

@@ -44,6 +44,8 @@ pub(crate) mod fast_profile;
 pub(crate) mod gerstner_lanes;
 #[cfg(feature = "tracing")]
 pub(crate) mod gerstner_lipschitz;
+#[cfg(feature = "tracing")]
+pub(crate) mod gridded;
 pub(crate) mod lanes;
 #[cfg(feature = "tracing")]
 pub(crate) mod lipschitz;

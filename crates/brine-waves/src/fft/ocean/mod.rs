@@ -760,7 +760,7 @@ fn transpose(data: &mut [Complex64], n: usize) {
 
 /// Unnormalised 2-D inverse DFT `f[j][i] = Σ F[m][l] e^{2πi(li + mj)/N}` in place: the rows, a
 /// transpose, the rows again, a transpose back.
-fn inverse_fft_2d(data: &mut [Complex64], n: usize, fft: &dyn Fft<f64>) {
+pub(crate) fn inverse_fft_2d(data: &mut [Complex64], n: usize, fft: &dyn Fft<f64>) {
     let mut scratch = vec![Complex64::ZERO; fft.get_inplace_scratch_len()];
     fft.process_with_scratch(data, &mut scratch);
     transpose(data, n);

@@ -22,7 +22,7 @@ use crate::{Trochoid, TrochoidSet};
 #[cfg(feature = "tracing")]
 mod adapter;
 #[cfg(feature = "tracing")]
-mod tiers;
+pub(crate) mod tiers;
 
 #[cfg(feature = "tracing")]
 pub(crate) use adapter::cone_span;
@@ -131,7 +131,7 @@ pub struct TracedTrochoids {
     /// Wave `i`'s slope covariance `⟨sᵢ²⟩ (k̂x², k̂x k̂z, k̂z²)`.
     slope_covariance: Vec<DVec3>,
     #[cfg_attr(not(feature = "tracing"), allow(dead_code))]
-    total_amplitude: f64,
+    pub(crate) total_amplitude: f64,
     error: f64,
 }
 

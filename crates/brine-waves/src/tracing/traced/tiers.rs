@@ -29,7 +29,7 @@ pub(super) struct TierOnRay {
 
 /// Per-ray state of the fast tiers (reused between rays).
 #[derive(Debug, Default, Clone)]
-pub(super) struct RayState {
+pub(crate) struct RayState {
     /// Phase at the ray origin, per lane (f64).
     pub(super) s0: Vec<[f64; LANES]>,
     /// Phase rate along the ray `σ = k·d̂_xz` (rad m⁻¹), per lane.
@@ -48,7 +48,7 @@ pub(super) struct RayState {
 
 /// [`RayTiers`] of a [`TracedTrochoids`] along one ray (or the cone around it): tier 0 is `y`,
 /// tier `j ≥ 1` the `j`-th run of [`tier_group`] lane groups of 8 waves.
-pub(super) struct SeaTiers<'a> {
+pub(crate) struct SeaTiers<'a> {
     pub(super) sea: &'a TracedTrochoids,
     pub(super) state: &'a mut RayState,
     pub(super) origin: DVec3,
@@ -62,7 +62,7 @@ impl<'a> SeaTiers<'a> {
     /// `cone > 0`, tiers that bound every ray within `cone` rad of `ray`: a wave that would fade
     /// for some ray of the cone before `t_exit` is held at its minimum `−A` (the faded term
     /// `−wA cos θ ≥ −A` for any weight), the others are used whole.
-    pub(super) fn new(
+    pub(crate) fn new(
         sea: &'a TracedTrochoids,
         state: &'a mut RayState,
         ray: &Ray,
