@@ -34,13 +34,15 @@ const COUNTS: [usize; 2] = [50, 400];
 /// 6.25 cm, gives about ten points to the shortest wave fitted at N = 400 (0.6 m); the others
 /// give their shortest wave at least 16.
 /// The last variants read some bands through a blend of randomly offset tiles (the fourth
-/// value), as the FFT sea does, so that the sea does not repeat.
-const VARIANTS: [&[(f64, f64, usize, bool)]; 6] = [
+/// value), as the FFT sea does, so that the sea does not repeat, or give the finest band a tile
+/// four times as large instead.
+const VARIANTS: [&[(f64, f64, usize, bool)]; 7] = [
     &[(8.0, 32.0, 512, false)],
     &[(16.0, 64.0, 1024, false)],
     &[(8.0, 32.0, 512, false), (64.0, 512.0, 1024, false)],
     &[(8.0, 32.0, 512, false), (32.0, 256.0, 512, false), (128.0, 1024.0, 512, false)],
     &[(8.0, 32.0, 512, true), (32.0, 256.0, 512, false), (128.0, 1024.0, 512, false)],
+    &[(8.0, 128.0, 2048, false), (32.0, 256.0, 512, false), (128.0, 1024.0, 512, false)],
     &[(8.0, 32.0, 512, true), (32.0, 256.0, 512, true), (128.0, 1024.0, 512, true)],
 ];
 /// Interleaved rounds; the median is reported.
