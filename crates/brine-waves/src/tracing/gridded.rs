@@ -254,34 +254,46 @@ impl RayTiers for GriddedTiers<'_> {
     }
 }
 
-/// Component 0 is `y`, components `1..=L` the long waves (as [`TracedTrochoids`]'), component
-/// `L + 1` the band (as [`FftFrame`]'s cascade).
+/// Component 0 is `y`, components `1..=L` the long waves (as [`TracedTrochoids`]'), components
+/// `L + 1..=L + C` the bands (as [`FftFrame`]'s cascades).
 impl LipschitzSum for GriddedTrochoids {
     fn component_count(&self) -> usize {
-        self.long_count + 2
+        self.long_count + 1 + self.band.cascade_count()
     }
 
     fn component(&self, i: usize, p: DVec3) -> f64 {
-        if i <= self.long_count { self.long.component(i, p) } else { self.band.component(1, p) }
+        if i <= self.long_count { self.long.component(i, p) } else { self.band.component(i - self.long_count, p) }
     }
 
     fn component_lipschitz(&self, i: usize) -> f64 {
-        if i <= self.long_count { self.long.component_lipschitz(i) } else { self.band.component_lipschitz(1) }
+        if i <= self.long_count {
+            self.long.component_lipschitz(i)
+        } else {
+            self.band.component_lipschitz(i - self.long_count)
+        }
     }
 
     fn component_min(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
-        if i <= self.long_count { self.long.component_min(i, a, b) } else { self.band.component_min(1, a, b) }
+        if i <= self.long_count {
+            self.long.component_min(i, a, b)
+        } else {
+            self.band.component_min(i - self.long_count, a, b)
+        }
     }
 
     fn component_max(&self, i: usize, a: DVec3, b: DVec3) -> f64 {
-        if i <= self.long_count { self.long.component_max(i, a, b) } else { self.band.component_max(1, a, b) }
+        if i <= self.long_count {
+            self.long.component_max(i, a, b)
+        } else {
+            self.band.component_max(i - self.long_count, a, b)
+        }
     }
 
     fn component_directional_lipschitz(&self, i: usize, d: DVec3) -> f64 {
         if i <= self.long_count {
             self.long.component_directional_lipschitz(i, d)
         } else {
-            self.band.component_directional_lipschitz(1, d)
+            self.band.component_directional_lipschitz(i - self.long_count, d)
         }
     }
 
@@ -289,7 +301,7 @@ impl LipschitzSum for GriddedTrochoids {
         if i <= self.long_count {
             self.long.component_directional_derivative(i, p, d)
         } else {
-            self.band.component_directional_derivative(1, p, d)
+            self.band.component_directional_derivative(i - self.long_count, p, d)
         }
     }
 
@@ -297,19 +309,23 @@ impl LipschitzSum for GriddedTrochoids {
         if i <= self.long_count {
             self.long.component_directional_curvature(i, d)
         } else {
-            self.band.component_directional_curvature(1, d)
+            self.band.component_directional_curvature(i - self.long_count, d)
         }
     }
 
     fn component_feature_size(&self, i: usize) -> f64 {
-        if i <= self.long_count { self.long.component_feature_size(i) } else { self.band.component_feature_size(1) }
+        if i <= self.long_count {
+            self.long.component_feature_size(i)
+        } else {
+            self.band.component_feature_size(i - self.long_count)
+        }
     }
 
     fn component_fade_distance(&self, i: usize, d: DVec3, footprint_angle: f64) -> f64 {
         if i <= self.long_count {
             self.long.component_fade_distance(i, d, footprint_angle)
         } else {
-            self.band.component_fade_distance(1, d, footprint_angle)
+            self.band.component_fade_distance(i - self.long_count, d, footprint_angle)
         }
     }
 
@@ -367,6 +383,12 @@ mod tests {
             let dir = DVec3::new(a.cos() * 0.3, -a.sin(), a.cos()).normalize();
             let ray = Ray::new(DVec3::new(0.3 * i as f64, 10.0, 0.0), dir).unwrap();
             let Some(hit) = brine_trace::trace(&sea, &ray, &options, &mut stats) else { continue };
+            // Darles' efficient method steps on the components one by one: the same first
+            // crossing, each within its refinement tolerance.
+            let darles = TraceOptions { method: Method::Darles, ..options };
+            let other = brine_trace::trace(&sea, &ray, &darles, &mut stats).expect("the same crossing");
+            let agree = 2.0 * (options.tolerance + options.tolerance_relative * hit.t);
+            assert!((other.t - hit.t).abs() <= agree, "ray {i}: {} against {}", other.t, hit.t);
             let p = hit.point;
             assert!(
                 (p.y - sea.height(p.x, p.z)).abs() < ON_SURFACE_M,
