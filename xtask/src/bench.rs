@@ -18,7 +18,7 @@ const BENCHES: &[(&str, &str, &[&str])] = &[
     ),
     (
         "grid-band",
-        "study: the primary rays at N = 50 and 400 with the short waves traced or gathered into one grid (brine-waves GriddedTrochoids)",
+        "study: the primary rays at N = 50 and 400 with every wave traced or the shorter ones gathered into one to three grids (brine-waves GriddedTrochoids)",
         &["bench", "-p", "brine-waves", "--bench", "grid_band"],
     ),
     (

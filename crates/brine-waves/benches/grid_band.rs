@@ -1,7 +1,8 @@
 //! `cargo xtask bench grid-band`: a study of the wave-count goal (docs/dev/wave-scaling.md,
 //! option 3). How much of the intersection's growth with the number of waves goes away when the
-//! short waves are gathered into one periodic grid, traced as an FFT cascade is
-//! (brine-waves `GriddedTrochoids`).
+//! shorter waves are gathered into one to three periodic grids, traced as FFT cascades are
+//! (brine-waves `GriddedTrochoids`), certified against the snapped waves where no grid is
+//! blended.
 //!
 //! The primary rays of the reference frame's view (640×480, a camera 10 m up looking 9° down, a
 //! vertical field of 50°, the waves fading with the pixel), traced in 16 × 16 tiles with image
@@ -122,17 +123,17 @@ fn main() {
         "grid-band study: the primary rays of the reference view ({WIDTH}×{HEIGHT}, one thread, {TILE}² tiles), \
          Pierson–Moskowitz at 10 m/s, median of {ROUNDS} interleaved rounds"
     );
-    // (label, N, setup time, sea)
+    // (label, N, setup time, sea, distance bound to the snapped sea (m))
     enum Sea {
         Whole(TracedTrochoids),
         Gridded(GriddedTrochoids),
     }
-    let mut seas: Vec<(String, usize, f64, Sea)> = Vec::new();
+    let mut seas: Vec<(String, usize, f64, Sea, Option<f64>)> = Vec::new();
     for n in COUNTS {
         let set = fit_trochoids(&pm, &spreading, n, 7, &FitOptions::default()).expect("fit");
         let t0 = Instant::now();
         let whole = TracedTrochoids::new(&set, TIME_S);
-        seas.push(("every wave traced".into(), n, t0.elapsed().as_secs_f64(), Sea::Whole(whole)));
+        seas.push(("every wave traced".into(), n, t0.elapsed().as_secs_f64(), Sea::Whole(whole), None));
         for bands in VARIANTS {
             let t0 = Instant::now();
             let specs: Vec<_> = bands
@@ -148,14 +149,15 @@ fn main() {
                 })
                 .collect();
             let label = format!("{long} traced, {short} gridded ({})", grids.join("; "));
-            seas.push((label, n, t0.elapsed().as_secs_f64(), Sea::Gridded(sea)));
+            let error = (!bands.iter().any(|b| b.3)).then(|| sea.error_bound());
+            seas.push((label, n, t0.elapsed().as_secs_f64(), Sea::Gridded(sea), error));
         }
     }
     let mut times = vec![Vec::new(); seas.len()];
     let mut evaluations = vec![0.0; seas.len()];
     let mut hit_counts = vec![0usize; seas.len()];
     for _ in 0..ROUNDS {
-        for (i, (_, _, _, sea)) in seas.iter().enumerate() {
+        for (i, (_, _, _, sea, _)) in seas.iter().enumerate() {
             let (t, e, hits) = match sea {
                 Sea::Whole(s) => trace_all(s, &tiles),
                 Sea::Gridded(s) => trace_all(s, &tiles),
@@ -166,11 +168,14 @@ fn main() {
         }
     }
     let medians: Vec<f64> = times.into_iter().map(median).collect();
-    println!("\n| N | sea | setup | primary rays (median) | ÷ N = 50 whole | evaluations per ray | rays that hit |");
-    println!("|---|---|---|---|---|---|---|");
-    for (i, (label, n, setup, _)) in seas.iter().enumerate() {
+    println!(
+        "\n| N | sea | setup | primary rays (median) | ÷ N = 50 whole | evaluations per ray | rays that hit | bound to the snapped sea |"
+    );
+    println!("|---|---|---|---|---|---|---|---|");
+    for (i, (label, n, setup, _, error)) in seas.iter().enumerate() {
+        let error = error.map_or("—".to_owned(), |e| format!("{:.3} mm", 1e3 * e));
         println!(
-            "| {n} | {label} | {:.3} s | {:.3} s | {:.2} | {:.2} | {} |",
+            "| {n} | {label} | {:.3} s | {:.3} s | {:.2} | {:.2} | {} | {error} |",
             setup,
             medians[i],
             medians[i] / medians[0],

@@ -448,14 +448,14 @@ pub struct FftFrame {
 impl FftCascade {
     /// A periodic cascade from heights already on its grid (`n × n` row by row, `[j·n + i]` at
     /// `(iΔ, jΔ)`, `Δ = tile/n`): the traced surface is their cubic B-spline (read through
-    /// `blend` if any), its shading gradient the spline's own, its Jacobian 1 (no displacement of
-    /// its own). What the
+    /// `blend` if any), its shading gradient the bilinear interpolant of the spline's gradient at
+    /// the grid points, its Jacobian 1 (no displacement of its own). What the
     /// gridded-band study grids the short trochoids into (brine-waves `GriddedTrochoids`).
     ///
     /// # Arguments
     /// - `tile`: the tile's side (m), `> 0`; `n`: its resolution, a power of two `≥ 4`.
     /// - `heights`: the grid heights (m).
-    /// - `band`: the band `[k_lo, k_hi)` (rad m⁻¹) the heights hold; `k_longest` its longest wave's
+    /// - `band`: the band `[k_lo, k_hi)` of `|k|_∞` (rad m⁻¹) the heights hold; `k_longest` its longest wave's
     ///   wavenumber (rad m⁻¹), `> 0`: the cascade's feature size for footprint fading.
     /// - `variance` (m²), `slope_covariance`: what the heights hold, for the statistics.
     /// - `blend`: the tile-and-blend that keeps it from repeating, or `None` (periodic).
