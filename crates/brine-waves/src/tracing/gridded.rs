@@ -7,8 +7,10 @@
 //! cubic B-spline traced as one tier with the bounds of an [`FftCascade`] (its own extreme values
 //! and slopes, instead of the sums of the waves' amplitudes and slopes). What `cargo xtask bench
 //! grid-band` measures: how much of the intersection's growth with the wave count such bands
-//! remove. The bands are not shaded, not faded wave by wave (each fades whole, at its longest
-//! wave's distance) and not exported.
+//! remove. Where no band is blended, the bands stand for the snapped waves: a bound of their
+//! distance to them joins the tracer's evaluation error ([`GriddedTrochoids::error_bound`]), so
+//! the crossings are certified for the snapped sea. The bands are not shaded, not faded wave by
+//! wave (each fades whole, at its longest wave's distance) and not exported.
 
 use std::cell::RefCell;
 use std::f64::consts::TAU;
@@ -25,7 +27,7 @@ use crate::{
     FftCascade, FftFrame, TileBlend, TileLattice, TracedTrochoids, TrochoidSet, WaveError, solve_trochoid_phase,
 };
 
-/// The trochoid sea with its short waves on a grid (the gridded-band study; see the module).
+/// The trochoid sea with its shorter waves on grids (the gridded-band study; see the module).
 #[doc(hidden)]
 #[derive(Debug)]
 pub struct GriddedTrochoids {
@@ -33,7 +35,7 @@ pub struct GriddedTrochoids {
     band: FftFrame,
     /// Waves in `long`.
     long_count: usize,
-    /// Waves gathered into the band.
+    /// Waves gathered into the bands.
     short_count: usize,
     /// The long waves and the snapped short ones: the sea the bands stand for.
     snapped: TrochoidSet,
