@@ -1,18 +1,25 @@
 //! The same scene gives the same bytes whatever the number of threads.
 
-use brine_render::scene::SurfaceKind;
+use brine_render::scene::{GridMode, SurfaceKind};
 use brine_render::{RenderOptions, Scene, render, write_image};
 
 #[test]
 fn one_and_two_threads_write_identical_files() {
-    for surface in [SurfaceKind::Trochoids, SurfaceKind::Fft] {
-        same_bytes_at_one_and_two_threads(surface);
+    // The trochoid sea with every wave traced, then with its shorter waves on grids (filled
+    // band by band on the threads), and the FFT sea.
+    for (surface, grid) in [
+        (SurfaceKind::Trochoids, GridMode::Off),
+        (SurfaceKind::Trochoids, GridMode::On),
+        (SurfaceKind::Fft, GridMode::Auto),
+    ] {
+        same_bytes_at_one_and_two_threads(surface, grid);
     }
 }
 
-fn same_bytes_at_one_and_two_threads(surface: SurfaceKind) {
+fn same_bytes_at_one_and_two_threads(surface: SurfaceKind, grid: GridMode) {
     let mut scene = Scene::default_scene();
     scene.sea.surface = surface;
+    scene.sea.grid = grid;
     scene.sea.fft.resolution = 64;
     scene.camera.width = 64;
     scene.camera.height = 36;
@@ -28,6 +35,6 @@ fn same_bytes_at_one_and_two_threads(surface: SurfaceKind) {
             bytes.push(std::fs::read(path).unwrap());
         }
     }
-    assert!(bytes[0] == bytes[2], "{surface:?}: PNG bytes differ between 1 and 2 threads");
-    assert!(bytes[1] == bytes[3], "{surface:?}: EXR bytes differ between 1 and 2 threads");
+    assert!(bytes[0] == bytes[2], "{surface:?}, grid {grid:?}: PNG bytes differ between 1 and 2 threads");
+    assert!(bytes[1] == bytes[3], "{surface:?}, grid {grid:?}: EXR bytes differ between 1 and 2 threads");
 }

@@ -162,8 +162,7 @@ pub use surfaces::seabed::{SeabedRelief, seabed_relief};
 pub use surfaces::sine::{SineField, SineSet};
 pub use surfaces::surface::{TrochoidField, TrochoidSum, WaveSurface};
 #[cfg(feature = "tracing")]
-#[doc(hidden)]
-pub use tracing::gridded::{GridBandSpec, GriddedTrochoids};
+pub use tracing::gridded::{BandedTrochoids, DEFAULT_LAYOUT, DEFAULT_TILE_PER_CUT, GridBandSpec, GriddedTrochoids};
 #[cfg(feature = "tracing")]
 pub use tracing::sea::TracedSea;
 pub use tracing::traced::{LANES, TracedTrochoids};

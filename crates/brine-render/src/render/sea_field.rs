@@ -16,7 +16,7 @@ pub(crate) struct SeaField<'a> {
 
 impl<'a> SeaField<'a> {
     pub(super) fn new(world: &'a World) -> Self {
-        Self { sea: world.sea.traced() }
+        Self { sea: world.traced_sea() }
     }
 
     /// The options of a primary ray: the tiered method, the waves faded by the pixel's angle.

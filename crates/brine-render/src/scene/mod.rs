@@ -286,6 +286,24 @@ pub enum SurfaceKind {
     Fft,
 }
 
+/// Whether the trochoid sea's shorter waves are traced on grids (brine-waves
+/// `GriddedTrochoids`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum GridMode {
+    /// On grids from [`GRID_AUTO_WAVES`] waves up, where they pay (the default).
+    #[default]
+    Auto,
+    /// On grids whatever the number of waves (an error if the set cannot be split).
+    On,
+    /// Every wave traced as a trochoid.
+    Off,
+}
+
+/// The wave count from which `grid = "auto"` traces the trochoid sea's shorter waves on grids:
+/// below it, the grids' fixed cost is not repaid (`cargo xtask bench wave-count`).
+pub const GRID_AUTO_WAVES: u32 = 150;
+
 /// `[sea]`: the wind sea.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
@@ -312,6 +330,8 @@ pub struct SeaConfig {
     pub waves: u32,
     /// Choppiness of the fit (`[0, 100]`): each wave's steepness is `c·kA` before the cap.
     pub choppiness: f64,
+    /// Whether the trochoid sea's shorter waves are snapped to tiles and traced on grids.
+    pub grid: GridMode,
     /// Random seed of wave directions and phases.
     pub seed: u64,
     /// Time of the frame (s, `[0, 10⁶]`).
@@ -365,6 +385,7 @@ impl Default for SeaConfig {
             depth_m: None,
             waves: 50,
             choppiness: 2.5,
+            grid: GridMode::Auto,
             seed: 1,
             time_s: 0.0,
             trace_distance_m: 3000.0,

@@ -12,11 +12,11 @@ use brine_optics::{
 use brine_sky::{CloudParams, DaylightModel, FilteredSky, MoonParams, Sky, SkyParams};
 use brine_trace::{Method, TraceOptions};
 use brine_waves::{
-    BOX_WIDTH_PER_SIGMA, BandLimited, CosineSquared, CosineTwoS, DetailOptions, DetailSlopes, DetailWaves, Directions,
-    DonelanBanner, Elfouhaily, EllipticalFootprint, FftOcean, FftOptions, FftSlopeFilter, FitOptions, FrameSurface,
-    Jonswap, LoopDistortion, Ocean, Phillips, PiersonMoskowitz, SeaComponent, SeaFrame, SeabedRelief, Spectrum,
-    Spreading, SteepnessLimit, SummedSpectrum, TileLattice, Tma, TrochoidSet, TrochoidSum, fit_sea_state,
-    seabed_relief,
+    BOX_WIDTH_PER_SIGMA, BandLimited, BandedTrochoids, CosineSquared, CosineTwoS, DetailOptions, DetailSlopes,
+    DetailWaves, Directions, DonelanBanner, Elfouhaily, EllipticalFootprint, FftOcean, FftOptions, FftSlopeFilter,
+    FitOptions, FrameSurface, GriddedTrochoids, Jonswap, LoopDistortion, Ocean, Phillips, PiersonMoskowitz,
+    SeaComponent, SeaFrame, SeabedRelief, Spectrum, Spreading, SteepnessLimit, SummedSpectrum, TileLattice, Tma,
+    TracedSea, TrochoidSet, TrochoidSum, fit_sea_state, seabed_relief,
 };
 use brine_whitecap::{
     Calibration, CalibrationOptions, ErfMethod, FftBreaking, FftCalibration, FftJacobianStatistics, FootprintFilter,
@@ -32,7 +32,8 @@ mod timeless;
 mod white_water;
 
 use crate::scene::{
-    FloorConfig, Scene, SeaConfig, SkyConfig, SkyModelKind, SpectrumKind, SpreadingKind, SunModelKind, SwellConfig,
+    FloorConfig, GridMode, Scene, SeaConfig, SkyConfig, SkyModelKind, SpectrumKind, SpreadingKind, SunModelKind,
+    SwellConfig,
 };
 use sea::{SeaSpectra, sea_spectra, sea_statistics};
 pub use timeless::Timeless;
@@ -78,6 +79,10 @@ pub struct World {
     pub(crate) ocean: Ocean,
     /// The traced surface at the frame's time (brine-waves `SeaFrame`).
     pub(crate) sea: SeaFrame,
+    /// The trochoid sea with its shorter waves on grids at the frame's time, if `sea.grid` puts
+    /// them there (brine-waves `GriddedTrochoids`): what the rays meet; `sea` holds the snapped
+    /// waves it stands for.
+    pub(crate) gridded: Option<GriddedTrochoids>,
     /// Time of the frame (s).
     pub(crate) time: f64,
     /// Sky, sun, moon, clouds and aerial perspective, for any sun elevation.
@@ -179,6 +184,15 @@ impl World {
     /// The sea frozen at the world's time: the surface that is traced and queried.
     pub fn sea(&self) -> &SeaFrame {
         &self.sea
+    }
+
+    /// The sea at the world's time ready to trace: through its grids where the shorter waves are
+    /// on grids (brine-waves `TracedSea::Gridded`), else the frame itself.
+    pub fn traced_sea(&self) -> TracedSea<'_> {
+        match &self.gridded {
+            Some(grid) => self.sea.traced_through(grid),
+            None => self.sea.traced(),
+        }
     }
 
     /// Runs `f` on the sea at time `t` (s): the world's own frame at its time, else the ocean
@@ -597,6 +611,7 @@ impl World {
         let set = timeless.set.clone();
         let ocean = timeless.ocean.clone();
         let sea = ocean.at_time(s.time_s);
+        let gridded = timeless.banded.as_ref().map(|b| GriddedTrochoids::at_time(b, s.time_s));
         let stats = sea_statistics(&set, &sea, wind_angle);
 
         let k = &scene.sky;
@@ -743,6 +758,7 @@ impl World {
             loop_distortion: timeless.loop_distortion.clone(),
             ocean,
             sea,
+            gridded,
             time: s.time_s,
             sky,
             filtered_sky,

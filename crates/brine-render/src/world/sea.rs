@@ -285,3 +285,29 @@ pub(super) fn detail_waves(
     let band = DetailOptions { seed: s.seed, wind_direction: o.wind_direction, ..band };
     Ok(Some(DetailWaves::new(spectrum, spreading, &band)?))
 }
+
+/// The trochoid sea's waves split for the grids its shorter ones are traced on (brine-waves
+/// `BandedTrochoids::default_layout`), as `sea.grid` asks: `auto` from
+/// [`crate::scene::GRID_AUTO_WAVES`] waves up, where the layout holds; `None` otherwise.
+///
+/// # Errors
+/// [`WorldError::Scene`] for `grid = "on"` with a set the layout cannot split (too few waves, or
+/// all of one length); [`WorldError`] if the split refuses the layout.
+pub(super) fn banded_trochoids(s: &SeaConfig, set: &TrochoidSet) -> Result<Option<BandedTrochoids>, WorldError> {
+    let wanted = match s.grid {
+        GridMode::Off => false,
+        GridMode::On => true,
+        GridMode::Auto => s.waves >= crate::scene::GRID_AUTO_WAVES,
+    };
+    if !wanted {
+        return Ok(None);
+    }
+    match BandedTrochoids::default_layout(set) {
+        Some(layout) => Ok(Some(BandedTrochoids::new(set, &layout)?)),
+        None if s.grid == GridMode::On => Err(WorldError::Scene(format!(
+            "sea.grid = \"on\": the {} waves cannot be split into grids and waves traced as trochoids (too few, or too close in length); use \"auto\" or \"off\"",
+            set.len()
+        ))),
+        None => Ok(None),
+    }
+}

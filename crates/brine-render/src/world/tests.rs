@@ -155,14 +155,20 @@ fn samples_share_the_pixel_footprint() {
 
 /// An animation builds the instant-free parts of its world once: a frame rendered from them,
 /// after other frames in any order, is its still to the bit, on both surfaces with the white
-/// water's memory (whose FFT history is kept from frame to frame).
+/// water's memory (whose FFT history is kept from frame to frame), and with the trochoid sea's
+/// shorter waves on grids (filled per frame).
 #[test]
 fn frames_built_on_shared_parts_are_their_stills() {
-    for surface in [SurfaceKind::Trochoids, SurfaceKind::Fft] {
+    for (surface, grid) in [
+        (SurfaceKind::Trochoids, GridMode::Off),
+        (SurfaceKind::Trochoids, GridMode::On),
+        (SurfaceKind::Fft, GridMode::Auto),
+    ] {
         let mut scene = Scene::default_scene();
         (scene.camera.width, scene.camera.height) = (40, 24);
         scene.sea.wind_speed_m_s = 14.0;
         scene.sea.surface = surface;
+        scene.sea.grid = grid;
         let at = |f: u32| crate::cli::render::scene_at_frame(&scene, f, (0, 48), None).expect("a frame");
         let timeless = Timeless::new(&at(0), None).expect("a valid scene");
         for f in [0, 13, 12, 47] {
@@ -170,9 +176,33 @@ fn frames_built_on_shared_parts_are_their_stills() {
             let shared = World::at_instant(&s, &timeless).expect("the same scene");
             let pixels =
                 |w: &World| crate::render_world(&s, w, &crate::RenderOptions::default(), &|| {}).unwrap().pixels;
-            assert!(pixels(&shared) == pixels(&World::new(&s).unwrap()), "{surface:?} frame {f}");
+            assert!(pixels(&shared) == pixels(&World::new(&s).unwrap()), "{surface:?}, grid {grid:?}, frame {f}");
         }
     }
+}
+
+/// `sea.grid`: from 150 waves (`"auto"`) or always (`"on"`) the trochoid sea's shorter waves are
+/// snapped and traced on grids, and the snapped set is the sea the world shades and exports;
+/// `"off"`, fewer waves or another surface keep every wave; a set that cannot be split is refused
+/// under `"on"` with a message naming the key, and kept whole under `"auto"`.
+#[test]
+fn the_grid_key_puts_the_shorter_waves_on_grids() {
+    let world = |waves: u32, grid: GridMode, surface: SurfaceKind| {
+        let mut scene = Scene::default_scene();
+        (scene.sea.waves, scene.sea.grid, scene.sea.surface) = (waves, grid, surface);
+        World::new(&scene)
+    };
+    let auto = world(200, GridMode::Auto, SurfaceKind::Trochoids).unwrap();
+    let grid = auto.gridded.as_ref().expect("on grids from 150 waves");
+    assert!(grid.snapped().waves() == auto.set.waves(), "the world's set is the snapped one");
+    assert!(matches!(auto.traced_sea(), brine_waves::TracedSea::Gridded { .. }));
+    assert!(world(100, GridMode::Auto, SurfaceKind::Trochoids).unwrap().gridded.is_none());
+    assert!(world(200, GridMode::Off, SurfaceKind::Trochoids).unwrap().gridded.is_none());
+    assert!(world(200, GridMode::On, SurfaceKind::Gerstner).unwrap().gridded.is_none());
+    assert!(world(50, GridMode::On, SurfaceKind::Trochoids).unwrap().gridded.is_some());
+    let e = world(1, GridMode::On, SurfaceKind::Trochoids).err().expect("one wave cannot be split");
+    assert!(e.to_string().contains("sea.grid"), "{e}");
+    assert!(world(1, GridMode::Auto, SurfaceKind::Trochoids).unwrap().gridded.is_none());
 }
 
 /// Parts built for another scene (other than by its instants) are refused with a message.

@@ -2,7 +2,7 @@
 
 use brine_foam::{FoamMemory, FoamMemoryParams, KoepkeFoam};
 use brine_optics::SlopeVariance;
-use brine_waves::{DetailWaves, FftOcean, LoopDistortion, Ocean, TileLattice, TrochoidSet};
+use brine_waves::{BandedTrochoids, DetailWaves, FftOcean, LoopDistortion, Ocean, TileLattice, TrochoidSet};
 use brine_whitecap::{
     FftBreaking, FftInstantJacobian, FftJacobianHistory, FftJacobianStatistics, JacobianStatistics, TrochoidBreaking,
     WhiteWaterModel, WhiteWaterOptions,
@@ -34,6 +34,9 @@ pub struct Timeless {
     lattice: Option<TileLattice>,
     /// The fitted wave set (empty for the FFT sea).
     pub(super) set: TrochoidSet,
+    /// The trochoid sea's waves split for the grids its shorter ones are traced on (brine-waves
+    /// `BandedTrochoids`; `set` is its snapped set), if they are.
+    pub(super) banded: Option<BandedTrochoids>,
     /// The sea as a model of time.
     pub(super) ocean: Ocean,
     /// The detail band of a trochoid, Gerstner or sine sea.
@@ -124,6 +127,12 @@ impl Timeless {
                 None => fitted,
             }
         };
+        // The shorter waves on grids: the snapped set is the sea from here on.
+        let banded = match (s.surface, lattice) {
+            (SurfaceKind::Trochoids, None) => sea::banded_trochoids(s, &set)?,
+            _ => None,
+        };
+        let set = banded.as_ref().map_or(set, |b| b.set().clone());
         let ocean = match s.surface {
             SurfaceKind::Trochoids => Ocean::trochoids(set.clone()),
             SurfaceKind::Gerstner => Ocean::gerstner(set.clone())?,
@@ -200,7 +209,17 @@ impl Timeless {
         // other: built side by side (each the same whatever the threads).
         let (detail, white_water) = rayon::join(detail, white_water);
         let (detail, white_water) = (detail?, white_water?);
-        Ok(Self { key, lattice: lattice.copied(), set, ocean, detail, white_water, past_means, loop_distortion })
+        Ok(Self {
+            key,
+            lattice: lattice.copied(),
+            set,
+            banded,
+            ocean,
+            detail,
+            white_water,
+            past_means,
+            loop_distortion,
+        })
     }
 
     /// Whether these parts are those of `scene`: the same scene but for its instants.

@@ -1,16 +1,19 @@
-//! A study, not a surface of the renderer: the trochoid sea with its shorter waves gathered into
-//! periodic grids, traced as the FFT sea's cascades are (docs/dev/wave-scaling.md, option 3).
+//! The trochoid sea with its shorter waves gathered into periodic grids, traced as the FFT sea's
+//! cascades are (docs/models/brine-waves.md, "Many waves on grids"; the measurements in
+//! docs/dev/wave-scaling.md).
 //!
-//! The waves at least the last band's cut long stay trochoids, traced by their tiers. The
-//! shorter ones are snapped band by band to the lattice of a square tile
-//! ([`TileLattice::snap`]), their sum synthesised on the tile's grid by one inverse FFT, and its
-//! cubic B-spline traced as one tier with the bounds of an [`FftCascade`] (its own extreme values
-//! and slopes, instead of the sums of the waves' amplitudes and slopes). What `cargo xtask bench
-//! grid-band` measures: how much of the intersection's growth with the wave count such bands
-//! remove. Where no band is blended, the bands stand for the snapped waves: a bound of their
-//! distance to them joins the tracer's evaluation error ([`GriddedTrochoids::error_bound`]), so
-//! the crossings are certified for the snapped sea. The bands are not shaded, not faded wave by
-//! wave (each fades whole, at its longest wave's distance) and not exported.
+//! Every evaluation of a trochoid sum pays for all its waves, and the sum's bounds grow with their
+//! number, so a sea of hundreds of waves costs the tracer several times one of fifty. Here the
+//! waves at least the last band's cut long stay trochoids, traced by their tiers. The shorter
+//! ones are snapped band by band to the lattice of a square tile ([`TileLattice::snap`]) once per
+//! scene ([`BandedTrochoids`]); at each instant their sum is synthesised on the tile's grid by one
+//! inverse FFT, and its cubic B-spline traced as one tier with the bounds of an [`FftCascade`]
+//! (its own extreme values and slopes, instead of the sums of the waves' amplitudes and slopes).
+//! Where no band is blended, the bands stand for the snapped waves: a bound of their distance to
+//! them joins the tracer's evaluation error ([`GriddedTrochoids::error_bound`]), so the crossings
+//! are certified for the snapped sea, which is what the renderer shades, exports and queries.
+//! Each band fades whole with the pixel footprint, at its longest wave's distance (the shading
+//! fades wave by wave).
 
 use std::cell::RefCell;
 use std::f64::consts::TAU;
@@ -27,8 +30,8 @@ use crate::{
     FftCascade, FftFrame, TileBlend, TileLattice, TracedTrochoids, TrochoidSet, WaveError, solve_trochoid_phase,
 };
 
-/// The trochoid sea with its shorter waves on grids (the gridded-band study; see the module).
-#[doc(hidden)]
+/// The trochoid sea at one instant with its shorter waves on grids (see the module): what the
+/// tracer meets, certified for [`BandedTrochoids::set`] within [`Self::error_bound`].
 #[derive(Debug)]
 pub struct GriddedTrochoids {
     long: TracedTrochoids,
@@ -43,9 +46,8 @@ pub struct GriddedTrochoids {
     error: f64,
 }
 
-/// One grid of the study's bands: the waves shorter than `shorter_than_m` (and not shorter than
-/// the previous band's cut) on a tile of side `tile_m` at `n × n` points.
-#[doc(hidden)]
+/// One grid of a [`BandedTrochoids`] layout: the waves shorter than `shorter_than_m` (and not
+/// shorter than the previous band's cut) on a tile of side `tile_m` at `n × n` points.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GridBandSpec {
     /// The band's upper wavelength (m).
@@ -59,17 +61,36 @@ pub struct GridBandSpec {
     pub blended: bool,
 }
 
-impl GriddedTrochoids {
-    /// The sea of `set` at time `time` (s), the waves gathered into the `bands` (by increasing
-    /// cut), those at least the last cut long traced as trochoids.
+/// The waves of a trochoid sea split for [`GriddedTrochoids`], once per scene: those shorter
+/// than each band's cut snapped to its tile's lattice ([`TileLattice::snap`]), the rest kept as
+/// they are, and the bound of the distance between the grids and the snapped waves (the same at
+/// every instant). [`Self::set`] is the sea the grids stand for: what the renderer shades,
+/// exports and queries.
+#[derive(Debug, Clone)]
+pub struct BandedTrochoids {
+    /// The waves at least the last cut long, traced as trochoids.
+    long: TrochoidSet,
+    /// Each band's layout and its snapped waves.
+    bands: Vec<(GridBandSpec, TrochoidSet)>,
+    /// The snapped bands' waves, then the long ones.
+    snapped: TrochoidSet,
+    /// Bound of `|grids − snapped short waves|` (m) over the unblended bands.
+    error: f64,
+}
+
+impl BandedTrochoids {
+    /// The waves of `set` split into the `bands` (by increasing cut) and snapped to their tiles.
+    ///
+    /// # Arguments
+    /// - `set`: the fitted waves; `bands`: the layout, by increasing `shorter_than_m`.
     ///
     /// # Errors
     /// [`WaveError::OutOfRange`] for a tile out of [`TileLattice::new`]'s range, cuts that leave
-    /// no long wave or an empty band, or a resolution that is not a power of two `≥ 4`.
-    pub fn new(set: &TrochoidSet, time: f64, bands: &[GridBandSpec]) -> Result<Self, WaveError> {
+    /// no long wave or an empty band, a resolution that is not a power of two `≥ 4`, or a grid
+    /// too coarse for its band's shortest wave.
+    pub fn new(set: &TrochoidSet, bands: &[GridBandSpec]) -> Result<Self, WaveError> {
         let mut rest: Vec<_> = set.waves().to_vec();
-        let mut cascades = Vec::with_capacity(bands.len());
-        let mut short_count = 0;
+        let mut split = Vec::with_capacity(bands.len());
         let (mut snapped, mut error) = (TrochoidSet::new(Vec::new()), 0.0);
         for b in bands {
             crate::error::check("n", b.n as f64, b.n.is_power_of_two() && b.n >= 4, "a power of two ≥ 4")?;
@@ -82,7 +103,6 @@ impl GriddedTrochoids {
                 "above the previous cut's waves",
             )?;
             rest = long;
-            short_count += short.len();
             let short = TileLattice::new(b.tile_m, None)?.snap(&TrochoidSet::new(short))?;
             // Every wave's fundamental below the grid's Nyquist wavenumber: `|m| < n/2` on both axes.
             let dk = TAU / b.tile_m;
@@ -100,7 +120,7 @@ impl GriddedTrochoids {
                 error += band_error(&short, b.tile_m, b.n);
             }
             snapped.extend(&short);
-            cascades.push(Self::cascade(&short, time, b, cascades.len()));
+            split.push((*b, short));
         }
         crate::error::check(
             "shorter_than_m",
@@ -110,14 +130,98 @@ impl GriddedTrochoids {
         )?;
         let long = TrochoidSet::new(rest);
         snapped.extend(&long);
-        Ok(Self {
-            long: TracedTrochoids::new(&long, time),
+        Ok(Self { long, bands: split, snapped, error })
+    }
+
+    /// The layout the renderer gives a fitted sea ([`DEFAULT_LAYOUT`]): three periodic bands
+    /// cut at `λ_max/40`, `λ_max/10` and `λ_max/2.5` of its longest wave `λ_max`, each on a tile
+    /// eight times its cut, at 1024², 512² and 512² points. For the Pierson–Moskowitz sea at
+    /// 10 m/s (`λ_max` ≈ 330 m) that is 8, 33 and 130 m on 66, 260 and 1 050 m. A band left
+    /// empty, or whose shortest wave would have fewer than four grid points, is dropped (its
+    /// waves join the next band).
+    ///
+    /// # Returns
+    /// The layout, `None` when no band would hold a wave or no wave would stay long.
+    pub fn default_layout(set: &TrochoidSet) -> Option<Vec<GridBandSpec>> {
+        let longest = set.waves().iter().map(|w| w.wavelength()).fold(0.0f64, f64::max);
+        if !(longest > 0.0) {
+            return None;
+        }
+        let mut layout: Vec<GridBandSpec> = Vec::new();
+        for &(fraction, n) in &DEFAULT_LAYOUT {
+            let cut = longest * fraction;
+            let tile = DEFAULT_TILE_PER_CUT * cut;
+            let below = layout.last().map_or(0.0, |b| b.shorter_than_m);
+            let band = set.waves().iter().map(|w| w.wavelength()).filter(|&l| l >= below && l < cut);
+            let shortest = band.fold(f64::INFINITY, f64::min);
+            if shortest.is_finite() && shortest >= 4.0 * tile / n as f64 {
+                layout.push(GridBandSpec { shorter_than_m: cut, tile_m: tile, n, blended: false });
+            }
+        }
+        let cut = layout.last()?.shorter_than_m;
+        set.waves().iter().any(|w| w.wavelength() >= cut).then_some(layout)
+    }
+
+    /// The sea the grids stand for: each band's snapped waves, then the long waves.
+    pub fn set(&self) -> &TrochoidSet {
+        &self.snapped
+    }
+
+    /// `(long, short)`: the waves traced as trochoids and those gathered into grids.
+    pub fn counts(&self) -> (usize, usize) {
+        (self.long.len(), self.snapped.len() - self.long.len())
+    }
+
+    /// Bound of the distance (m) between the grids and the snapped waves over the unblended
+    /// bands, at any instant (see [`GriddedTrochoids::error_bound`]).
+    pub fn error_bound(&self) -> f64 {
+        self.error
+    }
+
+    /// The bands' layouts.
+    pub fn layout(&self) -> impl Iterator<Item = &GridBandSpec> {
+        self.bands.iter().map(|(b, _)| b)
+    }
+}
+
+/// The bands of [`BandedTrochoids::default_layout`]: each band's cut as a fraction of the
+/// longest wave, and its grid points per side. Measured on the reference frame at 400 waves
+/// (`cargo xtask bench wave-count`): the finest band on a 1024² grid over eight times its cut
+/// costs the same frame time as on 512² over four times (1.9–2.0 times the 50-wave frame, against
+/// 4.0 with every wave traced), with a period twice as long and half the snapping; on 2048² over
+/// sixteen times, 2.3–2.4 times.
+pub const DEFAULT_LAYOUT: [(f64, usize); 3] = [(1.0 / 40.0, 1024), (1.0 / 10.0, 512), (1.0 / 2.5, 512)];
+
+/// Tile side over cut of each band of [`BandedTrochoids::default_layout`]: a wave at the cut
+/// moves by at most `√2/(2·8)` ≈ 9 % in wavenumber and direction when snapped.
+pub const DEFAULT_TILE_PER_CUT: f64 = 8.0;
+
+impl GriddedTrochoids {
+    /// The sea of `set` at time `time` (s), the waves gathered into the `bands` (by increasing
+    /// cut), those at least the last cut long traced as trochoids: [`BandedTrochoids::new`] then
+    /// [`Self::at_time`].
+    ///
+    /// # Errors
+    /// As [`BandedTrochoids::new`].
+    pub fn new(set: &TrochoidSet, time: f64, bands: &[GridBandSpec]) -> Result<Self, WaveError> {
+        Ok(Self::at_time(&BandedTrochoids::new(set, bands)?, time))
+    }
+
+    /// The split sea `banded` at time `time` (s): each band's grid filled by one inverse FFT (the
+    /// bands side by side on the threads; the same values whatever their number), the long waves
+    /// laid out for the tiered tracer.
+    pub fn at_time(banded: &BandedTrochoids, time: f64) -> Self {
+        use rayon::prelude::*;
+        let cascades: Vec<_> =
+            banded.bands.par_iter().enumerate().map(|(i, (b, short))| Self::cascade(short, time, b, i)).collect();
+        Self {
+            long: TracedTrochoids::new(&banded.long, time),
             band: FftFrame::from_cascades(time, cascades),
-            long_count: long.len(),
-            short_count,
-            snapped,
-            error,
-        })
+            long_count: banded.long.len(),
+            short_count: banded.snapped.len() - banded.long.len(),
+            snapped: banded.snapped.clone(),
+            error: banded.error,
+        }
     }
 
     /// The snapped waves `short` tabulated on the band's grid by one inverse FFT
@@ -158,6 +262,11 @@ impl GriddedTrochoids {
     /// it to its evaluation error, so that its crossings are certified for the snapped sea too.
     pub fn error_bound(&self) -> f64 {
         self.error
+    }
+
+    /// The instant of the grids (s).
+    pub fn time(&self) -> f64 {
+        self.band.time()
     }
 
     /// The height of the surface at `(x, z)` (m): the long waves' plus the band's spline.
@@ -710,6 +819,109 @@ mod tests {
             let (Some(a), Some(b)) = (alone, tiled) else { panic!("ray {i}: a miss") };
             let agree = 2.0 * (options.tolerance + options.tolerance_relative * a.t);
             assert!((a.t - b.t).abs() <= agree, "ray {i}: {} alone against {} in the tile", a.t, b.t);
+        }
+    }
+
+    /// 400 waves fitted to the Pierson–Moskowitz sea at `u10` (m/s).
+    fn fitted_400(u10: f64) -> TrochoidSet {
+        let pm = PiersonMoskowitz::from_u10(u10).unwrap();
+        let d = CosineTwoS::hasselmann(pm.peak_omega()).unwrap();
+        fit_trochoids(&pm, &d, 400, 3, &FitOptions::default()).unwrap()
+    }
+
+    /// The renderer's layout splits the fitted sea at every wind into three bands that hold most
+    /// waves, each band's waves on its tile's lattice and moved by the snap at most by half a
+    /// lattice diagonal, `√2/2 · 2π/L` in wave vector (so shorter than the cut by that margin).
+    #[test]
+    fn the_default_layout_splits_the_sea_at_every_wind() {
+        for u in [2.0, 5.0, 10.0, 16.0, 22.0] {
+            let set = fitted_400(u);
+            let layout = BandedTrochoids::default_layout(&set).expect("a layout");
+            assert_eq!(layout.len(), 3, "{u} m/s: {layout:?}");
+            let banded = BandedTrochoids::new(&set, &layout).unwrap();
+            let (long, short) = banded.counts();
+            assert_eq!(long + short, 400, "{u} m/s");
+            assert!((1..100).contains(&long), "{u} m/s: {long} waves left long");
+            let mut band_waves = banded.bands.iter().flat_map(|(b, w)| w.waves().iter().map(move |w| (b, w)));
+            assert!(band_waves.all(|(b, w)| {
+                let dk = TAU / b.tile_m;
+                let kv = w.wavenumber() * w.direction_vector() / dk;
+                let on_lattice = (kv.x - kv.x.round()).abs() < 1e-6 && (kv.y - kv.y.round()).abs() < 1e-6;
+                let k_cut = TAU / b.shorter_than_m;
+                on_lattice && w.wavenumber() > k_cut - std::f64::consts::FRAC_1_SQRT_2 * dk
+            }));
+            // The amplitudes and steepnesses are the fitted ones: the snap moves wave vectors only.
+            assert!((banded.set().variance() - set.variance()).abs() <= 1e-12 * set.variance(), "{u} m/s");
+        }
+    }
+
+    /// The grids of the renderer's layout stay close to the snapped sea relative to the waves'
+    /// size: the bound is at most 10⁻⁴ of the sea's total amplitude `ΣA` at every wind (measured
+    /// 4.9×10⁻⁵ at each: the fitted Pierson–Moskowitz sea scales with `U²` as a whole, so the
+    /// ratio does not change; 0.54 mm at 10 m/s, 2.6 mm at 22 m/s, which the tracer adds to its
+    /// 1 mm tolerance). The limit is twice the measured ratio: a regression guard.
+    #[test]
+    fn the_default_grids_are_close_to_the_snapped_sea() {
+        for u in [2.0, 10.0, 22.0] {
+            let set = fitted_400(u);
+            let banded = BandedTrochoids::new(&set, &BandedTrochoids::default_layout(&set).unwrap()).unwrap();
+            let total: f64 = set.waves().iter().map(|w| w.amplitude()).sum();
+            let eps = banded.error_bound();
+            assert!(eps > 0.0 && eps <= 1e-4 * total, "{u} m/s: bound {eps} m against ΣA = {total} m");
+        }
+    }
+
+    /// A set that cannot be split has no layout: no wave, or waves all of one length.
+    #[test]
+    fn sets_that_cannot_be_split_have_no_layout() {
+        assert!(BandedTrochoids::default_layout(&TrochoidSet::new(Vec::new())).is_none());
+        let one: Vec<_> = fitted().waves().iter().take(1).copied().collect();
+        assert!(BandedTrochoids::default_layout(&TrochoidSet::new(one.clone())).is_none());
+        let twins = TrochoidSet::new(vec![one[0]; 5]);
+        assert!(BandedTrochoids::default_layout(&twins).is_none());
+    }
+
+    /// The bands are filled side by side on the threads: the same grids, bit for bit, on one
+    /// thread and on two.
+    #[test]
+    fn the_grids_are_the_same_whatever_the_threads() {
+        let set = fitted_400(10.0);
+        let banded = BandedTrochoids::new(&set, &BandedTrochoids::default_layout(&set).unwrap()).unwrap();
+        let grids = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+            let sea = pool.install(|| GriddedTrochoids::at_time(&banded, 3.5));
+            sea.bands().iter().map(|c| c.heights().iter().map(|h| h.to_bits()).collect::<Vec<_>>()).collect::<Vec<_>>()
+        };
+        assert!(grids(1) == grids(2));
+    }
+
+    /// With the renderer's layout at 400 waves, rays from 10 m up meet the sea with footprint
+    /// fading (as primary rays), and without it they are certified for the snapped sea: the hit
+    /// on it and no earlier crossing along a 2.5 cm march, within the grids' bound.
+    #[test]
+    fn the_default_grids_trace_the_snapped_sea() {
+        let set = fitted_400(10.0);
+        let banded = BandedTrochoids::new(&set, &BandedTrochoids::default_layout(&set).unwrap()).unwrap();
+        let time = 1.5;
+        let sea = GriddedTrochoids::at_time(&banded, time);
+        let eps = sea.error_bound();
+        let exact = TracedTrochoids::new(banded.set(), time);
+        let mut stats = TraceStats::default();
+        for i in 0..40 {
+            let a = 0.12 + 0.01 * i as f64;
+            let dir = DVec3::new(0.3 - 0.015 * i as f64, -a.sin(), a.cos()).normalize();
+            let ray = Ray::new(DVec3::new(1.3 * i as f64, 10.0, 2.0), dir).unwrap();
+            // Faded as a 1 mrad pixel fades it, the ray still meets the sea.
+            assert!(brine_trace::trace(&sea, &ray, &options(1e-3), &mut stats).is_some(), "ray {i} misses");
+            let hit = brine_trace::trace(&sea, &ray, &options(0.0), &mut stats).expect("a downward ray hits");
+            let p = hit.point;
+            let gap = (p.y - exact.height(p.x, p.z)).abs();
+            assert!(gap < ON_SURFACE_M + eps, "ray {i}: {gap} m off the snapped sea");
+            for s in 0..((hit.t - ON_SURFACE_M) / MARCH_M) as usize {
+                let q = ray.origin() + (s as f64 * MARCH_M) * dir;
+                let below = exact.height(q.x, q.z) - q.y;
+                assert!(below < eps, "ray {i}: {below} m below the snapped sea at t = {}", s as f64 * MARCH_M);
+            }
         }
     }
 }

@@ -4,7 +4,7 @@
 use brine_trace::{Hit, Method, Ray, RayTile, TraceOptions, TraceStats};
 use glam::{DVec2, DVec3};
 
-use crate::{FftFrame, FrameSurface, GerstnerField, SeaFrame, SineField, TracedTrochoids};
+use crate::{FftFrame, FrameSurface, GerstnerField, GriddedTrochoids, SeaFrame, SineField, TracedTrochoids};
 
 /// A [`SeaFrame`] ready to trace: the Gerstner and sine sums frozen at the frame's time once
 /// ([`SeaFrame::traced`]), each surface traced by the method that certifies it.
@@ -14,6 +14,14 @@ pub enum TracedSea<'a> {
     Trochoids(&'a TracedTrochoids),
     /// The Gerstner sum at the frame's time.
     Gerstner(GerstnerField<'a>),
+    /// The trochoid sum with its shorter waves on grids ([`GriddedTrochoids`]): traced through
+    /// `grid`, shaded, faded and exported as the snapped waves `waves` it stands for.
+    Gridded {
+        /// The snapped waves at the frame's time ([`crate::BandedTrochoids::set`]).
+        waves: &'a TracedTrochoids,
+        /// The same sea with its shorter waves on grids, at the same time.
+        grid: &'a GriddedTrochoids,
+    },
     /// Chen et al.'s sine waves at the frame's time.
     Sine(SineField<'a>),
     /// The FFT cascades (the tiered tracer, one tier per cascade, image coherence).
@@ -30,6 +38,20 @@ impl SeaFrame {
             FrameSurface::Fft(f) => TracedSea::Fft(f),
         }
     }
+
+    /// The frame ready to trace through `grid`, the same sea with its shorter waves on grids
+    /// ([`TracedSea::Gridded`]); the frame as [`Self::traced`] if it is not a trochoid sea.
+    ///
+    /// # Arguments
+    /// - `grid`: built from the [`crate::BandedTrochoids`] whose set this frame's ocean holds, at
+    ///   the frame's time.
+    pub fn traced_through<'a>(&'a self, grid: &'a GriddedTrochoids) -> TracedSea<'a> {
+        debug_assert!(grid.time().to_bits() == self.time.to_bits(), "the grid's time is the frame's");
+        match &self.surface {
+            FrameSurface::Trochoids(waves) => TracedSea::Gridded { waves, grid },
+            _ => self.traced(),
+        }
+    }
 }
 
 impl TracedSea<'_> {
@@ -38,7 +60,9 @@ impl TracedSea<'_> {
     /// tiered method too for footprint fading).
     fn options_for(&self, options: &TraceOptions) -> TraceOptions {
         match self {
-            TracedSea::Trochoids(_) | TracedSea::Fft(_) => TraceOptions { method: Method::Tiered, ..*options },
+            TracedSea::Trochoids(_) | TracedSea::Gridded { .. } | TracedSea::Fft(_) => {
+                TraceOptions { method: Method::Tiered, ..*options }
+            }
             _ => *options,
         }
     }
@@ -56,6 +80,7 @@ impl TracedSea<'_> {
         let o = self.options_for(options);
         match self {
             TracedSea::Trochoids(t) => brine_trace::trace(*t, ray, &o, stats),
+            TracedSea::Gridded { grid, .. } => brine_trace::trace(*grid, ray, &o, stats),
             TracedSea::Gerstner(f) => brine_trace::trace(f, ray, &o, stats),
             TracedSea::Sine(f) => brine_trace::trace(f, ray, &o, stats),
             TracedSea::Fft(f) => brine_trace::trace(*f, ray, &o, stats),
@@ -81,6 +106,7 @@ impl TracedSea<'_> {
         let (origin, dirs) = (tile.origin, tile.directions);
         match self {
             TracedSea::Trochoids(t) => brine_trace::trace_tile(*t, tile, &o, stats, hits, Some(costs)),
+            TracedSea::Gridded { grid, .. } => brine_trace::trace_tile(*grid, tile, &o, stats, hits, Some(costs)),
             TracedSea::Fft(f) => brine_trace::trace_tile(*f, tile, &o, stats, hits, Some(costs)),
             _ => {
                 for (i, d) in dirs.iter().enumerate() {
@@ -94,7 +120,9 @@ impl TracedSea<'_> {
 
     /// The height of the surface as drawn at `(x, z)` by a primary ray `t` metres along `d` with
     /// the waves faded by `footprint_angle` (0 keeps every wave): the surface the ray traced,
-    /// which `brine mesh --camera --faded` exports.
+    /// which `brine mesh --camera --faded` exports (for [`TracedSea::Gridded`], the snapped
+    /// waves faded one by one, within the grids' bound of the traced surface where no band has
+    /// faded yet).
     ///
     /// # Arguments
     /// - `x`, `z`: horizontal position (m); `d`: unit ray direction; `footprint_angle` (rad)
@@ -108,7 +136,9 @@ impl TracedSea<'_> {
     /// docs/equations.md §1 and §1(b).
     pub fn faded_height(&self, x: f64, z: f64, d: DVec3, footprint_angle: f64, t: f64) -> f64 {
         match self {
-            TracedSea::Trochoids(s) => s.faded_height(x, z, d, footprint_angle, t),
+            TracedSea::Trochoids(s) | TracedSea::Gridded { waves: s, .. } => {
+                s.faded_height(x, z, d, footprint_angle, t)
+            }
             TracedSea::Gerstner(f) => f.faded_height_along(x, z, d, footprint_angle, t),
             TracedSea::Sine(f) => f.faded_height(x, z, d, footprint_angle, t),
             TracedSea::Fft(f) => f.faded_height(x, z, d, footprint_angle, t),
@@ -119,7 +149,9 @@ impl TracedSea<'_> {
     /// faded by `footprint_angle` (0 keeps every wave; the sine sea's detail waves left out).
     pub fn faded_gradient(&self, x: f64, z: f64, d: DVec3, footprint_angle: f64, t: f64) -> DVec2 {
         match self {
-            TracedSea::Trochoids(s) => s.faded_gradient(x, z, d, footprint_angle, t),
+            TracedSea::Trochoids(s) | TracedSea::Gridded { waves: s, .. } => {
+                s.faded_gradient(x, z, d, footprint_angle, t)
+            }
             TracedSea::Gerstner(f) => f.faded_gradient(x, z, d, footprint_angle, t),
             TracedSea::Sine(f) => f.faded_gradient(x, z, d, footprint_angle, t),
             TracedSea::Fft(f) => f.faded_gradient(x, z, d, footprint_angle, t),
@@ -145,7 +177,9 @@ impl TracedSea<'_> {
         t: f64,
     ) -> (DVec2, DVec3) {
         match self {
-            TracedSea::Trochoids(s) => s.faded_gradient_and_covariance(x, z, d, footprint_angle, t),
+            TracedSea::Trochoids(s) | TracedSea::Gridded { waves: s, .. } => {
+                s.faded_gradient_and_covariance(x, z, d, footprint_angle, t)
+            }
             TracedSea::Gerstner(f) => {
                 (f.faded_gradient(x, z, d, footprint_angle, t), f.faded_slope_covariance(d, footprint_angle, t))
             }
