@@ -13,7 +13,7 @@ const BENCHES: &[(&str, &str, &[&str])] = &[
     ),
     (
         "wave-count",
-        "the reference frame at N = 50, 100, 200, 400 waves: whole-frame medians, t(N)/t(50), thread time per stage (brine-render)",
+        "the reference frame at N = 50, 100, 200, 400 waves, as sea.grid = \"auto\" draws them and the other way: whole-frame medians, t(N)/t(50), thread time per stage (brine-render)",
         &["bench", "-p", "brine-render", "--bench", "wave_count"],
     ),
     (

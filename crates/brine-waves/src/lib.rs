@@ -162,7 +162,10 @@ pub use surfaces::seabed::{SeabedRelief, seabed_relief};
 pub use surfaces::sine::{SineField, SineSet};
 pub use surfaces::surface::{TrochoidField, TrochoidSum, WaveSurface};
 #[cfg(feature = "tracing")]
-pub use tracing::gridded::{BandedTrochoids, DEFAULT_LAYOUT, DEFAULT_TILE_PER_CUT, GridBandSpec, GriddedTrochoids};
+pub use tracing::gridded::{
+    BandedTrochoids, DEFAULT_BAND_RATIO, DEFAULT_LONG_FRACTION, DEFAULT_POINTS_PER_WAVE, DEFAULT_TILE_PER_CUT,
+    GridBandSpec, GriddedTrochoids,
+};
 #[cfg(feature = "tracing")]
 pub use tracing::sea::TracedSea;
 pub use tracing::traced::{LANES, TracedTrochoids};

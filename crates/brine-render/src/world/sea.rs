@@ -303,6 +303,8 @@ pub(super) fn banded_trochoids(s: &SeaConfig, set: &TrochoidSet) -> Result<Optio
         return Ok(None);
     }
     match BandedTrochoids::default_layout(set) {
+        // `auto` is a speed-up: a split the model refuses keeps every wave traced.
+        Some(layout) if s.grid == GridMode::Auto => Ok(BandedTrochoids::new(set, &layout).ok()),
         Some(layout) => Ok(Some(BandedTrochoids::new(set, &layout)?)),
         None if s.grid == GridMode::On => Err(WorldError::Scene(format!(
             "sea.grid = \"on\": the {} waves cannot be split into grids and waves traced as trochoids (too few, or too close in length); use \"auto\" or \"off\"",
