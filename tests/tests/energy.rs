@@ -2,7 +2,7 @@
 //! moving the waves from geometry to shading normals to the BRDF, as the pixel footprint grows,
 //! adds and loses no light (brine-render `energy_bands`).
 
-use brine_render::{Scene, energy_bands};
+use brine_render::{Scene, World, energy_bands};
 
 /// Samples per pixel of the reference rendering.
 const REFERENCE_SPP: u32 = 16;
@@ -56,6 +56,8 @@ fn the_fft_sea_keeps_its_light_band_by_band() {
 #[test]
 fn the_gridded_trochoid_sea_keeps_its_light_band_by_band() {
     for wind in [3.0, 10.0, 18.0] {
+        let world = World::new(&scene("trochoids", wind, "waves = 200\n")).expect("a valid scene");
+        assert!(matches!(world.traced_sea(), brine_waves::TracedSea::Gridded { .. }), "{wind} m/s: not on grids");
         check_sea("trochoids", wind, "waves = 200\n");
     }
 }

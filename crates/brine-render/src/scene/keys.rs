@@ -320,7 +320,7 @@ pub const KEYS: &[KeySpec] = &[
         Kind::Enum { values: &["auto", "on", "off"], ignore_case: false },
         "—",
         "`\"auto\"`",
-        "`trochoids` only: the waves shorter than 0.4 λ_max snapped band by band to periodic tiles (about seven, of incommensurate sides) and traced on grids, certified for the snapped waves, which are then the sea (`auto`: from 150 waves up, where it pays; the 400-wave reference frame takes about 2 times the 50-wave frame's time instead of 4.3; docs/models/brine-waves.md)",
+        "`trochoids` only: the waves shorter than 0.4 λ_max snapped band by band to periodic tiles (about seven, of sides 2.2 apart) and traced on grids, certified for the snapped waves, which are then the sea (`auto`: from 150 waves up, where it pays; the 400-wave reference frame takes about 2.2 times the 50-wave frame's time instead of 4.0; docs/models/brine-waves.md)",
     ),
     k("sea", "seed", SEED, "1", "1", "seed of wave directions and phases, foam noise and pixel jitter"),
     k("sea", "time_s", closed(0.0, 1e6), "s", "0", "wave time of frame 0"),

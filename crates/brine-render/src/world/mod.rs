@@ -188,6 +188,9 @@ impl World {
 
     /// The sea at the world's time ready to trace: through its grids where the shorter waves are
     /// on grids (brine-waves `TracedSea::Gridded`), else the frame itself.
+    ///
+    /// # Returns
+    /// What the renderer traces its rays through (and shades at their hits).
     pub fn traced_sea(&self) -> TracedSea<'_> {
         match &self.gridded {
             Some(grid) => self.sea.traced_through(grid),

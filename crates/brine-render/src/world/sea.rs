@@ -288,7 +288,11 @@ pub(super) fn detail_waves(
 
 /// The trochoid sea's waves split for the grids its shorter ones are traced on (brine-waves
 /// `BandedTrochoids::default_layout`), as `sea.grid` asks: `auto` from
-/// [`crate::scene::GRID_AUTO_WAVES`] waves up, where the layout holds; `None` otherwise.
+/// [`crate::scene::GRID_AUTO_WAVES`] waves up, where the layout holds; `None` otherwise (a calm,
+/// with no wave, has nothing to split whatever the key).
+///
+/// # Arguments
+/// - `s`: the scene's `[sea]`; `set`: its fitted waves (not yet snapped).
 ///
 /// # Errors
 /// [`WorldError::Scene`] for `grid = "on"` with a set the layout cannot split (too few waves, or
@@ -299,7 +303,7 @@ pub(super) fn banded_trochoids(s: &SeaConfig, set: &TrochoidSet) -> Result<Optio
         GridMode::On => true,
         GridMode::Auto => s.waves >= crate::scene::GRID_AUTO_WAVES,
     };
-    if !wanted {
+    if !wanted || set.is_empty() {
         return Ok(None);
     }
     match BandedTrochoids::default_layout(set) {

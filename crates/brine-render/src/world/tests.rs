@@ -184,7 +184,8 @@ fn frames_built_on_shared_parts_are_their_stills() {
 /// `sea.grid`: from 150 waves (`"auto"`) or always (`"on"`) the trochoid sea's shorter waves are
 /// snapped and traced on grids, and the snapped set is the sea the world shades and exports;
 /// `"off"`, fewer waves or another surface keep every wave; a set that cannot be split is refused
-/// under `"on"` with a message naming the key, and kept whole under `"auto"`.
+/// under `"on"` with a message naming the key, and kept whole under `"auto"`; a calm is drawn
+/// without grids whatever the key.
 #[test]
 fn the_grid_key_puts_the_shorter_waves_on_grids() {
     let world = |waves: u32, grid: GridMode, surface: SurfaceKind| {
@@ -203,6 +204,10 @@ fn the_grid_key_puts_the_shorter_waves_on_grids() {
     let e = world(1, GridMode::On, SurfaceKind::Trochoids).err().expect("one wave cannot be split");
     assert!(e.to_string().contains("sea.grid"), "{e}");
     assert!(world(1, GridMode::Auto, SurfaceKind::Trochoids).unwrap().gridded.is_none());
+    // A calm has no wave to split: `on` draws it all the same.
+    let mut calm = Scene::default_scene();
+    (calm.sea.wind_speed_m_s, calm.sea.grid) = (0.0, GridMode::On);
+    assert!(World::new(&calm).expect("a calm renders").gridded.is_none());
 }
 
 /// Parts built for another scene (other than by its instants) are refused with a message.

@@ -449,8 +449,8 @@ impl FftCascade {
     /// A periodic cascade from heights already on its grid (`n × n` row by row, `[j·n + i]` at
     /// `(iΔ, jΔ)`, `Δ = tile/n`): the traced surface is their cubic B-spline (read through
     /// `blend` if any), its shading gradient the bilinear interpolant of the spline's gradient at
-    /// the grid points, its Jacobian 1 (no displacement of its own). What the
-    /// gridded-band study grids the short trochoids into (brine-waves `GriddedTrochoids`).
+    /// the grid points, its Jacobian 1 (no displacement of its own). The grids the trochoid
+    /// sea's shorter waves are traced on (brine-waves `GriddedTrochoids`).
     ///
     /// # Arguments
     /// - `tile`: the tile's side (m), `> 0`; `n`: its resolution, a power of two `≥ 4`.

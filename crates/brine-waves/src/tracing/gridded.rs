@@ -84,10 +84,17 @@ impl BandedTrochoids {
     /// # Arguments
     /// - `set`: the fitted waves; `bands`: the layout, by increasing `shorter_than_m`.
     ///
+    /// # Returns
+    /// The split: [`Self::set`] the snapped sea, [`Self::error_bound`] the grids' distance to it.
+    ///
     /// # Errors
     /// [`WaveError::OutOfRange`] for a tile out of [`TileLattice::new`]'s range, cuts that leave
     /// no long wave or an empty band, a resolution that is not a power of two `≥ 4`, or a grid
     /// too coarse for its band's shortest wave.
+    ///
+    /// # References
+    /// Tessendorf 2001 (waves on a tile's lattice, `k = 2π(m, n)/L`); Hall & Meyer 1976 (the
+    /// spline's bound in [`Self::error_bound`]); docs/models/brine-waves.md, "Many waves on grids".
     pub fn new(set: &TrochoidSet, bands: &[GridBandSpec]) -> Result<Self, WaveError> {
         let mut rest: Vec<_> = set.waves().to_vec();
         let mut split = Vec::with_capacity(bands.len());
@@ -141,15 +148,22 @@ impl BandedTrochoids {
     /// cut at 1.2, 2.7, 5.9, 13, 29, 63 and 139 m, on tiles from 9.8 m to 1.1 km. A band that
     /// would hold no wave is dropped (its range joins the next band).
     ///
-    /// Narrow bands on tiles of incommensurate sides make the sea repeat little: each band's
+    /// Narrow bands on tiles of different sides make the sea repeat little: each band's
     /// slopes repeat over its own tile only, and each holds a small share of the slopes
     /// ([`Self::repeating_slope_shares`]). Three wide bands cost the same frame time but put
     /// 58 % of the slopes on one tile.
+    ///
+    /// # Arguments
+    /// - `set`: the fitted waves (any number; their wavelengths set the cuts).
     ///
     /// # Returns
     /// The layout; `None` when no band would hold a wave, no wave would stay long, or a band
     /// would need more than 2048² points (waves under a millimetre, whose tiles are out of
     /// [`TileLattice::new`]'s range, left to a wider band).
+    ///
+    /// # References
+    /// The measurements behind the constants: [`DEFAULT_BAND_RATIO`]; docs/benchmarks.md, "Wave
+    /// count".
     pub fn default_layout(set: &TrochoidSet) -> Option<Vec<GridBandSpec>> {
         let longest = set.waves().iter().map(|w| w.wavelength()).fold(0.0f64, f64::max);
         let shortest = set.waves().iter().map(|w| w.wavelength()).fold(f64::INFINITY, f64::min);
@@ -204,6 +218,10 @@ impl BandedTrochoids {
     /// the whole set's mean-square slope `Σ ⟨|∇hᵢ|²⟩` (dimensionless, `[0, 1]`). A periodic band's
     /// slopes correlate fully with themselves one tile away, so its share is what it adds to
     /// the sea's slope autocorrelation at that lag (the measure of the FFT sea's tile lags).
+    ///
+    /// # Returns
+    /// `(L_j, share_j)` per band, by increasing cut: the tile (m) and the share (the long waves
+    /// hold the rest).
     pub fn repeating_slope_shares(&self) -> Vec<(f64, f64)> {
         let slope = |set: &TrochoidSet| set.waves().iter().map(|w| w.mean_square_slope()).sum::<f64>();
         let total = slope(&self.snapped);
@@ -215,12 +233,16 @@ impl BandedTrochoids {
 /// wave: the waves above it (about one in seven at 400 waves) stay trochoids.
 pub const DEFAULT_LONG_FRACTION: f64 = 0.4;
 
-/// The ratio of consecutive cuts in [`BandedTrochoids::default_layout`]. Measured on the
-/// reference frame at 400 waves against the 50-wave frame traced whole, with the excess slope
-/// autocorrelation at the bands' tile lags in a top-down view (0.36 m pixels): ratio 4 (three
-/// bands, the finest 1024²): 1.9–2.1× and 0.36; ratio 2.6 (six bands): 1.9–2.3× and at most
-/// 0.19; **2.2** (seven bands of 256²): 2.0–2.3× and at most 0.20 (0.08–0.10 at the other lags);
-/// 1.618 (twelve bands of 128²): 2.6× (the sum of twelve grids' bounds is looser) and 0.13.
+/// The ratio of consecutive cuts in [`BandedTrochoids::default_layout`]. Measured by rendering
+/// the reference frame at 400 waves (time against the 50-wave frame traced whole, single runs
+/// unless said) and a top-down view from 150 m (the excess autocorrelation of the shading normals
+/// over the sea traced wave by wave, at the bands' tile lags):
+/// - 4, three bands: 1.9–2.1× with the finest on 1024² over 8× its cut (1.88 in the wave-count
+///   bench); 0.38 with it on 512² over 4× its cut (58 % of the slopes on that tile either way);
+/// - 2.6, six bands: 1.9–2.3×, at most 0.19;
+/// - **2.2**, seven bands of 256²: 2.0–2.3× (2.20 in the wave-count bench), 0.08–0.20, and at
+///   most 0.23 over every lag from 3 to 170 m;
+/// - 1.618, twelve bands of 128²: 2.6× (the twelve grids' bounds add up), at most 0.13.
 pub const DEFAULT_BAND_RATIO: f64 = 2.2;
 
 /// Tile side over cut in [`BandedTrochoids::default_layout`]: a wave shorter than the cut moves
@@ -246,6 +268,12 @@ impl GriddedTrochoids {
     /// The split sea `banded` at time `time` (s): each band's grid filled by one inverse FFT (the
     /// bands side by side on the threads; the same values whatever their number), the long waves
     /// laid out for the tiered tracer.
+    ///
+    /// # Arguments
+    /// - `banded`: the split sea; `time`: the instant (s), finite.
+    ///
+    /// # Returns
+    /// The sea to trace at `time`, certified for `banded.set()` within [`Self::error_bound`].
     pub fn at_time(banded: &BandedTrochoids, time: f64) -> Self {
         use rayon::prelude::*;
         let cascades: Vec<_> =
@@ -695,6 +723,20 @@ mod tests {
         assert!(f64::from(peak) > 10.0 * tolerance, "peak {peak} m against {tolerance} m");
     }
 
+    /// Ray `i`'s `hit` is certified for the snapped sea `exact` within the grids' bound `eps` (m):
+    /// on it within the tracer's tolerance, and no point of a [`MARCH_M`] march before it lies
+    /// below it by `eps` or more.
+    fn assert_certified_for(exact: &TracedTrochoids, ray: &Ray, hit: &brine_trace::Hit, eps: f64, i: usize) {
+        let p = hit.point;
+        let gap = (p.y - exact.height(p.x, p.z)).abs();
+        assert!(gap < ON_SURFACE_M + eps, "ray {i}: {gap} m off the snapped sea");
+        for s in 0..((hit.t - ON_SURFACE_M) / MARCH_M) as usize {
+            let q = ray.origin() + (s as f64 * MARCH_M) * ray.direction();
+            let below = exact.height(q.x, q.z) - q.y;
+            assert!(below < eps, "ray {i}: {below} m below the snapped sea at t = {}", s as f64 * MARCH_M);
+        }
+    }
+
     /// Without blends the bands stand for the snapped sea: the traced crossings are certified
     /// for it within the bands' error bound, which stays well under the tracer's tolerance.
     #[test]
@@ -718,14 +760,7 @@ mod tests {
             let dir = DVec3::new(-0.4, -a.sin(), a.cos()).normalize();
             let ray = Ray::new(DVec3::new(0.7 * i as f64, 10.0, -3.0), dir).unwrap();
             let Some(hit) = brine_trace::trace(&sea, &ray, &options, &mut stats) else { continue };
-            let p = hit.point;
-            let gap = (p.y - exact.height(p.x, p.z)).abs();
-            assert!(gap < ON_SURFACE_M + eps, "ray {i}: {gap} m off the snapped sea");
-            for s in 0..((hit.t - ON_SURFACE_M) / MARCH_M) as usize {
-                let q = ray.origin() + (s as f64 * MARCH_M) * dir;
-                let below = exact.height(q.x, q.z) - q.y;
-                assert!(below < eps, "ray {i}: {below} m below the snapped sea at t = {}", s as f64 * MARCH_M);
-            }
+            assert_certified_for(&exact, &ray, &hit, eps, i);
             hits += 1;
         }
         assert_eq!(hits, 150, "every ray points down: each must meet the sea");
@@ -865,8 +900,8 @@ mod tests {
         fit_trochoids(&pm, &d, 400, 3, &FitOptions::default()).unwrap()
     }
 
-    /// The renderer's layout splits the fitted sea at every wind into three bands that hold most
-    /// waves, each band's waves on its tile's lattice and moved by the snap at most by half a
+    /// The renderer's layout splits the fitted sea at every wind into five to nine bands that
+    /// hold most waves, each band's waves on its tile's lattice and moved by the snap at most by half a
     /// lattice diagonal, `√2/2 · 2π/L` in wave vector (so shorter than the cut by that margin).
     #[test]
     fn the_default_layout_splits_the_sea_at_every_wind() {
@@ -956,14 +991,7 @@ mod tests {
             // Faded as a 1 mrad pixel fades it, the ray still meets the sea.
             assert!(brine_trace::trace(&sea, &ray, &options(1e-3), &mut stats).is_some(), "ray {i} misses");
             let hit = brine_trace::trace(&sea, &ray, &options(0.0), &mut stats).expect("a downward ray hits");
-            let p = hit.point;
-            let gap = (p.y - exact.height(p.x, p.z)).abs();
-            assert!(gap < ON_SURFACE_M + eps, "ray {i}: {gap} m off the snapped sea");
-            for s in 0..((hit.t - ON_SURFACE_M) / MARCH_M) as usize {
-                let q = ray.origin() + (s as f64 * MARCH_M) * dir;
-                let below = exact.height(q.x, q.z) - q.y;
-                assert!(below < eps, "ray {i}: {below} m below the snapped sea at t = {}", s as f64 * MARCH_M);
-            }
+            assert_certified_for(&exact, &ray, &hit, eps, i);
         }
     }
 }

@@ -45,6 +45,9 @@ impl SeaFrame {
     /// # Arguments
     /// - `grid`: built from the [`crate::BandedTrochoids`] whose set this frame's ocean holds, at
     ///   the frame's time.
+    ///
+    /// # Returns
+    /// [`TracedSea::Gridded`] for a trochoid frame, else [`Self::traced`].
     pub fn traced_through<'a>(&'a self, grid: &'a GriddedTrochoids) -> TracedSea<'a> {
         debug_assert!(grid.time().to_bits() == self.time.to_bits(), "the grid's time is the frame's");
         match &self.surface {
@@ -121,8 +124,9 @@ impl TracedSea<'_> {
     /// The height of the surface as drawn at `(x, z)` by a primary ray `t` metres along `d` with
     /// the waves faded by `footprint_angle` (0 keeps every wave): the surface the ray traced,
     /// which `brine mesh --camera --faded` exports (for [`TracedSea::Gridded`], the snapped
-    /// waves faded one by one, within the grids' bound of the traced surface where no band has
-    /// faded yet).
+    /// waves faded one by one: within the grids' bound of the traced surface where none of a
+    /// band's waves has faded yet; beyond, the rays keep a band's shorter waves until the band
+    /// fades whole).
     ///
     /// # Arguments
     /// - `x`, `z`: horizontal position (m); `d`: unit ray direction; `footprint_angle` (rad)
