@@ -412,12 +412,21 @@ fn meshes_are_valid() {
 /// Every primary hit of a rendered frame within the trace distance lies on the faded height
 /// (brine-waves `TracedSea::faded_height` with the ray's direction and distance: the surface
 /// `brine mesh --camera --faded` is made of), near and far, within the tracer's tolerance, on
-/// each of the four seas; and the faded camera mesh's vertices are that surface.
+/// each of the four seas and on the trochoid sea of 200 waves with its shorter waves on grids;
+/// and the faded camera mesh's vertices are that surface.
 #[test]
 fn the_faded_height_is_what_the_primary_rays_hit() {
     use brine_render::scene::SurfaceKind;
-    for surface in [SurfaceKind::Trochoids, SurfaceKind::Gerstner, SurfaceKind::Sine, SurfaceKind::Fft] {
+    let seas = [
+        (SurfaceKind::Trochoids, 50),
+        (SurfaceKind::Trochoids, 200),
+        (SurfaceKind::Gerstner, 50),
+        (SurfaceKind::Sine, 50),
+        (SurfaceKind::Fft, 50),
+    ];
+    for (surface, waves) in seas {
         let mut scene = Scene::default_scene();
+        scene.sea.waves = waves;
         scene.camera.width = 200;
         scene.camera.height = 112;
         scene.camera.spp = 1;
@@ -425,7 +434,8 @@ fn the_faded_height_is_what_the_primary_rays_hit() {
         scene.sea.surface = surface;
         let world = World::new(&scene).unwrap();
         let frame = render_world(&scene, &world, &RenderOptions::default(), &|| {}).unwrap();
-        let traced = world.sea().traced();
+        let traced = world.traced_sea();
+        assert_eq!(matches!(traced, brine_waves::TracedSea::Gridded { .. }), waves >= 150);
         let cam = world.camera();
         let (mut n, mut far, mut worst) = (0, 0, 0.0f64);
         for y in 0..scene.camera.height {

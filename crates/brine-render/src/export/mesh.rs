@@ -219,12 +219,11 @@ fn grid_mesh_of(world: &World, frame: &brine_waves::SeaFrame, grid: &MeshGrid) -
 /// The [`Mesh`] (Eulerian vertices: each on the traced surface above its grid point).
 pub fn camera_mesh(world: &World, t: f64, pixels: f64, faded: bool) -> Mesh {
     let (rings, angles, _) = camera_layout(world, pixels);
-    world.with_sea_at(t, |frame| {
+    world.with_traced_sea_at(t, |frame, traced| {
         let c = world.camera.position;
         let alpha = world.camera.pixel_angle();
         let fade = world.filtering_angle();
         let cols = angles.len();
-        let traced = frame.traced();
         let vertices: Vec<_> = (0..rings.len() * cols)
             .into_par_iter()
             .with_min_len(1024)
@@ -232,7 +231,7 @@ pub fn camera_mesh(world: &World, t: f64, pixels: f64, faded: bool) -> Mesh {
                 let (r, a) = (rings[k / cols], angles[k % cols]);
                 let x = DVec2::new(c.x + r * a.cos(), c.z + r * a.sin());
                 if faded {
-                    faded_vertex(world, frame, &traced, x, pixels * alpha * r, fade)
+                    faded_vertex(world, frame, traced, x, pixels * alpha * r, fade)
                 } else {
                     vertex(world, frame, x, pixels * alpha * r)
                 }

@@ -83,6 +83,8 @@ pub struct World {
     /// them there (brine-waves `GriddedTrochoids`): what the rays meet; `sea` holds the snapped
     /// waves it stands for.
     pub(crate) gridded: Option<GriddedTrochoids>,
+    /// The split those grids are filled from, for other instants ([`World::with_traced_sea_at`]).
+    banded: Option<BandedTrochoids>,
     /// Time of the frame (s).
     pub(crate) time: f64,
     /// Sky, sun, moon, clouds and aerial perspective, for any sun elevation.
@@ -195,6 +197,23 @@ impl World {
         match &self.gridded {
             Some(grid) => self.sea.traced_through(grid),
             None => self.sea.traced(),
+        }
+    }
+
+    /// Runs `f` on the sea at time `t` (s) and on it ready to trace ([`World::traced_sea`]): the
+    /// world's own at its time, else the ocean frozen at `t` (its grids filled at `t` where the
+    /// shorter waves are on grids), made for the call.
+    pub fn with_traced_sea_at<R>(&self, t: f64, f: impl FnOnce(&SeaFrame, &TracedSea<'_>) -> R) -> R {
+        if t.to_bits() == self.time.to_bits() {
+            return f(&self.sea, &self.traced_sea());
+        }
+        let frame = self.ocean.at_time(t);
+        match &self.banded {
+            Some(b) => {
+                let grid = GriddedTrochoids::at_time(b, t);
+                f(&frame, &frame.traced_through(&grid))
+            }
+            None => f(&frame, &frame.traced()),
         }
     }
 
@@ -762,6 +781,7 @@ impl World {
             ocean,
             sea,
             gridded,
+            banded: timeless.banded.clone(),
             time: s.time_s,
             sky,
             filtered_sky,

@@ -333,6 +333,24 @@ impl GriddedTrochoids {
         self.band.time()
     }
 
+    /// The height of the surface a primary ray traced with footprint fading draws at `(x, z)`,
+    /// hit `t` metres along `direction`: the long waves faded one by one plus each band's spline
+    /// weighted by its fade, `Σ wᵢ(t) hᵢ + Σ_j w_j(t) s_j` (the FFT sea's rule for the bands).
+    ///
+    /// # Arguments
+    /// - `x`, `z`: position (m); `direction`: the ray's unit direction; `footprint_angle` (rad)
+    ///   `≥ 0` (0 keeps every wave and band); `t` (m) `≥ 0`.
+    ///
+    /// # Returns
+    /// The height (m).
+    ///
+    /// # References
+    /// Bruneton, Neyret & Holzschuch 2010 §4 (waves faded with the pixel footprint).
+    pub fn faded_height(&self, x: f64, z: f64, direction: DVec3, footprint_angle: f64, t: f64) -> f64 {
+        self.long.faded_height(x, z, direction, footprint_angle, t)
+            + self.band.faded_height(x, z, direction, footprint_angle, t)
+    }
+
     /// The height of the surface at `(x, z)` (m): the long waves' plus the band's spline.
     pub fn height(&self, x: f64, z: f64) -> f64 {
         self.long.height(x, z) + self.band.height(x, z)

@@ -123,10 +123,8 @@ impl TracedSea<'_> {
 
     /// The height of the surface as drawn at `(x, z)` by a primary ray `t` metres along `d` with
     /// the waves faded by `footprint_angle` (0 keeps every wave): the surface the ray traced,
-    /// which `brine mesh --camera --faded` exports (for [`TracedSea::Gridded`], the snapped
-    /// waves faded one by one: within the grids' bound of the traced surface where none of a
-    /// band's waves has faded yet; beyond, the rays keep a band's shorter waves until the band
-    /// fades whole).
+    /// which `brine mesh --camera --faded` exports (for [`TracedSea::Gridded`], the long waves
+    /// faded one by one and each grid as a whole: [`GriddedTrochoids::faded_height`]).
     ///
     /// # Arguments
     /// - `x`, `z`: horizontal position (m); `d`: unit ray direction; `footprint_angle` (rad)
@@ -140,9 +138,8 @@ impl TracedSea<'_> {
     /// docs/equations.md §1 and §1(b).
     pub fn faded_height(&self, x: f64, z: f64, d: DVec3, footprint_angle: f64, t: f64) -> f64 {
         match self {
-            TracedSea::Trochoids(s) | TracedSea::Gridded { waves: s, .. } => {
-                s.faded_height(x, z, d, footprint_angle, t)
-            }
+            TracedSea::Trochoids(s) => s.faded_height(x, z, d, footprint_angle, t),
+            TracedSea::Gridded { grid, .. } => grid.faded_height(x, z, d, footprint_angle, t),
             TracedSea::Gerstner(f) => f.faded_height_along(x, z, d, footprint_angle, t),
             TracedSea::Sine(f) => f.faded_height(x, z, d, footprint_angle, t),
             TracedSea::Fft(f) => f.faded_height(x, z, d, footprint_angle, t),
