@@ -41,7 +41,7 @@ fn a_flat_calm_is_a_mirror_of_the_sky() {
 #[test]
 fn ten_thousand_waves_render() {
     let mut scene = Scene::default_scene();
-    scene.sea.waves = 10_000;
+    scene.sea.waves = Some(10_000);
     let frame = finite_frame(scene, 6, 4);
     assert!(frame.aovs.iter().any(|a| a.depth.is_finite()), "the sea is in view");
 }

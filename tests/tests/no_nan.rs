@@ -36,7 +36,7 @@ proptest! {
         scene.camera.width = 8;
         scene.camera.height = 6;
         scene.sea.wind_speed_m_s = wind;
-        scene.sea.waves = waves;
+        scene.sea.waves = Some(waves);
         scene.sea.seed = seed;
         scene.sea.surface = surface;
         scene.sea.fft.resolution = 64;

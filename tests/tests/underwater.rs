@@ -13,7 +13,7 @@ fn snells_window(wind_speed_m_s: f64, waves: u32) -> (f64, f64) {
     scene.camera.width = 41;
     scene.camera.height = 41;
     scene.sea.wind_speed_m_s = wind_speed_m_s;
-    scene.sea.waves = waves;
+    scene.sea.waves = Some(waves);
     scene.phenomena.glare = false;
     let frame = render(&scene, &RenderOptions::default(), &|| {}).unwrap();
     let lum = |x: usize, y: usize| frame.pixels[y * 41 + x].y;

@@ -17,8 +17,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use brine_render::{Frame, RenderOptions, Scene};
-use rustfft::FftPlanner;
-use rustfft::num_complex::Complex64;
+use brine_testkit::lattice::{PeakShare, peak_share as peak_share_of};
 
 /// Winds of the sheet (m s⁻¹, 10 m above the sea): Beaufort 2, 3, 5, 6, 7 and 9.
 const WINDS: [f64; 6] = [2.0, 5.0, 8.0, 12.0, 16.0, 22.0];
@@ -92,57 +91,17 @@ fn slope_variance(s: &[(f64, f64)]) -> f64 {
 /// wave vector the view can tell from its neighbours.
 const RESOLVED_CYCLES: f64 = 4.0;
 
-/// Share of the slope power (mean removed) in the [`PEAKS`] strongest bins of the 2-D spectra of
-/// both slope components of a top-down frame: `(plain, resolved)`. The plain share is of the
-/// image as it is; the resolved one tapers it with a Hann window (so the image's edges leak no
-/// power) and keeps the wave vectors of at least [`RESOLVED_CYCLES`] cycles across the view,
-/// where a lattice of crossing short waves shows. Waves longer than the view put their slope in
-/// the few lowest bins whatever the sea, which the plain share counts as peaks.
+/// Share of the slope power (mean removed) in the [`PEAKS`] strongest wave vectors of the slopes'
+/// 2-D spectrum of a top-down frame (brine-testkit `lattice::peak_share`): `(plain, resolved)`.
+/// The plain share is of the image as it is; the resolved one tapers it with a Hann window and
+/// keeps the wave vectors of at least [`RESOLVED_CYCLES`] cycles across the view, where a lattice
+/// of crossing short waves shows. Waves longer than the view put their slope in the few lowest
+/// bins whatever the sea, which the plain share counts as peaks.
 fn peak_share(frame: &Frame) -> (f64, f64) {
+    let normals: Vec<[f32; 3]> = frame.aovs.iter().map(|a| a.normal).collect();
     let n = frame.width as usize;
-    let mut planner = FftPlanner::new();
-    let fft = planner.plan_fft_forward(n);
-    let hann: Vec<f64> =
-        (0..n).map(|i| 0.5 - 0.5 * (std::f64::consts::TAU * (i as f64 + 0.5) / n as f64).cos()).collect();
-    let spectrum = |taper: bool| {
-        let mut power = vec![0.0; n * n];
-        for component in [0usize, 2] {
-            let slope: Vec<f64> =
-                frame.aovs.iter().map(|a| -f64::from(a.normal[component] / a.normal[1].max(0.05))).collect();
-            let weight = |i: usize| if taper { hann[i % n] * hann[i / n] } else { 1.0 };
-            let w_sum: f64 = (0..n * n).map(weight).sum();
-            let mean = (0..n * n).map(|i| weight(i) * slope[i]).sum::<f64>() / w_sum;
-            let mut grid: Vec<Complex64> =
-                (0..n * n).map(|i| Complex64::new(weight(i) * (slope[i] - mean), 0.0)).collect();
-            for row in grid.chunks_mut(n) {
-                fft.process(row);
-            }
-            let mut column = vec![Complex64::ZERO; n];
-            for x in 0..n {
-                for y in 0..n {
-                    column[y] = grid[y * n + x];
-                }
-                fft.process(&mut column);
-                for y in 0..n {
-                    power[y * n + x] += column[y].norm_sqr();
-                }
-            }
-        }
-        power
-    };
-    // A real field's spectrum is symmetric: each wave is two bins.
-    let share = |mut power: Vec<f64>| {
-        let total: f64 = power.iter().sum();
-        power.sort_by(|a, b| b.total_cmp(a));
-        power.iter().take(2 * PEAKS).sum::<f64>() / total.max(f64::MIN_POSITIVE)
-    };
-    let cycles = |i: usize| {
-        let f = |j: usize| if j <= n / 2 { j as f64 } else { j as f64 - n as f64 };
-        f(i % n).hypot(f(i / n))
-    };
-    let resolved: Vec<f64> =
-        spectrum(true).into_iter().enumerate().filter(|&(i, _)| cycles(i) >= RESOLVED_CYCLES).map(|(_, p)| p).collect();
-    (share(spectrum(false)), share(resolved))
+    let share = |resolved_cycles| peak_share_of(&normals, n, &PeakShare { peaks: PEAKS, resolved_cycles });
+    (share(None), share(Some(RESOLVED_CYCLES)))
 }
 
 /// Winds up to which the sparkle figure is measured (m s⁻¹), and its reference sample count.
@@ -632,7 +591,7 @@ pub fn run(root: &Path) -> Result<(), String> {
            Munk's total is in waves shorter than that: no sea filtered with its pixels shows half of it\n\
            there, and one that showed more would sparkle. Also in brackets, the figure of the slopes of\n\
            {DETAIL_SEEDS} seeds' near fields pooled: one view's near field is a small patch of sea, and the\n\
-           figure moves with the seed (on the trochoid sea at 12 m/s from 0.24 to 0.51).\n\
+           figure moves with the seed (on the trochoid sea at 8 m/s from 0.41 to 0.56).\n\
          - **peaks**: on a top-down view of the same sea (50 m up, 256 × 256 normals), the share of the\n\
            slope power in its {PEAKS} strongest wave vectors. A handful of crossing waves — a lattice of\n\
            glints — puts most of the power there; a sea of many waves little. In brackets, the same\n\

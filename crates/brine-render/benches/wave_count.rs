@@ -43,7 +43,7 @@ fn main() {
         .iter()
         .map(|&(n, grid)| {
             let mut s = common::reference_frame_scene();
-            s.sea.waves = n;
+            s.sea.waves = Some(n);
             s.sea.grid = grid;
             s
         })

@@ -217,7 +217,7 @@ proptest! {
         // The heaviest settings are rendered once each in `the_heaviest_ends_render`; here they
         // are kept small so that the cases stay quick.
         let mut s = scene;
-        s.sea.waves = s.sea.waves.min(300);
+        s.sea.waves = s.sea.waves.map(|n| n.min(300));
         s.sea.fft.resolution = s.sea.fft.resolution.min(256);
         render_tiny(s, &text);
     }

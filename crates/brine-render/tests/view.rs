@@ -93,7 +93,7 @@ fn the_window_shows_sky_and_sea_and_follows_the_mouse() {
     }
     let dir = tempfile::tempdir().expect("a temporary folder");
     let mut scene = brine_render::Scene::default_scene();
-    scene.sea.waves = 24;
+    scene.sea.waves = Some(24);
     (scene.camera.width, scene.camera.height) = (160, 90);
     scene.output.path = "rendered.png".into();
     let scene_path = dir.path().join("scene.toml");

@@ -9,6 +9,8 @@
 //!   between two sky positions.
 //! - [`csv`]: the records of the embedded reference tables.
 //! - [`check`]: a value against a reference within a named tolerance, with one message format.
+//! - [`lattice`]: the share of a top-down normal map's slope power in its strongest wave vectors
+//!   (a lattice of glints).
 //! - [`strategies`] (feature `waves`): `proptest` strategies of random trochoid sets.
 //!
 //! Formulas, sources and limits: `docs/models/brine-testkit.md`.
@@ -22,6 +24,7 @@
 pub mod check;
 pub mod csv;
 pub mod directions;
+pub mod lattice;
 pub mod quadrature;
 #[cfg(feature = "waves")]
 pub mod strategies;

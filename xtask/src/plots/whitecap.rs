@@ -20,7 +20,7 @@ fn e(err: impl std::fmt::Display) -> String {
     err.to_string()
 }
 
-/// The default scene's sea at `u10`: PM, Hasselmann spreading, 50 waves, choppiness 2.5, seed 1.
+/// The sea of `brine whitecap`'s defaults at `u10`: PM, Hasselmann spreading, 50 waves, choppiness 2.5, seed 1.
 pub(super) fn default_sea(u10: f64) -> Result<TrochoidSet, String> {
     let pm = PiersonMoskowitz::from_u10(u10).map_err(e)?;
     let spreading = CosineTwoS::hasselmann(pm.peak_omega()).map_err(e)?;
@@ -82,7 +82,7 @@ fn tail(dir: &Path) -> Result<(), String> {
     let gaussian = alphas.iter().map(|&a| (a, whitecap_coverage(m, a, ErfMethod::Libm))).collect();
     let target = monahan(&CoverageParams::new(10.0, WhitecapLaw::Monahan1980, DARLES_ONSET_WIND_M_S).map_err(e)?);
     LineChart {
-        title: "Lower tail of J, default sea at U10 = 10 m/s (50 waves): surface vs Gaussian law",
+        title: "Lower tail of J, 50-wave sea at U10 = 10 m/s: surface vs Gaussian law",
         x_label: "threshold α",
         y_label: "fraction of the sea with J < α",
         x_scale: Scale::Linear,
@@ -143,7 +143,7 @@ fn calibration(dir: &Path) -> Result<(), String> {
         alpha_g.push((u, cal.alpha_unresolved()));
     }
     LineChart {
-        title: "Calibrated whitecap coverage of the default sea (50 waves) vs Monahan 1980",
+        title: "Calibrated whitecap coverage of a 50-wave sea vs Monahan 1980",
         x_label: "U10 (m/s)",
         y_label: "whitecap coverage",
         x_scale: Scale::Linear,

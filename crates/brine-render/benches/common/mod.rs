@@ -10,7 +10,7 @@ pub fn reference_frame_scene() -> Scene {
     scene.camera.width = 640;
     scene.camera.height = 480;
     scene.camera.spp = 1;
-    scene.sea.waves = 100;
+    scene.sea.waves = Some(100);
     scene.sky.clouds = Some(CloudConfig::default());
     scene
 }

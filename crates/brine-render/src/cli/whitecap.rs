@@ -65,7 +65,7 @@ pub struct WhitecapArgs {
     /// calibrated together on Monahan's W), measured at --mc-samples points (at most 10⁶).
     #[arg(long, requires = "u10", conflicts_with_all = ["alpha", "calibrate"])]
     pub white_water: bool,
-    /// Number of waves of the fitted sea ([1, 10000]; the default scene's 50).
+    /// Number of waves of the fitted sea ([1, 10000]; 50, the Gerstner and sine seas' default).
     #[arg(long, default_value_t = 50)]
     pub waves: usize,
     /// Choppiness of the fit ([0, 100]; the default scene's 2.5).

@@ -107,7 +107,7 @@ fn gerstner_and_sine_primary_rays_fade_with_the_footprint() {
         let mut scene = Scene::default_scene();
         (scene.camera.width, scene.camera.height) = (160, 90);
         scene.sea.surface = surface;
-        scene.sea.waves = 120;
+        scene.sea.waves = Some(120);
         let mut world = World::new(&scene).expect("a valid scene");
         // Without the detail normals, whose hidden slopes would reach the BRDF as well.
         world.detail = None;

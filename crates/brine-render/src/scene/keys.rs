@@ -303,8 +303,8 @@ pub const KEYS: &[KeySpec] = &[
         "waves",
         Kind::Int { lo: 0, hi: 10_000 },
         "1",
-        "50",
-        "number of waves of the wind sea (trochoid, Gerstner and sine surfaces; not used by `fft`)",
+        "150 (`trochoids`), 50",
+        "number of waves of the wind sea (trochoid, Gerstner and sine surfaces; not used by `fft`); by default 150 trochoids (their shorter waves on grids) and 50 Gerstner or sine waves (traced one by one)",
     ),
     k(
         "sea",
@@ -650,6 +650,7 @@ mod tests {
         scene.sea.fetch_km = Some(10.0);
         scene.sea.gamma = Some(3.3);
         scene.sea.depth_m = Some(20.0);
+        scene.sea.waves = Some(150);
         scene.sea.fft.loop_period_s = Some(10.0);
         scene.sea.swell = Some(crate::scene::SwellConfig::default());
         scene.water.chlorophyll_mg_m3 = Some(0.1);

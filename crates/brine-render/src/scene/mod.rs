@@ -304,6 +304,18 @@ pub enum GridMode {
 /// below it, the grids' fixed cost is not repaid (`cargo xtask bench wave-count`).
 pub const GRID_AUTO_WAVES: u32 = 150;
 
+/// The trochoid sea's wave count when `sea.waves` is not given. With 50 waves a handful of short
+/// waves crossing at the spreading angles holds most of the glitter's slopes, a lattice of glints:
+/// on a top-down view at 8 m/s the 20 strongest wave vectors hold 0.37–0.42 of the slope power
+/// (five seeds), against 0.25–0.31 with 150. From
+/// 150 waves the shorter ones are traced on grids ([`GRID_AUTO_WAVES`]), so the frame costs about
+/// 1.4 times the 50-wave one (the default scene, `docs/benchmarks.md`).
+pub const DEFAULT_TROCHOID_WAVES: u32 = 150;
+
+/// The Gerstner and sine seas' wave count when `sea.waves` is not given: they are traced wave by
+/// wave (a Gerstner frame of 150 waves takes about four times one of 50).
+pub const DEFAULT_WAVES: u32 = 50;
+
 /// `[sea]`: the wind sea.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
@@ -326,8 +338,9 @@ pub struct SeaConfig {
     pub gamma: Option<f64>,
     /// Water depth of `tma` (m, `[0.5, 10⁴]`).
     pub depth_m: Option<f64>,
-    /// Number of trochoid waves of the wind sea (`[0, 10000]`).
-    pub waves: u32,
+    /// Number of waves of the wind sea (`[0, 10000]`); `None`: the surface's default
+    /// ([`SeaConfig::wave_count`]).
+    pub waves: Option<u32>,
     /// Choppiness of the fit (`[0, 100]`): each wave's steepness is `c·kA` before the cap.
     pub choppiness: f64,
     /// Whether the trochoid sea's shorter waves are snapped to tiles and traced on grids.
@@ -383,7 +396,7 @@ impl Default for SeaConfig {
             fetch_km: None,
             gamma: None,
             depth_m: None,
-            waves: 50,
+            waves: None,
             choppiness: 2.5,
             grid: GridMode::Auto,
             seed: 1,
@@ -463,6 +476,18 @@ pub enum SkyModelKind {
     Preetham,
     /// Hosek & Wilkie 2012.
     HosekWilkie,
+}
+
+impl SeaConfig {
+    /// The number of waves of the wind sea: `sea.waves`, or the surface's default,
+    /// [`DEFAULT_TROCHOID_WAVES`] for trochoids and [`DEFAULT_WAVES`] for the Gerstner and sine
+    /// seas (the FFT sea does not use it).
+    pub fn wave_count(&self) -> u32 {
+        self.waves.unwrap_or(match self.surface {
+            SurfaceKind::Trochoids => DEFAULT_TROCHOID_WAVES,
+            _ => DEFAULT_WAVES,
+        })
+    }
 }
 
 impl SkyConfig {

@@ -253,7 +253,10 @@ impl ViewApp {
             }
         });
         if s.sea.surface != SurfaceKind::Fft {
-            ui.add(egui::Slider::new(&mut s.sea.waves, 1..=400).text("waves"));
+            let mut waves = s.sea.wave_count();
+            if ui.add(egui::Slider::new(&mut waves, 1..=400).text("waves")).changed() {
+                s.sea.waves = Some(waves);
+            }
         }
 
         ui.separator();

@@ -248,7 +248,7 @@ mod tests {
     fn the_preview_ends_on_the_still_of_the_scene() {
         let (shared, handle) = spawn(|| {}).expect("the render thread starts");
         let mut scene = Scene::default_scene();
-        scene.sea.waves = 12;
+        scene.sea.waves = Some(12);
         let preview = (24, 16);
         let check = |scene: &Scene, generation: u64| {
             shared.ask(Request { scene: scene.clone(), preview, generation });
@@ -286,7 +286,7 @@ mod tests {
     fn a_refused_scene_is_reported() {
         let (shared, handle) = spawn(|| {}).expect("the render thread starts");
         let mut scene = Scene::default_scene();
-        scene.sea.waves = 12;
+        scene.sea.waves = Some(12);
         scene.water.water_type = Some("not-a-type".into());
         shared.ask(Request { scene: scene.clone(), preview: (8, 6), generation: 1 });
         let t = Instant::now();

@@ -99,7 +99,7 @@ pub(super) fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, 
     let mut spreadings: Vec<Box<dyn Spreading>> = Vec::new();
     let mut counts = Vec::new();
     let mut options = Vec::new();
-    let wind_sea = if s.wind_speed_m_s > CALM_WIND_M_S && (any_count || s.waves > 0) {
+    let wind_sea = if s.wind_speed_m_s > CALM_WIND_M_S && (any_count || s.wave_count() > 0) {
         let spectrum = sea_spectrum(s)?;
         // A wind so light that even the fit's longest waves, at half the peak frequency, are
         // shorter than the shortest wave any surface draws has no wind sea to draw: its waves
@@ -132,7 +132,7 @@ pub(super) fn sea_spectra(s: &SeaConfig, any_count: bool) -> Result<SeaSpectra, 
         };
         spectra.push(spectrum);
         spreadings.push(spreading);
-        counts.push(s.waves as usize);
+        counts.push(s.wave_count() as usize);
         options.push(sea_options);
     }
     let drawn_wind_sea = !spectra.is_empty();
@@ -269,7 +269,7 @@ pub(super) fn detail_waves(
     stats: &SeaStatistics,
     total: &SlopeVariance,
 ) -> Result<Option<DetailWaves>, WorldError> {
-    if stats.flat || s.wind_speed_m_s <= 0.0 || s.waves == 0 {
+    if stats.flat || s.wind_speed_m_s <= 0.0 || s.wave_count() == 0 {
         return Ok(None);
     }
     let SeaSpectra { spectra, spreadings, options, wind_sea, .. } = sea_spectra(s, false)?;
@@ -301,7 +301,7 @@ pub(super) fn banded_trochoids(s: &SeaConfig, set: &TrochoidSet) -> Result<Optio
     let wanted = match s.grid {
         GridMode::Off => false,
         GridMode::On => true,
-        GridMode::Auto => s.waves >= crate::scene::GRID_AUTO_WAVES,
+        GridMode::Auto => s.wave_count() >= crate::scene::GRID_AUTO_WAVES,
     };
     if !wanted || set.is_empty() {
         return Ok(None);

@@ -190,7 +190,7 @@ fn frames_built_on_shared_parts_are_their_stills() {
 fn the_grid_key_puts_the_shorter_waves_on_grids() {
     let world = |waves: u32, grid: GridMode, surface: SurfaceKind| {
         let mut scene = Scene::default_scene();
-        (scene.sea.waves, scene.sea.grid, scene.sea.surface) = (waves, grid, surface);
+        (scene.sea.waves, scene.sea.grid, scene.sea.surface) = (Some(waves), grid, surface);
         World::new(&scene)
     };
     let auto = world(200, GridMode::Auto, SurfaceKind::Trochoids).unwrap();
