@@ -596,7 +596,8 @@ pub fn run(root: &Path) -> Result<(), String> {
            slope power in its {PEAKS} strongest wave vectors. A handful of crossing waves — a lattice of\n\
            glints — puts most of the power there; a sea of many waves little. In brackets, the same\n\
            share of the wave vectors the view resolves (at least {RESOLVED_CYCLES} cycles across it, the\n\
-           image tapered by a Hann window): waves longer than a quarter of the 58 m view show as a tilt\n\
+           image tapered by a Hann window, which spreads each wave vector over a few of the bins counted):\n\
+           waves longer than a quarter of the 58 m view show as a tilt\n\
            of it and put their slope in its few lowest bins, whatever the sea, which the plain share\n\
            counts as peaks (of the fitted trochoid set's slope variance, 22 % at 8 m/s, 39 % at 12 and\n\
            51 % at 16 is in waves longer than a quarter of the view).\n\

@@ -3,9 +3,11 @@
 //!
 //! A sea of a few crossing waves shows its glitter as a lattice of glints; its slopes' 2-D power
 //! spectrum is then a few spikes. The measure is the share of the slope power (both components,
-//! mean removed) in the `peaks` strongest wave vectors of a square top-down map of shading
-//! normals. A real field's spectrum is symmetric, so each wave vector is two bins and the share
-//! counts the `2 · peaks` strongest bins.
+//! mean removed) in the `2 · peaks` strongest bins of the 2-D spectrum of a square top-down map of
+//! shading normals: a real field's spectrum is symmetric, so a wave that fits the map a whole
+//! number of times is two bins, and the untapered share is that of its `peaks` strongest wave
+//! vectors. Tapered (the resolved share), each wave vector spreads over 3 × 3 bins or more, so
+//! the same bins hold fewer wave vectors.
 //!
 //! ```
 //! use brine_testkit::lattice::{PeakShare, peak_share};
@@ -27,12 +29,13 @@ use rustfft::num_complex::Complex64;
 /// What [`peak_share`] counts.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PeakShare {
-    /// How many of the strongest wave vectors count as peaks (`≥ 1`).
+    /// How many peaks count (`≥ 1`): the `2 · peaks` strongest bins.
     pub peaks: usize,
     /// `None`: the map as it is (the plain share). `Some(c)`: the map tapered by a Hann window
     /// (so that its edges leak no power) and only the wave vectors of at least `c` cycles across
     /// it counted (the resolved share): a wave longer than a few cycles of the view shows as a
-    /// tilt or a bend of it, not as a wave vector the view can tell from its neighbours.
+    /// tilt or a bend of it, not as a wave vector the view can tell from its neighbours. `c` in
+    /// `[0, n/√2]`: above it no bin is left and the share is 0.
     pub resolved_cycles: Option<f64>,
 }
 
@@ -42,12 +45,16 @@ pub struct PeakShare {
 /// `Σ_{2·peaks strongest bins} |Ŝₓ|² + |Ŝ_z|²` over the sum of all counted bins.
 ///
 /// # Arguments
-/// - `normals`: `n × n` unit normals `[nₓ, n_y, n_z]`, row after row (y up).
+/// - `normals`: `n × n` normals `[nₓ, n_y, n_z]` (any length: only their ratios count), row after
+///   row (y up).
 /// - `n`: side of the map (pixels, `≥ 2`).
 /// - `what`: the peaks and, for the resolved share, the fewest cycles.
 ///
 /// # Returns
 /// The share, `[0, 1]` (0 for a flat map).
+///
+/// # Panics
+/// If `n < 2`, `normals.len() ≠ n²` or `what.peaks` is 0.
 pub fn peak_share(normals: &[[f32; 3]], n: usize, what: &PeakShare) -> f64 {
     assert!(n >= 2 && normals.len() == n * n, "an n × n map, n ≥ 2");
     assert!(what.peaks >= 1, "at least one peak");

@@ -270,7 +270,7 @@ pub const KEYS: &[KeySpec] = &[
         Kind::Enum { values: &["trochoids", "gerstner", "sine", "fft"], ignore_case: false },
         "—",
         "`\"trochoids\"`",
-        "surface traced (see renderer.md); `fft` is Tessendorf's inverse-FFT sea of the same spectrum (see `[sea.fft]`); `gerstner` renders about 6 times slower than `trochoids` (5.7 times in the default view, 6.8 at 14 m/s), more with the camera among the crests (its certified steps are first-order; docs/benchmarks.md)",
+        "surface traced (see renderer.md); `fft` is Tessendorf's inverse-FFT sea of the same spectrum (see `[sea.fft]`); `gerstner` renders about 6 times slower than `trochoids` at the same wave count (5.7 times in the default view, 6.8 at 14 m/s), more with the camera among the crests (its certified steps are first-order; docs/benchmarks.md)",
     ),
     k(
         "sea",

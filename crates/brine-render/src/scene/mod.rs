@@ -311,6 +311,7 @@ pub const GRID_AUTO_WAVES: u32 = 150;
 /// 150 waves the shorter ones are traced on grids ([`GRID_AUTO_WAVES`]), so the frame costs about
 /// 1.4 times the 50-wave one (the default scene, `docs/benchmarks.md`).
 pub const DEFAULT_TROCHOID_WAVES: u32 = 150;
+const _: () = assert!(DEFAULT_TROCHOID_WAVES >= GRID_AUTO_WAVES, "the default sea is traced on grids");
 
 /// The Gerstner and sine seas' wave count when `sea.waves` is not given: they are traced wave by
 /// wave (a Gerstner frame of 150 waves takes about four times one of 50).
