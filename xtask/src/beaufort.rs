@@ -5,8 +5,8 @@
 //! - **detail**: the variance of the shading normals' slopes `(−nₓ/n_y, −n_z/n_y)` over the sea
 //!   between 10 and 30 m from the eye, as a share of Cox & Munk's clean-surface total at the
 //!   scene's wind (12.5 m above the sea, the neutral log profile);
-//! - **peaks**: on a top-down view of the same sea (50 m up, 256² normals), the share of the slope
-//!   power held by the 20 strongest wave vectors of its 2-D spectrum; a handful of crossing waves
+//! - **peaks**: on a top-down view of the same sea (256² normals, `50 (U₁₀/8)²` m up, so that the
+//!   view scales with the sea's waves), the share of the slope power held by the 20 strongest wave vectors of its 2-D spectrum; a handful of crossing waves
 //!   (a lattice of glints) puts most of the power there, a sea of many waves very little; also
 //!   of the wave vectors the view resolves (four cycles across it or more, Hann-tapered);
 //! - **glitter** (2, 5 and 12 m/s): the total slope variance that the sun's glitter implies,
@@ -39,11 +39,33 @@ fn scene_text(surface: &str, wind: f64, top_down: bool, spp: u32) -> String {
 }
 
 fn scene_text_facing(surface: &str, wind: f64, top_down: bool, spp: u32, toward_sun: bool) -> String {
+    let height = if top_down { Some(TOP_DOWN_HEIGHT_M) } else { None };
+    view_text(surface, wind, height, spp, toward_sun)
+}
+
+/// Height of the top-down view of the tile lags (m).
+const TOP_DOWN_HEIGHT_M: f64 = 50.0;
+
+/// Wind at which the peaks' top-down view is [`TOP_DOWN_HEIGHT_M`] up (m s⁻¹).
+const PEAKS_REFERENCE_WIND: f64 = 8.0;
+
+/// Height of the peaks' top-down view at wind `U₁₀` (m): `50 (U₁₀ / 8)²`, so that the view holds the
+/// same sea at every wind. The sea's wave lengths scale as `U₁₀²/g` (the fit's band and the detail
+/// band's cut are set in units of the peak frequency `ω_p ∝ g/U₁₀`), so on this view the peak
+/// wave spans the same share of the image: 58 m across at 8 m/s (about one peak wavelength), 231 m
+/// at 16 m/s. On a fixed view the longer waves of a higher wind show as a tilt of the image and
+/// put their slope in its few lowest bins whatever the sea.
+fn peaks_height_m(wind: f64) -> f64 {
+    TOP_DOWN_HEIGHT_M * (wind / PEAKS_REFERENCE_WIND).powi(2)
+}
+
+/// The scene of one image, or of a top-down view `height` metres up.
+fn view_text(surface: &str, wind: f64, height: Option<f64>, spp: u32, toward_sun: bool) -> String {
     // Toward the sun the sky is clear, so that no cloud hides the sun and its glitter.
     let (yaw, clouds) = if toward_sun { (90.0, "") } else { (0.0, "\n[sky.clouds]\ncover = 0.35\n") };
-    let camera = if top_down {
+    let camera = if let Some(height) = height {
         format!(
-            "position = [0.0, 50.0, 0.0]\npitch_deg = -90.0\nyaw_deg = 0.0\nwidth = {TOP_DOWN_SIZE}\nheight = {TOP_DOWN_SIZE}\nfov_deg = 60.0\n"
+            "position = [0.0, {height}, 0.0]\npitch_deg = -90.0\nyaw_deg = 0.0\nwidth = {TOP_DOWN_SIZE}\nheight = {TOP_DOWN_SIZE}\nfov_deg = 60.0\n"
         )
     } else {
         format!(
@@ -283,9 +305,9 @@ fn sky_r2(scene_text: &str, frame: &Frame) -> Result<(f64, f64), String> {
 const LAG_POINTS: usize = 20_000;
 const LAG_SQUARE_M: f64 = 2_000.0;
 
-/// Side of a pixel of the top-down view on the sea (m): 50 m up, a 60° field over [`TOP_DOWN_SIZE`] pixels.
+/// Side of a pixel of the tile lags' top-down view on the sea (m): [`TOP_DOWN_HEIGHT_M`] up, a 60° field over [`TOP_DOWN_SIZE`] pixels.
 fn top_down_pixel_m() -> f64 {
-    2.0 * 50.0 * 30f64.to_radians().tan() / f64::from(TOP_DOWN_SIZE)
+    2.0 * TOP_DOWN_HEIGHT_M * 30f64.to_radians().tan() / f64::from(TOP_DOWN_SIZE)
 }
 
 /// How much the FFT sea repeats: what its cascades' repetition adds to the correlation of the
@@ -522,7 +544,8 @@ pub fn run(root: &Path) -> Result<(), String> {
             } else {
                 String::new()
             };
-            let top = render(&scene_text(surface, wind, true, 1), &format!("{name}-top.toml"))?;
+            let top =
+                render(&view_text(surface, wind, Some(peaks_height_m(wind)), 1, false), &format!("{name}-top.toml"))?;
             let (peaks, resolved_peaks) = peak_share(&top);
             let sparkle = if wind <= SPARKLE_MAX_WIND {
                 format!(" · sparkle {:.2}", sparkle_of(root, surface, wind)?)
@@ -592,15 +615,21 @@ pub fn run(root: &Path) -> Result<(), String> {
            there, and one that showed more would sparkle. Also in brackets, the figure of the slopes of\n\
            {DETAIL_SEEDS} seeds' near fields pooled: one view's near field is a small patch of sea, and the\n\
            figure moves with the seed (on the trochoid sea at 8 m/s from 0.41 to 0.56).\n\
-         - **peaks**: on a top-down view of the same sea (50 m up, 256 × 256 normals), the share of the\n\
-           slope power in its {PEAKS} strongest wave vectors. A handful of crossing waves — a lattice of\n\
-           glints — puts most of the power there; a sea of many waves little. In brackets, the same\n\
-           share of the wave vectors the view resolves (at least {RESOLVED_CYCLES} cycles across it, the\n\
-           image tapered by a Hann window, which spreads each wave vector over a few of the bins counted):\n\
-           waves longer than a quarter of the 58 m view show as a tilt\n\
-           of it and put their slope in its few lowest bins, whatever the sea, which the plain share\n\
-           counts as peaks (of the fitted trochoid set's slope variance, 22 % at 8 m/s, 39 % at 12 and\n\
-           51 % at 16 is in waves longer than a quarter of the view).\n\
+         - **peaks**: on a top-down view of the same sea (256 × 256 normals), the share of the slope\n\
+           power in its {PEAKS} strongest wave vectors. A handful of crossing waves — a lattice of\n\
+           glints — puts most of the power there; a sea of many waves little. The view scales with the\n\
+           sea: it looks down from `50 (U₁₀/8)²` m (58 m across at 8 m/s, about one peak wavelength; 231 m\n\
+           at 16 m/s), because the sea's wave lengths grow as `U₁₀²/g` (its waves are fitted over a band\n\
+           set in units of the peak frequency, and the pixel, which sets where the drawn waves end and\n\
+           the detail normals and the BRDF take over, grows with the view). From 5 m/s each view thus\n\
+           holds the same sea and the figure is the same; at 2 m/s the fitted band ends sooner, where the\n\
+           spectrum reaches Cox & Munk's total. On one fixed 58 m view, the waves longer than a quarter of\n\
+           it would show as a tilt and put their slope in its few lowest bins, whatever the sea (of the\n\
+           trochoid set's slope variance, 22 % at 8 m/s and 51 % at 16): there, at 16 m/s over seeds 1–5,\n\
+           the share is 0.45–0.50 on the trochoid sea and 0.32–0.43 on the FFT sea, whose continuous\n\
+           spectrum has no lattice. In brackets, the same share of the wave vectors the view resolves (at least\n\
+           {RESOLVED_CYCLES} cycles across it, the image tapered by a Hann window, which spreads each wave\n\
+           vector over a few of the bins counted).\n\
          - **tile lags** (FFT): how much the sea repeats. One tile of a cascade away, its repetition\n\
            adds to the correlation of the sea's slopes its share of their variance times its own\n\
            correlation there: 1 for a periodic cascade, about 0 for one read through its blend of\n\
