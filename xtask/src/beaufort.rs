@@ -50,11 +50,13 @@ const TOP_DOWN_HEIGHT_M: f64 = 50.0;
 const PEAKS_REFERENCE_WIND: f64 = 8.0;
 
 /// Height of the peaks' top-down view at wind `U₁₀` (m): `50 (U₁₀ / 8)²`, so that the view holds the
-/// same sea at every wind. The sea's wave lengths scale as `U₁₀²/g` (the fit's band and the detail
-/// band's cut are set in units of the peak frequency `ω_p ∝ g/U₁₀`), so on this view the peak
-/// wave spans the same share of the image: 58 m across at 8 m/s (about one peak wavelength), 231 m
-/// at 16 m/s. On a fixed view the longer waves of a higher wind show as a tilt of the image and
-/// put their slope in its few lowest bins whatever the sea.
+/// same sea at every wind. The sea's wave lengths scale as `U₁₀²/g`: its waves are fitted over a
+/// band set in units of the peak frequency `ω_p ∝ g/U₁₀` (from 5 m/s; at lighter winds the band
+/// ends sooner, where the spectrum reaches Cox & Munk's total), and the pixel, which sets where the
+/// drawn waves end and the detail normals and the BRDF take over, grows with the height. On this
+/// view the peak wave spans the same share of the image: 58 m across at 8 m/s (about one peak
+/// wavelength), 231 m at 16 m/s. On a fixed view the longer waves of a higher wind show as a tilt
+/// of the image and put their slope in its few lowest bins whatever the sea.
 fn peaks_height_m(wind: f64) -> f64 {
     TOP_DOWN_HEIGHT_M * (wind / PEAKS_REFERENCE_WIND).powi(2)
 }
