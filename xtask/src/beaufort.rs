@@ -50,7 +50,7 @@ const TOP_DOWN_HEIGHT_M: f64 = 50.0;
 const PEAKS_REFERENCE_WIND: f64 = 8.0;
 
 /// Height of the peaks' top-down view at wind `U₁₀` (m): `50 (U₁₀ / 8)²`, so that the view holds the
-/// same sea at every wind. The sea's wave lengths scale as `U₁₀²/g`: its waves are fitted over a
+/// same drawn waves and normals, in units of the peak wavelength, at every wind. The sea's wave lengths scale as `U₁₀²/g`: its waves are fitted over a
 /// band set in units of the peak frequency `ω_p ∝ g/U₁₀` (from 5 m/s; at lighter winds the band
 /// ends sooner, where the spectrum reaches Cox & Munk's total), and the pixel, which sets where the
 /// drawn waves end and the detail normals and the BRDF take over, grows with the height. On this
@@ -624,8 +624,8 @@ pub fn run(root: &Path) -> Result<(), String> {
            at 16 m/s), because the sea's wave lengths grow as `U₁₀²/g` (its waves are fitted over a band\n\
            set in units of the peak frequency, and the pixel, which sets where the drawn waves end and\n\
            the detail normals and the BRDF take over, grows with the view). From 5 m/s each view thus\n\
-           holds the same sea and the figure is the same; at 2 m/s the fitted band ends sooner, where the\n\
-           spectrum reaches Cox & Munk's total. On one fixed 58 m view, the waves longer than a quarter of\n\
+           holds the same drawn waves and normals in units of the peak wavelength, and the figure is the\n\
+           same; at 2 m/s the drawn band ends sooner, where the spectrum reaches Cox & Munk's total. On one fixed 58 m view, the waves longer than a quarter of\n\
            it would show as a tilt and put their slope in its few lowest bins, whatever the sea (of the\n\
            trochoid set's slope variance, 22 % at 8 m/s and 51 % at 16): there, at 16 m/s over seeds 1–5,\n\
            the share is 0.45–0.50 on the trochoid sea and 0.32–0.43 on the FFT sea, whose continuous\n\
@@ -636,7 +636,7 @@ pub fn run(root: &Path) -> Result<(), String> {
            adds to the correlation of the sea's slopes its share of their variance times its own\n\
            correlation there: 1 for a periodic cascade, about 0 for one read through its blend of\n\
            randomly offset reads (the sea's cascades are). The figure is the largest over the\n\
-           cascades (along x, z and the diagonal): of the slopes a pixel of the top-down view shows\n\
+           cascades (along x, z and the diagonal): of the slopes a pixel of a top-down view 50 m up shows\n\
            (averaged over its {px:.2} m footprint, {LAG_POINTS} points), and (in brackets) of the drawn\n\
            surface, down to its millimetre waves. What any sea of the spectrum correlates at that\n\
            distance is not counted.\n\

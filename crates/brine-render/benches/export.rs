@@ -20,7 +20,9 @@ fn main() {
     let threads = rayon::current_num_threads();
     let counts = [None, Some(50)];
     let results: Vec<Times> = counts.iter().map(|&waves| measure(waves, &run)).collect();
-    let label = |w: Option<u32>| w.map_or("default (150 waves)".to_string(), |n| format!("{n} waves"));
+    let label = |w: Option<u32>| {
+        w.map_or(format!("default ({} waves)", brine_render::scene::DEFAULT_TROCHOID_WAVES), |n| format!("{n} waves"))
+    };
     println!("export of the default sea ({threads} threads), medians of {RUNS}:");
     println!("| task | {} | {} | goal |", label(counts[0]), label(counts[1]));
     println!("|---|---|---|---|");
